@@ -1,0 +1,23 @@
+#pragma once
+// Anatomical landmarks: a label and a position in the patient LPS frame (mm).
+// Canonical labels (see docs/ARCHITECTURE.md): S, N, Or, Po, A, B, ANS, PNS, Pog, Me, Gn, Go,
+// Ar, U1 (upper incisor tip), L1 (lower incisor tip), U6R/U6L and L6R/L6L (first molar
+// mesio-buccal cusps, patient right/left). Bilateral points carry an R/L suffix (OrR, PoL...).
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace maxillo {
+
+struct Landmark {
+  std::string label;
+  Eigen::Vector3d position;  // LPS, mm
+};
+
+using LandmarkSet = std::vector<Landmark>;
+
+// The position of the landmark with this label, if present.
+std::optional<Eigen::Vector3d> find_landmark(const LandmarkSet& set, const std::string& label);
+
+}  // namespace maxillo

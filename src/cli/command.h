@@ -1,0 +1,43 @@
+#pragma once
+// The CLI is a table of subcommands (commands.cpp). Each command lives in its own file
+// cmd_<name>.cpp with one function that declares its options on a CLI11 subcommand and
+// installs a callback. Callbacks parse nothing themselves: options are bound to typed
+// variables once, unknown values are rejected by CLI11 validators, and the work is done
+// by library calls. A callback returns the process exit code through ctx.exit_code.
+#include <CLI/CLI.hpp>
+
+#include <filesystem>
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace maxillo::cli {
+
+struct GlobalOptions {
+  std::filesystem::path archive_dir;  // --archive, else $MAXILLO_ARCHIVE, else ./maxillo-archive
+  bool json = false;                  // --json: machine-readable output on stdout
+  int verbosity = 0;                  // -v: debug logging (may include patient identifiers)
+  bool quiet = false;                 // -q: errors only
+};
+
+struct CommandContext {
+  GlobalOptions global;
+  int exit_code = 0;
+};
+
+using AttachCommand = void (*)(CLI::App& subcommand, CommandContext& context);
+
+struct CommandSpec {
+  std::string_view name;
+  std::string_view group;    // heading under which --help lists the command
+  std::string_view summary;  // one line for --help
+  AttachCommand attach;
+};
+
+// Every command, in the order --help shows them.
+std::span<const CommandSpec> command_table();
+
+// The archive folder the global options and environment select.
+std::filesystem::path resolve_archive_dir(const GlobalOptions& global);
+
+}  // namespace maxillo::cli

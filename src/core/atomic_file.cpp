@@ -1,0 +1,108 @@
+#include "core/atomic_file.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <random>
+
+#include "core/error.h"
+
+namespace maxillo {
+namespace {
+
+ErrorCode code_for_errno(int error_number) {
+  switch (error_number) {
+    case ENOENT: return ErrorCode::kFileNotFound;
+    case EACCES:
+    case EPERM: return ErrorCode::kPermissionDenied;
+    default: return ErrorCode::kWriteFailed;
+  }
+}
+
+// Closes a descriptor on every path out of a function.
+struct FileDescriptor {
+  int fd;
+  ~FileDescriptor() {
+    if (fd >= 0) ::close(fd);
+  }
+};
+
+void fsync_folder(const std::filesystem::path& folder) {
+  FileDescriptor dir{::open(folder.c_str(), O_RDONLY | O_DIRECTORY)};
+  if (dir.fd >= 0) ::fsync(dir.fd);
+}
+
+}  // namespace
+
+std::vector<std::byte> read_file(const std::filesystem::path& path) {
+  FileDescriptor file{::open(path.c_str(), O_RDONLY | O_CLOEXEC)};
+  if (file.fd < 0) {
+    int e = errno;
+    throw Error(e == EACCES || e == EPERM ? ErrorCode::kPermissionDenied : ErrorCode::kFileNotFound,
+                path.string(), std::strerror(e));
+  }
+  struct stat info {};
+  if (::fstat(file.fd, &info) != 0 || S_ISDIR(info.st_mode))
+    throw Error(ErrorCode::kBadValue, path.string(), "is a folder, not a file");
+  std::vector<std::byte> bytes(static_cast<size_t>(info.st_size));
+  size_t done = 0;
+  while (done < bytes.size()) {
+    ssize_t n = ::read(file.fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) throw Error(ErrorCode::kPermissionDenied, path.string(), std::strerror(errno));
+    if (n == 0) break;  // the file shrank while we read it
+    done += static_cast<size_t>(n);
+  }
+  bytes.resize(done);
+  return bytes;
+}
+
+std::filesystem::path temporary_sibling(const std::filesystem::path& path) {
+  static std::atomic<unsigned> counter{0};
+  thread_local std::mt19937_64 random{std::random_device{}()};
+  auto name = "." + path.filename().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
+              std::to_string(counter++) + "-" + std::to_string(random() % 1000000);
+  return path.parent_path() / name;
+}
+
+void write_file_atomically(const std::filesystem::path& path, std::span<const std::byte> bytes,
+                           Durability durability) {
+  auto temporary = temporary_sibling(path);
+  {
+    FileDescriptor file{::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644)};
+    if (file.fd < 0) throw Error(code_for_errno(errno), path.string(), std::strerror(errno));
+    size_t done = 0;
+    while (done < bytes.size()) {
+      ssize_t n = ::write(file.fd, bytes.data() + done, bytes.size() - done);
+      if (n < 0 && errno == EINTR) continue;
+      if (n < 0) {
+        int e = errno;
+        ::unlink(temporary.c_str());
+        throw Error(ErrorCode::kWriteFailed, path.string(), std::strerror(e));
+      }
+      done += static_cast<size_t>(n);
+    }
+    if (durability == Durability::Flushed && ::fsync(file.fd) != 0) {
+      int e = errno;
+      ::unlink(temporary.c_str());
+      throw Error(ErrorCode::kWriteFailed, path.string(), std::strerror(e));
+    }
+  }
+  if (::rename(temporary.c_str(), path.c_str()) != 0) {
+    int e = errno;
+    ::unlink(temporary.c_str());
+    throw Error(ErrorCode::kWriteFailed, path.string(), std::strerror(e));
+  }
+  if (durability == Durability::Flushed)
+    fsync_folder(path.has_parent_path() ? path.parent_path() : std::filesystem::path("."));
+}
+
+void write_file_atomically(const std::filesystem::path& path, std::string_view text, Durability durability) {
+  write_file_atomically(path, std::as_bytes(std::span(text.data(), text.size())), durability);
+}
+
+}  // namespace maxillo

@@ -1,0 +1,27 @@
+#pragma once
+// Whole-file reads and crash-safe writes. A file written here is either absent or complete:
+// it is written to a temporary name in the same folder, flushed to disk, then renamed.
+#include <cstddef>
+#include <filesystem>
+#include <span>
+#include <string_view>
+#include <vector>
+
+namespace maxillo {
+
+// Reads a whole file; throws Error (FileNotFound, PermissionDenied, ...) naming the path.
+std::vector<std::byte> read_file(const std::filesystem::path& path);
+
+enum class Durability { Flushed, Unflushed };
+
+// Writes bytes to path through a temporary file and rename(2). With Durability::Flushed the
+// data and the folder entry are fsync'ed before returning. Throws Error(WriteFailed).
+void write_file_atomically(const std::filesystem::path& path, std::span<const std::byte> bytes,
+                           Durability durability = Durability::Flushed);
+void write_file_atomically(const std::filesystem::path& path, std::string_view text,
+                           Durability durability = Durability::Flushed);
+
+// A unique name beside `path` for a temporary file (same folder, so rename is atomic).
+std::filesystem::path temporary_sibling(const std::filesystem::path& path);
+
+}  // namespace maxillo
