@@ -6,7 +6,7 @@ find_package(nlohmann_json 3 REQUIRED)
 find_package(CLI11 REQUIRED)
 find_package(DCMTK REQUIRED)
 find_package(ITK 5.2 REQUIRED COMPONENTS
-  ITKCommon ITKIOImageBase ITKIOMeta ITKThresholding ITKConnectedComponents
+  ITKCommon ITKIOImageBase ITKIOMeta ITKIONRRD ITKThresholding ITKConnectedComponents
   ITKBinaryMathematicalMorphology ITKMathematicalMorphology ITKLabelMap ITKImageFilterBase
   ITKSmoothing ITKImageGrid)
 find_package(VTK 9.1 REQUIRED COMPONENTS

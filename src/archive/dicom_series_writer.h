@@ -27,6 +27,11 @@ struct SeriesMetadata {
   int series_number = 1;
   std::string modality = "CT";
   std::string manufacturer = "maxillo";
+  // Added after the first contract; defaults keep older callers unchanged.
+  std::string study_time = "120000";  // HHMMSS
+  std::string accession_number;
+  double window_center = 300;   // HU; default: a bone window
+  double window_width = 2000;   // HU
 };
 
 struct WrittenSeries {

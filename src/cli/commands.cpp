@@ -6,10 +6,32 @@ namespace maxillo::cli {
 
 // One declaration per cmd_<name>.cpp.
 void attach_version(CLI::App&, CommandContext&);
+void attach_import(CLI::App&, CommandContext&);
+void attach_list(CLI::App&, CommandContext&);
+void attach_show(CLI::App&, CommandContext&);
+void attach_verify(CLI::App&, CommandContext&);
+void attach_export(CLI::App&, CommandContext&);
+void attach_bench(CLI::App&, CommandContext&);
+void attach_surfaces(CLI::App&, CommandContext&);
+void attach_convert(CLI::App&, CommandContext&);
+void attach_report(CLI::App&, CommandContext&);
+void attach_demo(CLI::App&, CommandContext&);
+void attach_sample(CLI::App&, CommandContext&);
 
 std::span<const CommandSpec> command_table() {
   static const std::array kCommands = {
       CommandSpec{"version", "General", "print the program version", attach_version},
+      CommandSpec{"import", "Archive", "archive DICOM files or folders (recursive)", attach_import},
+      CommandSpec{"list", "Archive", "list patients, studies, series, cases or identity flags", attach_list},
+      CommandSpec{"show", "Archive", "show a patient, study, series, instance or case by ID or UID", attach_show},
+      CommandSpec{"verify", "Archive", "re-hash every archived object; --repair removes orphans", attach_verify},
+      CommandSpec{"export", "Archive", "write a series' original files into a folder", attach_export},
+      CommandSpec{"bench", "Archive", "benchmarks (bench import)", attach_bench},
+      CommandSpec{"surfaces", "Imaging", "skin and bone surfaces from a DICOM series", attach_surfaces},
+      CommandSpec{"convert", "Imaging", "wrap a MetaImage/NRRD volume as a DICOM CT series", attach_convert},
+      CommandSpec{"report", "Reports", "consultation report of a case as PDF", attach_report},
+      CommandSpec{"sample", "General", "write the synthetic phantom: DICOM CT series and landmarks", attach_sample},
+      CommandSpec{"demo", "General", "the whole pipeline on the synthetic phantom, ending in a PDF report", attach_demo},
   };
   return kCommands;
 }

@@ -1,0 +1,70 @@
+// Derived artefacts (reports, renders, surfaces...): stored objects with their provenance.
+#include "archive/archive_sql.h"
+#include "archive/archive_state.h"
+#include "core/atomic_file.h"
+#include "core/json.h"
+#include "core/sha256.h"
+#include "core/version.h"
+
+namespace maxillo {
+namespace {
+
+ArtefactRecord artefact_from(const sqlite::Statement& r) {
+  return {r.integer(0), r.integer(1), r.text(2), r.text(3), r.text(4), r.text(5), r.text(6), r.text(7), r.text(8)};
+}
+
+}  // namespace
+
+std::string Archive::store_object(std::span<const std::byte> bytes) {
+  std::string sha = sha256_hex(bytes);
+  StoreLock lock(state_->folder, LockKind::Shared);
+  state_->objects.put(sha, bytes);
+  state_->objects.make_durable();
+  sqlite::Transaction transaction(state_->db);
+  sqlite::Statement insert(state_->db, sql::kInsertObject);
+  insert.bind(1, sha).bind(2, int64_t(bytes.size())).run();
+  transaction.commit();
+  return sha;
+}
+
+std::string Archive::store_object(std::string_view text) {
+  return store_object(std::as_bytes(std::span(text.data(), text.size())));
+}
+
+std::filesystem::path Archive::object_path(std::string_view sha256) const {
+  if (!is_sha256_hex(sha256)) throw Error(ErrorCode::kBadValue, std::string(sha256), "not a sha256 object name");
+  return state_->objects.path_of(sha256);
+}
+
+std::vector<std::byte> Archive::read_object(std::string_view sha256) const { return read_file(object_path(sha256)); }
+
+int64_t Archive::add_artefact(const NewArtefact& a) {
+  if (!is_sha256_hex(a.object_sha256) || !std::filesystem::exists(object_path(a.object_sha256)))
+    throw Error(ErrorCode::kNotFound, a.object_sha256, "artefact object is not in the store (use store_object first)");
+  if (!Json::accept(a.parameters_json)) throw Error(ErrorCode::kBadValue, a.kind, "artefact parameters are not JSON");
+  sqlite::Transaction transaction(state_->db);
+  sqlite::Statement insert(state_->db, sql::kInsertArtefact);
+  insert.bind(1, a.case_id).bind(2, a.kind).bind(3, a.object_sha256).bind(4, a.media_type).bind(5, a.inputs_hash);
+  insert.bind(6, a.parameters_json).bind(7, kVersion).bind(8, utc_now()).run();
+  int64_t id = state_->db.last_insert_id();
+  transaction.commit();
+  return id;
+}
+
+std::optional<ArtefactRecord> Archive::find_artefact(int64_t case_id, std::string_view kind,
+                                                     std::string_view inputs_hash) const {
+  sqlite::Statement query(state_->db, std::string(sql::kArtefactColumns) + sql::kFindArtefact);
+  query.bind(1, case_id).bind(2, kind).bind(3, inputs_hash);
+  if (!query.step()) return std::nullopt;
+  return artefact_from(query);
+}
+
+std::vector<ArtefactRecord> Archive::artefacts(int64_t case_id) const {
+  sqlite::Statement query(state_->db, std::string(sql::kArtefactColumns) + sql::kArtefactsOfCase);
+  query.bind(1, case_id);
+  std::vector<ArtefactRecord> rows;
+  while (query.step()) rows.push_back(artefact_from(query));
+  return rows;
+}
+
+}  // namespace maxillo

@@ -1,0 +1,78 @@
+// Cases: the unit of work. One "default" case per patient is made at first import.
+#include <algorithm>
+#include <charconv>
+
+#include "archive/archive_sql.h"
+#include "archive/archive_state.h"
+
+namespace maxillo {
+
+std::optional<CaseRecord> Archive::case_of_patient(int64_t patient, std::string_view label) const {
+  sqlite::Statement query(state_->db, std::string(sql::kCases) + " WHERE patient = ?1 AND label = ?2");
+  query.bind(1, patient).bind(2, label);
+  if (!query.step()) return std::nullopt;
+  return CaseRecord{query.integer(0), query.integer(1), query.text(2), query.text(3)};
+}
+
+int64_t Archive::resolve_case(std::string_view text) const {
+  int64_t number = 0;
+  auto [end, status] = std::from_chars(text.data(), text.data() + text.size(), number);
+  if (status == std::errc() && end == text.data() + text.size()) {
+    sqlite::Statement query(state_->db, sql::kExists[3]);
+    query.bind(1, number);
+    if (query.step()) return number;
+  }
+  sqlite::Statement patient(state_->db, sql::kPatientIdOf);
+  patient.bind(1, text);
+  if (patient.step())
+    if (auto found = case_of_patient(patient.integer(0))) return found->id;
+  throw Error(ErrorCode::kNotFound, std::string(text), "no case with this id and no patient with this Patient ID");
+}
+
+CaseContents Archive::case_contents(int64_t case_id) const {
+  CaseContents contents;
+  {
+    sqlite::Statement query(state_->db, std::string(sql::kCases) + " WHERE id = ?1");
+    query.bind(1, case_id);
+    if (!query.step()) throw Error(ErrorCode::kNotFound, std::to_string(case_id), "no such case");
+    contents.record = {query.integer(0), query.integer(1), query.text(2), query.text(3)};
+  }
+  contents.patient = patient(contents.record.patient).value();
+  sqlite::Statement members(state_->db, sql::kCaseSeries);
+  members.bind(1, case_id);
+  std::vector<int64_t> study_ids;
+  while (members.step()) {
+    auto record = series_by_id(members.integer(0));
+    if (!record) continue;
+    contents.series.push_back({*record, members.text(1)});
+    if (std::find(study_ids.begin(), study_ids.end(), record->study) == study_ids.end())
+      study_ids.push_back(record->study);
+  }
+  for (int64_t id : study_ids)
+    if (auto record = study(id)) contents.studies.push_back(*record);
+  std::sort(contents.studies.begin(), contents.studies.end(),
+            [](const StudyRecord& a, const StudyRecord& b) { return std::tie(a.date, a.time, a.id) < std::tie(b.date, b.time, b.id); });
+  auto study_rank = [&](int64_t study) {
+    return std::find_if(contents.studies.begin(), contents.studies.end(), [&](auto& s) { return s.id == study; }) -
+           contents.studies.begin();
+  };
+  std::sort(contents.series.begin(), contents.series.end(), [&](const CaseSeries& a, const CaseSeries& b) {
+    return std::make_tuple(study_rank(a.series.study), a.series.number.value_or(1 << 30), a.series.id) <
+           std::make_tuple(study_rank(b.series.study), b.series.number.value_or(1 << 30), b.series.id);
+  });
+  return contents;
+}
+
+void Archive::set_series_role(int64_t case_id, int64_t series, std::string_view role) {
+  static constexpr std::string_view kRoles[] = {"preop", "postop", "follow-up", "unassigned"};
+  if (std::find(std::begin(kRoles), std::end(kRoles), role) == std::end(kRoles))
+    throw Error(ErrorCode::kBadValue, std::string(role), "unknown role (preop, postop, follow-up, unassigned)");
+  sqlite::Transaction transaction(state_->db);
+  sqlite::Statement update(state_->db, sql::kSetSeriesRole);
+  update.bind(1, case_id).bind(2, series).bind(3, role).run();
+  if (state_->db.changes() != 1)
+    throw Error(ErrorCode::kNotFound, std::to_string(series), "series is not part of case " + std::to_string(case_id));
+  transaction.commit();
+}
+
+}  // namespace maxillo

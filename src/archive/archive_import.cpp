@@ -1,0 +1,134 @@
+// Archive::import_paths: a two-stage pipeline. A scanner thread reads, hashes and parses files
+// (the CPU-heavy part); the calling thread stores objects and commits rows in durable batches
+// (the I/O part). On 2 cores the two overlap; the queue between them is bounded so memory
+// stays at a few dozen files whatever the input size.
+#include <condition_variable>
+#include <deque>
+#include <mutex>
+#include <thread>
+
+#include "archive/archive_state.h"
+#include "archive/import_batch.h"
+#include "archive/import_scan.h"
+#include "core/log.h"
+
+namespace maxillo {
+namespace {
+
+// A bounded single-producer single-consumer queue; close() marks the end of input.
+class ScanQueue {
+ public:
+  void push(ScannedFile&& item) {
+    std::unique_lock lock(mutex_);
+    not_full_.wait(lock, [&] { return items_.size() < kCapacity || abandoned_; });
+    if (abandoned_) return;
+    items_.push_back(std::move(item));
+    not_empty_.notify_one();
+  }
+  void close() {
+    std::lock_guard lock(mutex_);
+    closed_ = true;
+    not_empty_.notify_one();
+  }
+  // The consumer gave up (an exception): let the producer finish quickly.
+  void abandon() {
+    std::lock_guard lock(mutex_);
+    abandoned_ = true;
+    not_full_.notify_one();
+  }
+  bool abandoned() {
+    std::lock_guard lock(mutex_);
+    return abandoned_;
+  }
+  std::optional<ScannedFile> pop() {
+    std::unique_lock lock(mutex_);
+    not_empty_.wait(lock, [&] { return !items_.empty() || closed_; });
+    if (items_.empty()) return std::nullopt;
+    ScannedFile item = std::move(items_.front());
+    items_.pop_front();
+    not_full_.notify_one();
+    return item;
+  }
+
+ private:
+  static constexpr size_t kCapacity = 64;
+  std::mutex mutex_;
+  std::condition_variable not_full_, not_empty_;
+  std::deque<ScannedFile> items_;
+  bool closed_ = false;
+  bool abandoned_ = false;
+};
+
+void report_problem(ImportReport& report, const ImportOptions& options, ImportProblem problem) {
+  (problem.outcome == ImportOutcome::Conflict ? report.conflicts : report.failed)++;
+  if (options.on_problem) options.on_problem(problem);
+  report.problems.push_back(std::move(problem));
+}
+
+}  // namespace
+
+ImportReport Archive::import_paths(const std::vector<std::filesystem::path>& paths, const ImportOptions& options) {
+  ImportReport report;
+  FileList inputs = list_input_files(paths);
+  for (auto& item : inputs.unreachable)
+    report_problem(report, options, {item.path, ImportOutcome::Failed, item.code, item.reason});
+
+  Progress progress("import", inputs.files.size(), options.progress);
+  StoreLock lock(state_->folder, LockKind::Shared);
+  ScanQueue queue;
+  std::exception_ptr scanner_error;
+  std::thread scanner([&] {
+    try {
+      FileScanner scanner_stage(index_file(state_->folder));
+      for (const auto& path : inputs.files) {
+        if (queue.abandoned()) break;
+        queue.push(scanner_stage.scan(path));
+      }
+    } catch (...) {
+      scanner_error = std::current_exception();
+    }
+    queue.close();
+  });
+
+  BatchWriter writer(state_->db, state_->objects);
+  auto commit = [&] {
+    size_t pending = writer.pending();
+    writer.commit(report, options.on_problem);
+    progress.advance(pending);
+  };
+  try {
+    while (auto item = queue.pop()) {
+      switch (item->stage) {
+        case ScannedFile::Stage::Known:
+          ++report.already_archived;
+          progress.advance();
+          break;
+        case ScannedFile::Stage::Conflict:
+        case ScannedFile::Stage::Failed:
+          report_problem(report, options,
+                         {item->path, item->stage == ScannedFile::Stage::Conflict ? ImportOutcome::Conflict : ImportOutcome::Failed,
+                          item->code, item->reason});
+          progress.advance();
+          break;
+        case ScannedFile::Stage::Parsed:
+          log::debug("import ", item->path.string(), ": patient ", item->header.patient_id);
+          writer.add(std::move(*item));
+          if (writer.pending() >= options.batch_files) commit();
+          break;
+      }
+    }
+    commit();
+  } catch (...) {
+    queue.abandon();
+    while (queue.pop()) {
+    }
+    scanner.join();
+    throw;
+  }
+  scanner.join();
+  if (scanner_error) std::rethrow_exception(scanner_error);
+  progress.finish();
+  return report;
+}
+
+}  // namespace maxillo

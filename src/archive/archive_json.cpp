@@ -1,0 +1,116 @@
+#include "archive/archive_json.h"
+
+namespace maxillo {
+namespace {
+
+template <typename T>
+Json optional(const std::optional<T>& value) {
+  return value ? Json(*value) : Json(nullptr);
+}
+
+template <typename Container>
+Json strings(const Container& items) {
+  Json list = Json::array();
+  for (const auto& item : items) list.push_back(Json(std::string(item)));
+  return list;
+}
+
+}  // namespace
+
+Json to_json(const PatientRecord& r) {
+  return {{"id", r.id}, {"patient_id", r.patient_id}, {"name", r.name}, {"birth_date", r.birth_date},
+          {"sex", r.sex}, {"studies", r.study_count}};
+}
+
+Json to_json(const StudyRecord& r) {
+  return {{"id", r.id},     {"patient", r.patient},         {"study_uid", r.study_uid}, {"date", r.date},
+          {"time", r.time}, {"description", r.description}, {"accession", r.accession}, {"series", r.series_count}};
+}
+
+Json to_json(const SeriesRecord& r) {
+  return {{"id", r.id},
+          {"study", r.study},
+          {"series_uid", r.series_uid},
+          {"modality", r.modality},
+          {"description", r.description},
+          {"number", optional(r.number)},
+          {"rows", optional(r.rows)},
+          {"columns", optional(r.columns)},
+          {"pixel_spacing_mm", {optional(r.pixel_spacing_row), optional(r.pixel_spacing_column)}},
+          {"slice_thickness_mm", optional(r.slice_thickness)},
+          {"instances", r.instance_count}};
+}
+
+Json to_json(const InstanceRecord& r) {
+  return {{"id", r.id},
+          {"series", r.series},
+          {"sop_instance_uid", r.sop_instance_uid},
+          {"sop_class_uid", r.sop_class_uid},
+          {"instance_number", optional(r.instance_number)},
+          {"image_position", r.image_position},
+          {"image_orientation", r.image_orientation},
+          {"transfer_syntax", r.transfer_syntax},
+          {"sha256", r.object_sha256},
+          {"size", r.size},
+          {"source_path", r.source_path},
+          {"imported_at", r.imported_at}};
+}
+
+Json to_json(const CaseRecord& r) {
+  return {{"id", r.id}, {"patient", r.patient}, {"label", r.label}, {"created_at", r.created_at}};
+}
+
+Json to_json(const IdentityFlag& r) {
+  return {{"id", r.id},
+          {"patient", r.patient},
+          {"attribute", r.attribute},
+          {"archived_value", r.archived_value},
+          {"arrived_value", r.arrived_value},
+          {"source_path", r.source_path},
+          {"sop_instance_uid", r.sop_instance_uid},
+          {"flagged_at", r.flagged_at}};
+}
+
+Json to_json(const CaseContents& c) {
+  Json studies = Json::array(), series = Json::array();
+  for (const auto& s : c.studies) studies.push_back(to_json(s));
+  for (const auto& s : c.series) {
+    Json entry = to_json(s.series);
+    entry["role"] = s.role;
+    series.push_back(entry);
+  }
+  Json json = to_json(c.record);
+  json["patient"] = to_json(c.patient);
+  json["studies"] = studies;
+  json["series"] = series;
+  return json;
+}
+
+Json to_json(const ImportProblem& p) {
+  return {{"path", p.path.string()}, {"outcome", std::string(to_string(p.outcome))},
+          {"code", std::string(name_of(p.code))}, {"reason", p.reason}};
+}
+
+Json to_json(const ImportReport& r) {
+  Json problems = Json::array();
+  for (const auto& p : r.problems) problems.push_back(to_json(p));
+  return {{"files", r.files()},         {"imported", r.imported}, {"already_archived", r.already_archived},
+          {"conflicts", r.conflicts},   {"failed", r.failed},     {"identity_flags", r.identity_flags},
+          {"problems", problems}};
+}
+
+Json to_json(const VerifyReport& r) {
+  Json orphans = Json::array(), temporaries = Json::array();
+  for (const auto& p : r.orphans) orphans.push_back(p.string());
+  for (const auto& p : r.temporaries) temporaries.push_back(p.string());
+  return {{"objects_checked", r.objects_checked},
+          {"consistent", r.consistent()},
+          {"data_intact", r.data_intact()},
+          {"missing", strings(r.missing)},
+          {"corrupt", strings(r.corrupt)},
+          {"orphans", orphans},
+          {"temporaries", temporaries},
+          {"removed", r.removed}};
+}
+
+}  // namespace maxillo

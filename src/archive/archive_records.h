@@ -1,0 +1,121 @@
+#pragma once
+// Plain records the archive returns: rows of the index (db/001_initial.sql), no toolkit types.
+// `id` fields are archive ids (SQLite rowids), stable for the life of the archive.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace maxillo {
+
+struct PatientRecord {
+  int64_t id = 0;
+  std::string patient_id;  // protected health information: log at debug level only
+  std::string name;        // DICOM person name, UTF-8
+  std::string birth_date;  // YYYYMMDD or empty
+  std::string sex;
+  int64_t study_count = 0;
+};
+
+struct StudyRecord {
+  int64_t id = 0;
+  int64_t patient = 0;
+  std::string study_uid;
+  std::string date;  // YYYYMMDD
+  std::string time;
+  std::string description;
+  std::string accession;
+  int64_t series_count = 0;
+};
+
+struct SeriesRecord {
+  int64_t id = 0;
+  int64_t study = 0;
+  std::string series_uid;
+  std::string modality;
+  std::string description;
+  std::optional<int> number;
+  std::optional<int> rows;
+  std::optional<int> columns;
+  std::optional<double> pixel_spacing_row;     // mm
+  std::optional<double> pixel_spacing_column;  // mm
+  std::optional<double> slice_thickness;       // mm
+  int64_t instance_count = 0;                  // the slice count of a CT series
+};
+
+struct InstanceRecord {
+  int64_t id = 0;
+  int64_t series = 0;
+  std::string sop_instance_uid;
+  std::string sop_class_uid;
+  std::optional<int> instance_number;
+  std::string image_position;     // x\y\z, mm, LPS
+  std::string image_orientation;  // six direction cosines
+  std::string transfer_syntax;
+  std::string object_sha256;
+  int64_t size = 0;  // bytes
+  std::string source_path;
+  std::string imported_at;  // UTC ISO 8601
+};
+
+struct IdentityFlag {
+  int64_t id = 0;
+  int64_t patient = 0;
+  std::string attribute;  // "name", "birth_date" or "sex"
+  std::string archived_value;
+  std::string arrived_value;
+  std::string source_path;
+  std::string sop_instance_uid;
+  std::string flagged_at;
+};
+
+struct CaseRecord {
+  int64_t id = 0;
+  int64_t patient = 0;
+  std::string label;  // "default" for the case made at first import
+  std::string created_at;
+};
+
+struct CaseSeries {
+  SeriesRecord series;
+  std::string role;  // "preop", "postop", "follow-up" or "unassigned"
+};
+
+// What a report header and its series table need about one case.
+struct CaseContents {
+  CaseRecord record;
+  PatientRecord patient;
+  std::vector<StudyRecord> studies;  // by date
+  std::vector<CaseSeries> series;    // by study date, then series number
+};
+
+enum class ItemKind { Patient, Study, Series, Instance, Case };
+std::string to_string(ItemKind kind);
+
+struct ResolvedItem {
+  ItemKind kind = ItemKind::Patient;
+  int64_t id = 0;
+};
+
+struct NewArtefact {
+  int64_t case_id = 0;
+  std::string kind;         // "report", "render", "surface", "plan", ...
+  std::string object_sha256;  // from Archive::store_object
+  std::string media_type;   // "application/pdf", "image/png", "model/stl", ...
+  std::string inputs_hash;  // sha256 over the inputs (see core/sha256.h Sha256)
+  std::string parameters_json = "{}";
+};
+
+struct ArtefactRecord {
+  int64_t id = 0;
+  int64_t case_id = 0;
+  std::string kind;
+  std::string object_sha256;
+  std::string media_type;
+  std::string inputs_hash;
+  std::string parameters_json;
+  std::string program_version;
+  std::string created_at;
+};
+
+}  // namespace maxillo

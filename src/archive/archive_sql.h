@@ -1,0 +1,97 @@
+#pragma once
+// Every SQL statement the archive runs, in one place (the schema itself is db/*.sql).
+// Parameters are positional (?1, ?2...) and documented beside each statement.
+
+namespace maxillo::sql {
+
+// --- import ---
+inline constexpr const char* kInstanceWithObject = "SELECT 1 FROM instances WHERE object = ?1 LIMIT 1";
+inline constexpr const char* kObjectOfSopInstance = "SELECT object FROM instances WHERE sop_instance_uid = ?1";
+
+// ?1 patient_id ?2 name ?3 birth_date ?4 sex ?5 created_at
+inline constexpr const char* kInsertPatient =
+    "INSERT INTO patients(patient_id, name, birth_date, sex, created_at) VALUES (?1, ?2, ?3, ?4, ?5) "
+    "ON CONFLICT(patient_id) DO NOTHING";
+inline constexpr const char* kPatientByPatientId =
+    "SELECT id, name, birth_date, sex FROM patients WHERE patient_id = ?1";
+// ?1 patient ?2 created_at
+inline constexpr const char* kInsertDefaultCase =
+    "INSERT INTO cases(patient, label, created_at) VALUES (?1, 'default', ?2) ON CONFLICT(patient, label) DO NOTHING";
+inline constexpr const char* kDefaultCaseOfPatient = "SELECT id FROM cases WHERE patient = ?1 AND label = 'default'";
+// ?1 patient ?2 attribute ?3 archived ?4 arrived ?5 source_path ?6 sop_instance_uid ?7 flagged_at
+inline constexpr const char* kInsertIdentityFlag =
+    "INSERT OR IGNORE INTO identity_flags(patient, attribute, archived_value, arrived_value, source_path, "
+    "sop_instance_uid, flagged_at) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7)";
+// ?1 patient ?2 study_uid ?3 date ?4 time ?5 description ?6 accession
+inline constexpr const char* kInsertStudy =
+    "INSERT INTO studies(patient, study_uid, date, time, description, accession) VALUES (?1, ?2, ?3, ?4, ?5, ?6) "
+    "ON CONFLICT(study_uid) DO NOTHING";
+inline constexpr const char* kStudyIdByUid = "SELECT id FROM studies WHERE study_uid = ?1";
+// ?1 study ?2 series_uid ?3 modality ?4 description ?5 number ?6 rows ?7 columns ?8 ?9 spacing ?10 thickness
+inline constexpr const char* kInsertSeries =
+    "INSERT INTO series(study, series_uid, modality, description, number, rows, columns, pixel_spacing_row, "
+    "pixel_spacing_column, slice_thickness) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10) "
+    "ON CONFLICT(series_uid) DO NOTHING";
+inline constexpr const char* kSeriesIdByUid = "SELECT id FROM series WHERE series_uid = ?1";
+// ?1 case ?2 series ?3 modality: the first CT series of a case is its pre-operative scan.
+inline constexpr const char* kAttachSeriesToCase =
+    "INSERT OR IGNORE INTO case_series(case_id, series, role) VALUES (?1, ?2, "
+    "CASE WHEN ?3 = 'CT' AND NOT EXISTS (SELECT 1 FROM case_series WHERE case_id = ?1 AND role = 'preop') "
+    "THEN 'preop' ELSE 'unassigned' END)";
+// ?1 sha256 ?2 size
+inline constexpr const char* kInsertObject = "INSERT INTO objects(sha256, size) VALUES (?1, ?2) ON CONFLICT DO NOTHING";
+// ?1 series ?2 sop_instance_uid ?3 sop_class ?4 number ?5 position ?6 orientation ?7 syntax ?8 object
+// ?9 size ?10 source_path ?11 imported_at
+inline constexpr const char* kInsertInstance =
+    "INSERT INTO instances(series, sop_instance_uid, sop_class_uid, instance_number, image_position, "
+    "image_orientation, transfer_syntax, object, size, source_path, imported_at) "
+    "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11) ON CONFLICT(sop_instance_uid) DO NOTHING";
+
+// --- listing ---
+inline constexpr const char* kPatients =
+    "SELECT p.id, p.patient_id, p.name, p.birth_date, p.sex, "
+    "(SELECT COUNT(*) FROM studies s WHERE s.patient = p.id) FROM patients p";
+inline constexpr const char* kStudies =
+    "SELECT s.id, s.patient, s.study_uid, s.date, s.time, s.description, s.accession, "
+    "(SELECT COUNT(*) FROM series x WHERE x.study = s.id) FROM studies s";
+inline constexpr const char* kSeries =
+    "SELECT x.id, x.study, x.series_uid, x.modality, x.description, x.number, x.rows, x.columns, "
+    "x.pixel_spacing_row, x.pixel_spacing_column, x.slice_thickness, "
+    "(SELECT COUNT(*) FROM instances i WHERE i.series = x.id) FROM series x";
+inline constexpr const char* kInstancesOfSeries =
+    "SELECT id, series, sop_instance_uid, sop_class_uid, instance_number, image_position, image_orientation, "
+    "transfer_syntax, object, size, source_path, imported_at FROM instances WHERE series = ?1 "
+    "ORDER BY instance_number IS NULL, instance_number, id";
+inline constexpr const char* kCases = "SELECT id, patient, label, created_at FROM cases";
+inline constexpr const char* kIdentityFlags =
+    "SELECT id, patient, attribute, archived_value, arrived_value, source_path, sop_instance_uid, flagged_at "
+    "FROM identity_flags ORDER BY id";
+inline constexpr const char* kCaseSeries =
+    "SELECT series, role FROM case_series WHERE case_id = ?1";
+
+// --- resolving user-given IDs ---
+inline constexpr const char* kPatientIdOf = "SELECT id FROM patients WHERE patient_id = ?1";
+inline constexpr const char* kStudyIdOf = "SELECT id FROM studies WHERE study_uid = ?1";
+inline constexpr const char* kSeriesIdOf = "SELECT id FROM series WHERE series_uid = ?1";
+inline constexpr const char* kInstanceIdOf = "SELECT id FROM instances WHERE sop_instance_uid = ?1";
+inline constexpr const char* kExists[] = {"SELECT 1 FROM series WHERE id = ?1", "SELECT 1 FROM studies WHERE id = ?1",
+                                          "SELECT 1 FROM patients WHERE id = ?1", "SELECT 1 FROM cases WHERE id = ?1"};
+
+// --- cases ---
+inline constexpr const char* kSetSeriesRole = "UPDATE case_series SET role = ?3 WHERE case_id = ?1 AND series = ?2";
+
+// --- artefacts ---
+// ?1 case ?2 kind ?3 object ?4 media_type ?5 inputs_hash ?6 parameters ?7 program_version ?8 created_at
+inline constexpr const char* kInsertArtefact =
+    "INSERT INTO artefacts(case_id, kind, object, media_type, inputs_hash, parameters, program_version, created_at) "
+    "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8)";
+inline constexpr const char* kArtefactColumns =
+    "SELECT id, case_id, kind, object, media_type, inputs_hash, parameters, program_version, created_at FROM artefacts ";
+inline constexpr const char* kFindArtefact =
+    "WHERE case_id = ?1 AND kind = ?2 AND inputs_hash = ?3 ORDER BY id DESC LIMIT 1";
+inline constexpr const char* kArtefactsOfCase = "WHERE case_id = ?1 ORDER BY id";
+
+// --- verify ---
+inline constexpr const char* kAllObjects = "SELECT sha256, size FROM objects";
+
+}  // namespace maxillo::sql

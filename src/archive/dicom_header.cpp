@@ -1,0 +1,153 @@
+#include "archive/dicom_header.h"
+
+#include <dcmtk/config/osconfig.h>
+#include <dcmtk/dcmdata/dccodec.h>
+#include <dcmtk/dcmdata/dcdatset.h>
+#include <dcmtk/dcmdata/dcdeftag.h>
+#include <dcmtk/dcmdata/dcfilefo.h>
+#include <dcmtk/dcmdata/dcistrmb.h>
+#include <dcmtk/dcmdata/dcmetinf.h>
+#include <dcmtk/dcmdata/dcrledrg.h>
+#include <dcmtk/dcmdata/dcxfer.h>
+#include <dcmtk/dcmjpeg/djdecode.h>
+#include <dcmtk/dcmjpls/djdecode.h>
+#include <dcmtk/oflog/oflog.h>
+
+#include <cstring>
+#include <mutex>
+
+#include "core/error.h"
+
+namespace maxillo {
+namespace {
+
+constexpr size_t kPreambleLength = 128;
+
+bool has_dicm_prefix(std::span<const std::byte> bytes) {
+  return bytes.size() >= kPreambleLength + 4 && std::memcmp(bytes.data() + kPreambleLength, "DICM", 4) == 0;
+}
+
+std::string text_of(DcmItem& item, const DcmTagKey& tag) {
+  OFString value;
+  if (item.findAndGetOFStringArray(tag, value).bad()) return {};
+  return value.c_str();
+}
+
+std::optional<int> integer_of(DcmItem& item, const DcmTagKey& tag) {
+  Sint32 value = 0;
+  if (item.findAndGetSint32(tag, value).good()) return value;
+  return std::nullopt;
+}
+
+std::optional<int> unsigned_of(DcmItem& item, const DcmTagKey& tag) {
+  Uint16 value = 0;
+  if (item.findAndGetUint16(tag, value).good()) return value;
+  return std::nullopt;
+}
+
+std::optional<double> decimal_of(DcmItem& item, const DcmTagKey& tag, unsigned long index = 0) {
+  Float64 value = 0;
+  if (item.findAndGetFloat64(tag, value, index).good()) return value;
+  return std::nullopt;
+}
+
+// Whether DCMTK can decode pixel data stored in this transfer syntax.
+void require_supported_syntax(const std::string& uid, const std::filesystem::path& path) {
+  if (uid.empty()) throw Error(ErrorCode::kMissingAttribute, path.string(), "no Transfer Syntax UID (0002,0010)");
+  DcmXfer xfer(uid.c_str());
+  if (xfer.getXfer() == EXS_Unknown)
+    throw Error(ErrorCode::kUnsupportedSyntax, path.string(), "unknown transfer syntax " + uid);
+  if (xfer.isEncapsulated() && !DcmCodecList::canChangeCoding(xfer.getXfer(), EXS_LittleEndianExplicit))
+    throw Error(ErrorCode::kUnsupportedSyntax, path.string(),
+                std::string(xfer.getXferName()) + " (" + uid + "): no decoder available");
+}
+
+void require(const std::string& value, const char* what, const std::filesystem::path& path) {
+  if (value.empty()) throw Error(ErrorCode::kMissingAttribute, path.string(), std::string("no ") + what);
+}
+
+bool is_utf8_compatible(const std::string& character_set) {
+  return character_set.empty() || character_set == "ISO_IR 192" || character_set == "ISO_IR 6";
+}
+
+void fill_patient_study_series(DcmDataset& d, InstanceHeader& h) {
+  h.sop_class_uid = text_of(d, DCM_SOPClassUID);
+  h.sop_instance_uid = text_of(d, DCM_SOPInstanceUID);
+  h.patient_id = text_of(d, DCM_PatientID);
+  h.patient_name = text_of(d, DCM_PatientName);
+  h.birth_date = text_of(d, DCM_PatientBirthDate);
+  h.sex = text_of(d, DCM_PatientSex);
+  h.study_uid = text_of(d, DCM_StudyInstanceUID);
+  h.study_date = text_of(d, DCM_StudyDate);
+  h.study_time = text_of(d, DCM_StudyTime);
+  h.study_description = text_of(d, DCM_StudyDescription);
+  h.accession_number = text_of(d, DCM_AccessionNumber);
+  h.series_uid = text_of(d, DCM_SeriesInstanceUID);
+  h.modality = text_of(d, DCM_Modality);
+  h.series_description = text_of(d, DCM_SeriesDescription);
+  h.series_number = integer_of(d, DCM_SeriesNumber);
+}
+
+void fill_image(DcmDataset& d, InstanceHeader& h) {
+  h.instance_number = integer_of(d, DCM_InstanceNumber);
+  h.rows = unsigned_of(d, DCM_Rows);
+  h.columns = unsigned_of(d, DCM_Columns);
+  h.pixel_spacing_row = decimal_of(d, DCM_PixelSpacing, 0);
+  h.pixel_spacing_column = decimal_of(d, DCM_PixelSpacing, 1);
+  h.slice_thickness = decimal_of(d, DCM_SliceThickness);
+  h.image_position = text_of(d, DCM_ImagePositionPatient);
+  h.image_orientation = text_of(d, DCM_ImageOrientationPatient);
+}
+
+}  // namespace
+
+void initialise_dicom_toolkit() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    OFLog::configure(OFLogger::FATAL_LOG_LEVEL);
+    DJDecoderRegistration::registerCodecs();
+    DJLSDecoderRegistration::registerCodecs();
+    DcmRLEDecoderRegistration::registerCodecs();
+  });
+}
+
+InstanceHeader parse_instance_header(std::span<const std::byte> bytes, const std::filesystem::path& path) {
+  initialise_dicom_toolkit();
+  if (!has_dicm_prefix(bytes))
+    throw Error(ErrorCode::kNotDicom, path.string(), "no DICM prefix at byte 128 (not a DICOM Part 10 file)");
+
+  // The whole file is already in memory (it was read once for hashing): parse from there.
+  DcmInputBufferStream stream;
+  stream.setBuffer(bytes.data(), static_cast<offile_off_t>(bytes.size()));
+  stream.setEos();
+  DcmFileFormat file;
+  file.transferInit();
+  OFCondition status = file.read(stream, EXS_Unknown, EGL_noChange, DCM_MaxReadLength);
+  file.transferEnd();
+
+  InstanceHeader header;
+  header.transfer_syntax_uid = text_of(*file.getMetaInfo(), DCM_TransferSyntaxUID);
+  if (header.transfer_syntax_uid.empty() && status.bad())
+    throw Error(ErrorCode::kNotDicom, path.string(), std::string("unreadable file meta information: ") + status.text());
+  require_supported_syntax(header.transfer_syntax_uid, path);
+  if (status == EC_StreamNotifyClient || status == EC_ItemEnd || status == EC_SequEnd ||
+      status == EC_PrematureSequDelimitationItem || status == EC_InvalidStream ||
+      (status.good() && !stream.eos()))
+    throw Error(ErrorCode::kTruncated, path.string(), std::string("file ends inside an attribute (") + status.text() + ")");
+  if (status.bad()) throw Error(ErrorCode::kNotDicom, path.string(), std::string("cannot parse: ") + status.text());
+
+  DcmDataset& dataset = *file.getDataset();
+  std::string character_set = text_of(dataset, DCM_SpecificCharacterSet);
+  if (!is_utf8_compatible(character_set) && dataset.convertToUTF8().bad())
+    throw Error(ErrorCode::kBadValue, path.string(), "cannot decode character set " + character_set);
+  fill_patient_study_series(dataset, header);
+  fill_image(dataset, header);
+  require(header.sop_instance_uid, "SOP Instance UID (0008,0018)", path);
+  require(header.sop_class_uid, "SOP Class UID (0008,0016)", path);
+  require(header.study_uid, "Study Instance UID (0020,000D)", path);
+  require(header.series_uid, "Series Instance UID (0020,000E)", path);
+  require(header.patient_id, "Patient ID (0010,0020)", path);
+  return header;
+}
+
+}  // namespace maxillo

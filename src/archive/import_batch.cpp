@@ -1,0 +1,155 @@
+#include "archive/import_batch.h"
+
+#include "archive/archive_sql.h"
+#include "archive/archive_state.h"
+
+namespace maxillo {
+namespace {
+
+std::optional<double> optional_real(const std::optional<double>& value) { return value; }
+
+void bind_optional(sqlite::Statement& statement, int index, const std::optional<int>& value) {
+  if (value) statement.bind(index, *value);
+  else statement.bind_null(index);
+}
+
+int64_t single_id(sqlite::Statement& query) {
+  int64_t id = query.step() ? query.integer(0) : 0;
+  query.reset();
+  return id;
+}
+
+}  // namespace
+
+BatchWriter::BatchWriter(sqlite::Database& db, ObjectStore& objects)
+    : db_(db),
+      objects_(objects),
+      insert_patient_(db, sql::kInsertPatient),
+      patient_by_id_(db, sql::kPatientByPatientId),
+      insert_case_(db, sql::kInsertDefaultCase),
+      case_of_patient_(db, sql::kDefaultCaseOfPatient),
+      insert_flag_(db, sql::kInsertIdentityFlag),
+      insert_study_(db, sql::kInsertStudy),
+      study_by_uid_(db, sql::kStudyIdByUid),
+      insert_series_(db, sql::kInsertSeries),
+      series_by_uid_(db, sql::kSeriesIdByUid),
+      attach_series_(db, sql::kAttachSeriesToCase),
+      insert_object_(db, sql::kInsertObject),
+      insert_instance_(db, sql::kInsertInstance),
+      object_of_sop_(db, sql::kObjectOfSopInstance) {}
+
+void BatchWriter::add(ScannedFile&& file) {
+  objects_.put(file.sha256, file.bytes);
+  file.bytes = {};  // the file is on disk now; keep batches small in memory
+  batch_.push_back(std::move(file));
+}
+
+void BatchWriter::commit(ImportReport& report, const std::function<void(const ImportProblem&)>& on_problem) {
+  if (batch_.empty()) return;
+  objects_.make_durable();
+  const std::string now = utc_now();
+  ImportReport outcome;
+  std::vector<ImportProblem> problems;
+  {
+    sqlite::Transaction transaction(db_);
+    for (const auto& file : batch_) {
+      std::string reason;
+      switch (insert(file, now, outcome, reason)) {
+        case ImportOutcome::Imported: ++outcome.imported; break;
+        case ImportOutcome::AlreadyArchived: ++outcome.already_archived; break;
+        default: problems.push_back({file.path, ImportOutcome::Conflict, ErrorCode::kConflict, reason}); break;
+      }
+    }
+    transaction.commit();
+  }
+  // Counted only once committed: a failed commit throws and counts nothing.
+  report.imported += outcome.imported;
+  report.already_archived += outcome.already_archived;
+  report.identity_flags += outcome.identity_flags;
+  for (auto& problem : problems) {
+    ++report.conflicts;
+    if (on_problem) on_problem(problem);
+    report.problems.push_back(std::move(problem));
+  }
+  batch_.clear();
+}
+
+ImportOutcome BatchWriter::insert(const ScannedFile& file, const std::string& now, ImportReport& report,
+                                  std::string& reason) {
+  const InstanceHeader& h = file.header;
+  const PatientState& patient = patient_of(h, now);
+  flag_identity(patient, file, now, report);
+  int64_t series = series_of(h, study_of(h, patient.id), patient.default_case);
+  insert_object_.reset().bind(1, file.sha256).bind(2, int64_t(file.size)).run();
+  auto& s = insert_instance_.reset();
+  s.bind(1, series).bind(2, h.sop_instance_uid).bind(3, h.sop_class_uid);
+  bind_optional(s, 4, h.instance_number);
+  s.bind(5, h.image_position).bind(6, h.image_orientation).bind(7, h.transfer_syntax_uid).bind(8, file.sha256);
+  s.bind(9, int64_t(file.size)).bind(10, std::filesystem::absolute(file.path).string()).bind(11, now);
+  s.run();
+  if (db_.changes() == 1) return ImportOutcome::Imported;
+  // Another file of this batch, or another process, archived this SOP Instance UID first.
+  object_of_sop_.reset().bind(1, h.sop_instance_uid).step();
+  std::string archived = object_of_sop_.text(0);
+  object_of_sop_.reset();
+  if (archived == file.sha256) return ImportOutcome::AlreadyArchived;
+  reason = "SOP Instance UID " + h.sop_instance_uid + " is archived with other content (object " +
+           archived.substr(0, 12) + "...); the archived file is kept";
+  return ImportOutcome::Conflict;
+}
+
+const BatchWriter::PatientState& BatchWriter::patient_of(const InstanceHeader& h, const std::string& now) {
+  if (auto found = patients_.find(h.patient_id); found != patients_.end()) return found->second;
+  insert_patient_.reset().bind(1, h.patient_id).bind(2, h.patient_name).bind(3, h.birth_date).bind(4, h.sex).bind(5, now).run();
+  PatientState state{};
+  patient_by_id_.reset().bind(1, h.patient_id).step();
+  state.id = patient_by_id_.integer(0);
+  state.name = patient_by_id_.text(1);
+  state.birth_date = patient_by_id_.text(2);
+  state.sex = patient_by_id_.text(3);
+  patient_by_id_.reset();
+  insert_case_.reset().bind(1, state.id).bind(2, now).run();
+  state.default_case = single_id(case_of_patient_.reset().bind(1, state.id));
+  return patients_.emplace(h.patient_id, std::move(state)).first->second;
+}
+
+void BatchWriter::flag_identity(const PatientState& patient, const ScannedFile& file, const std::string& now,
+                                ImportReport& report) {
+  const InstanceHeader& h = file.header;
+  const std::pair<const char*, std::pair<const std::string*, const std::string*>> attributes[] = {
+      {"name", {&patient.name, &h.patient_name}},
+      {"birth_date", {&patient.birth_date, &h.birth_date}},
+      {"sex", {&patient.sex, &h.sex}}};
+  for (const auto& [attribute, values] : attributes) {
+    const auto& [archived, arrived] = values;
+    if (*archived == *arrived) continue;
+    if (!flagged_.emplace(patient.id, attribute, *arrived).second) continue;
+    insert_flag_.reset().bind(1, patient.id).bind(2, attribute).bind(3, *archived).bind(4, *arrived);
+    insert_flag_.bind(5, std::filesystem::absolute(file.path).string()).bind(6, h.sop_instance_uid).bind(7, now).run();
+    report.identity_flags += size_t(db_.changes());
+  }
+}
+
+int64_t BatchWriter::study_of(const InstanceHeader& h, int64_t patient) {
+  if (auto found = studies_.find(h.study_uid); found != studies_.end()) return found->second;
+  insert_study_.reset().bind(1, patient).bind(2, h.study_uid).bind(3, h.study_date).bind(4, h.study_time);
+  insert_study_.bind(5, h.study_description).bind(6, h.accession_number).run();
+  int64_t id = single_id(study_by_uid_.reset().bind(1, h.study_uid));
+  return studies_.emplace(h.study_uid, id).first->second;
+}
+
+int64_t BatchWriter::series_of(const InstanceHeader& h, int64_t study, int64_t case_id) {
+  if (auto found = series_.find(h.series_uid); found != series_.end()) return found->second;
+  auto& s = insert_series_.reset();
+  s.bind(1, study).bind(2, h.series_uid).bind(3, h.modality).bind(4, h.series_description);
+  bind_optional(s, 5, h.series_number);
+  bind_optional(s, 6, h.rows);
+  bind_optional(s, 7, h.columns);
+  s.bind(8, optional_real(h.pixel_spacing_row)).bind(9, optional_real(h.pixel_spacing_column));
+  s.bind(10, optional_real(h.slice_thickness)).run();
+  int64_t id = single_id(series_by_uid_.reset().bind(1, h.series_uid));
+  attach_series_.reset().bind(1, case_id).bind(2, id).bind(3, h.modality).run();
+  return series_.emplace(h.series_uid, id).first->second;
+}
+
+}  // namespace maxillo

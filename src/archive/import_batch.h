@@ -1,0 +1,52 @@
+#pragma once
+// The second stage of an import, on the main thread: store the objects of a batch, make them
+// durable with one syncfs, then commit all the batch's rows in one transaction. Rows are
+// therefore never committed before their files exist on stable storage.
+#include <map>
+#include <set>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "archive/archive.h"
+#include "archive/import_scan.h"
+#include "archive/object_store.h"
+#include "archive/sqlite.h"
+
+namespace maxillo {
+
+class BatchWriter {
+ public:
+  BatchWriter(sqlite::Database& db, ObjectStore& objects);
+
+  // Writes the file's object now (not yet durable) and queues its rows.
+  void add(ScannedFile&& file);
+  size_t pending() const { return batch_.size(); }
+  // syncfs, then one transaction for every queued file; each outcome goes into report.
+  void commit(ImportReport& report, const std::function<void(const ImportProblem&)>& on_problem);
+
+ private:
+  struct PatientState {
+    int64_t id;
+    int64_t default_case;
+    std::string name, birth_date, sex;  // as archived
+  };
+  ImportOutcome insert(const ScannedFile& file, const std::string& now, ImportReport& report, std::string& reason);
+  const PatientState& patient_of(const InstanceHeader& h, const std::string& now);
+  void flag_identity(const PatientState& patient, const ScannedFile& file, const std::string& now, ImportReport& report);
+  int64_t study_of(const InstanceHeader& h, int64_t patient);
+  int64_t series_of(const InstanceHeader& h, int64_t study, int64_t case_id);
+
+  sqlite::Database& db_;
+  ObjectStore& objects_;
+  std::vector<ScannedFile> batch_;
+  sqlite::Statement insert_patient_, patient_by_id_, insert_case_, case_of_patient_, insert_flag_;
+  sqlite::Statement insert_study_, study_by_uid_, insert_series_, series_by_uid_, attach_series_;
+  sqlite::Statement insert_object_, insert_instance_, object_of_sop_;
+  // Ids already known in this import; rows are never deleted, so they stay valid.
+  std::map<std::string, PatientState, std::less<>> patients_;
+  std::map<std::string, int64_t, std::less<>> studies_, series_;
+  std::set<std::tuple<int64_t, std::string, std::string>> flagged_;
+};
+
+}  // namespace maxillo

@@ -1,0 +1,128 @@
+#include "archive/import_scan.h"
+
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+
+#include "archive/archive_sql.h"
+#include "archive/sqlite.h"
+#include "core/atomic_file.h"
+#include "core/sha256.h"
+
+namespace maxillo {
+namespace {
+
+ScannedFile failure(const std::filesystem::path& path, ErrorCode code, std::string reason) {
+  ScannedFile item;
+  item.path = path;
+  item.stage = ScannedFile::Stage::Failed;
+  item.code = code;
+  item.reason = std::move(reason);
+  return item;
+}
+
+void list_folder(const std::filesystem::path& folder, FileList& list) {
+  std::error_code error;
+  std::filesystem::directory_iterator entries(folder, error);
+  if (error) {
+    list.unreachable.push_back(failure(folder, ErrorCode::kPermissionDenied, "cannot list folder: " + error.message()));
+    return;
+  }
+  std::vector<std::filesystem::directory_entry> sorted;
+  for (; entries != std::filesystem::directory_iterator(); entries.increment(error)) {
+    if (error) break;
+    sorted.push_back(*entries);
+  }
+  std::sort(sorted.begin(), sorted.end());
+  for (const auto& entry : sorted) {
+    std::error_code ignored;
+    if (entry.is_symlink(ignored) && entry.is_directory(ignored)) continue;  // no loops
+    if (entry.is_directory(ignored)) list_folder(entry.path(), list);
+    else list.files.push_back(entry.path());
+  }
+}
+
+}  // namespace
+
+FileList list_input_files(const std::vector<std::filesystem::path>& paths) {
+  FileList list;
+  for (const auto& path : paths) {
+    std::error_code error;
+    auto status = std::filesystem::status(path, error);
+    if (std::filesystem::is_directory(status)) list_folder(path, list);
+    else if (std::filesystem::exists(status) || std::filesystem::is_symlink(std::filesystem::symlink_status(path, error)))
+      list.files.push_back(path);
+    else list.unreachable.push_back(failure(path, ErrorCode::kFileNotFound, "no such file or folder"));
+  }
+  return list;
+}
+
+struct FileScanner::Queries {
+  explicit Queries(const std::filesystem::path& index_file)
+      : db(index_file), known_object(db, sql::kInstanceWithObject), object_of_sop(db, sql::kObjectOfSopInstance) {
+    db.execute("PRAGMA query_only = ON");
+  }
+  sqlite::Database db;
+  sqlite::Statement known_object;
+  sqlite::Statement object_of_sop;
+};
+
+FileScanner::FileScanner(const std::filesystem::path& index_file) : queries_(new Queries(index_file)) {}
+FileScanner::~FileScanner() { delete queries_; }
+
+ScannedFile FileScanner::scan(const std::filesystem::path& path) {
+  // stat first: a FIFO or device would block or never end if read.
+  struct stat info {};
+  if (::stat(path.c_str(), &info) != 0) {
+    int e = errno;
+    return failure(path, e == EACCES ? ErrorCode::kPermissionDenied : ErrorCode::kFileNotFound,
+                   std::string("unreadable: ") + std::strerror(e));
+  }
+  if (S_ISDIR(info.st_mode)) return failure(path, ErrorCode::kBadValue, "unreadable: is a folder");
+  if (!S_ISREG(info.st_mode)) return failure(path, ErrorCode::kBadValue, "unreadable: not a regular file");
+
+  ScannedFile item;
+  item.path = path;
+  try {
+    item.bytes = read_file(path);
+  } catch (const Error& e) {
+    return failure(path, e.code(), "unreadable: " + e.reason());
+  }
+  item.size = item.bytes.size();
+  item.sha256 = sha256_hex(item.bytes);
+  bool known = queries_->known_object.reset().bind(1, item.sha256).step();
+  queries_->known_object.reset();  // ends the read snapshot
+  if (known) {
+    item.stage = ScannedFile::Stage::Known;
+    item.bytes = {};
+    return item;
+  }
+  try {
+    item.header = parse_instance_header(item.bytes, path);
+  } catch (const Error& e) {
+    return failure(path, e.code(), e.reason());
+  }
+  std::string archived_object;
+  if (queries_->object_of_sop.reset().bind(1, item.header.sop_instance_uid).step())
+    archived_object = queries_->object_of_sop.text(0);
+  queries_->object_of_sop.reset();
+  if (archived_object == item.sha256) {  // archived by another process since the first lookup
+    item.stage = ScannedFile::Stage::Known;
+    item.bytes = {};
+    return item;
+  }
+  if (!archived_object.empty()) {
+    item.stage = ScannedFile::Stage::Conflict;
+    item.code = ErrorCode::kConflict;
+    item.reason = "SOP Instance UID " + item.header.sop_instance_uid + " is archived with other content (object " +
+                  archived_object.substr(0, 12) + "...); the archived file is kept";
+    item.bytes = {};
+    return item;
+  }
+  item.stage = ScannedFile::Stage::Parsed;
+  return item;
+}
+
+}  // namespace maxillo

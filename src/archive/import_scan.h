@@ -1,0 +1,55 @@
+#pragma once
+// The first stage of an import: find the files, read each once, hash it, and parse its header
+// unless the archive already holds those exact bytes. Runs on its own thread with its own
+// read-only view of the index, so the main thread only writes objects and commits rows.
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "archive/dicom_header.h"
+#include "core/error.h"
+
+namespace maxillo {
+
+struct ScannedFile {
+  enum class Stage {
+    Known,     // these bytes are archived already: nothing to do
+    Conflict,  // its SOP Instance UID is archived with other bytes
+    Parsed,    // new: header parsed, bytes to store
+    Failed,    // bad input: code and reason say why
+  };
+  std::filesystem::path path;
+  Stage stage = Stage::Failed;
+  std::vector<std::byte> bytes;  // kept only for Parsed files
+  std::string sha256;
+  size_t size = 0;  // bytes in the file
+  InstanceHeader header;
+  ErrorCode code = ErrorCode::kProcessing;
+  std::string reason;
+};
+
+// Input paths expanded to files: folders recursively (symlinked folders are not followed),
+// sorted within each folder. A path that does not exist or a folder that cannot be listed
+// becomes a Failed entry, so it is reported like any bad file.
+struct FileList {
+  std::vector<std::filesystem::path> files;
+  std::vector<ScannedFile> unreachable;
+};
+FileList list_input_files(const std::vector<std::filesystem::path>& paths);
+
+// Reads, hashes and (for unknown content) parses one file. Never throws for bad input.
+class FileScanner {
+ public:
+  explicit FileScanner(const std::filesystem::path& index_file);
+  ~FileScanner();
+  FileScanner(const FileScanner&) = delete;
+  FileScanner& operator=(const FileScanner&) = delete;
+  ScannedFile scan(const std::filesystem::path& path);
+
+ private:
+  struct Queries;
+  Queries* queries_;
+};
+
+}  // namespace maxillo

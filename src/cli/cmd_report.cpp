@@ -1,0 +1,46 @@
+// maxillo report CASE --out report.pdf: the consultation report of an archived case.
+#include <iostream>
+
+#include "cli/command.h"
+#include "core/json.h"
+#include "pipeline/consultation_report.h"
+
+namespace maxillo::cli {
+namespace {
+
+struct ReportOptions {
+  std::string case_text;
+  std::filesystem::path out = "report.pdf";
+  std::string template_resource = "templates/consultation.json";
+};
+
+int run_report(const ReportOptions& options, const GlobalOptions& global) {
+  auto archive = Archive::open(resolve_archive_dir(global));
+  auto case_id = archive.resolve_case(options.case_text);
+  pipeline::ConsultationOptions consultation;
+  consultation.template_resource = options.template_resource;
+  auto result = pipeline::write_consultation_report(archive, case_id, options.out, consultation);
+  if (global.json) {
+    std::cout << Json{{"report", result.pdf.string()}, {"pages", result.pages}, {"case", case_id},
+                      {"sha256", result.report_sha256}, {"surfaces_reused", result.surfaces_reused},
+                      {"seconds", {{"surfaces", result.seconds_surfaces}, {"views", result.seconds_views},
+                                   {"layout", result.seconds_layout}}}}
+                     .dump(2)
+              << "\n";
+  } else {
+    std::cout << "report: " << result.pdf.string() << " (" << result.pages << " pages)\n";
+  }
+  return 0;
+}
+
+}  // namespace
+
+void attach_report(CLI::App& app, CommandContext& ctx) {
+  auto options = std::make_shared<ReportOptions>();
+  app.add_option("CASE", options->case_text, "case id, or a Patient ID (its default case)")->required();
+  app.add_option("--out", options->out, "PDF file to write")->capture_default_str();
+  app.add_option("--template", options->template_resource, "template resource (see templates/)")->capture_default_str();
+  app.callback([options, &ctx] { ctx.exit_code = run_report(*options, ctx.global); });
+}
+
+}  // namespace maxillo::cli

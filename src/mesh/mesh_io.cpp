@@ -1,0 +1,148 @@
+// Mesh file I/O with VTK's readers and writers; errors are collected from VTK's error events.
+#include "mesh/mesh_io.h"
+
+#include <vtkOBJReader.h>
+#include <vtkOBJWriter.h>
+#include <vtkLogger.h>
+#include <vtkOutputWindow.h>
+#include <vtkPLYReader.h>
+#include <vtkPLYWriter.h>
+#include <vtkSTLReader.h>
+#include <vtkSTLWriter.h>
+#include <vtkXMLPolyDataReader.h>
+#include <vtkXMLPolyDataWriter.h>
+
+#include <algorithm>
+#include <cctype>
+#include <system_error>
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "mesh/vtk_bridge.h"
+
+namespace maxillo {
+namespace {
+
+template <typename Writer>
+void run_writer(Writer* writer, vtkPolyData* polydata, const std::filesystem::path& path) {
+  vtkNew<vtk_bridge::ErrorCollector> errors;
+  errors->observe(writer);
+  writer->SetInputData(polydata);
+  writer->SetFileName(path.c_str());
+  int ok = writer->Write();
+  if (!ok || errors->failed())
+    throw Error(ErrorCode::kWriteFailed, path.string(), errors->failed() ? errors->errors : "VTK writer failed");
+}
+
+void write_as(MeshFormat format, vtkPolyData* polydata, const std::filesystem::path& path) {
+  switch (format) {
+    case MeshFormat::Stl: {
+      vtkNew<vtkSTLWriter> writer;
+      writer->SetFileTypeToBinary();
+      return run_writer(writer.Get(), polydata, path);
+    }
+    case MeshFormat::Ply: {
+      vtkNew<vtkPLYWriter> writer;
+      writer->SetFileTypeToBinary();
+      writer->SetDataByteOrderToLittleEndian();
+      return run_writer(writer.Get(), polydata, path);
+    }
+    case MeshFormat::Obj: {
+      vtkNew<vtkOBJWriter> writer;
+      return run_writer(writer.Get(), polydata, path);
+    }
+    case MeshFormat::Vtp: {
+      vtkNew<vtkXMLPolyDataWriter> writer;
+      writer->SetDataModeToBinary();
+      return run_writer(writer.Get(), polydata, path);
+    }
+  }
+}
+
+// Keeps VTK from printing errors of objects we cannot observe (e.g. the XML parser inside a
+// reader) while a read runs; the reader's own errors still reach our ErrorCollector.
+class QuietVtkOutput {
+ public:
+  QuietVtkOutput()
+      : window_(vtkOutputWindow::GetInstance()),
+        mode_(window_->GetDisplayMode()),
+        verbosity_(vtkLogger::GetCurrentVerbosityCutoff()) {
+    window_->SetDisplayModeToNever();
+    vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  }
+  ~QuietVtkOutput() {
+    window_->SetDisplayMode(mode_);
+    vtkLogger::SetStderrVerbosity(verbosity_);
+  }
+  QuietVtkOutput(const QuietVtkOutput&) = delete;
+  QuietVtkOutput& operator=(const QuietVtkOutput&) = delete;
+
+ private:
+  vtkOutputWindow* window_;
+  int mode_;
+  vtkLogger::Verbosity verbosity_;
+};
+
+template <typename Reader>
+TriangleMesh run_reader(const std::filesystem::path& path) {
+  QuietVtkOutput quiet;
+  vtkNew<Reader> reader;
+  vtkNew<vtk_bridge::ErrorCollector> errors;
+  errors->observe(reader);
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  if (errors->failed()) throw Error(ErrorCode::kBadValue, path.string(), errors->errors);
+  TriangleMesh mesh = vtk_bridge::from_polydata(reader->GetOutput());
+  if (mesh.face_count() == 0) throw Error(ErrorCode::kBadValue, path.string(), "no triangles in the file");
+  return mesh;
+}
+
+}  // namespace
+
+MeshFormat mesh_format_for(const std::filesystem::path& path) {
+  std::string extension = path.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (extension == ".stl") return MeshFormat::Stl;
+  if (extension == ".ply") return MeshFormat::Ply;
+  if (extension == ".obj") return MeshFormat::Obj;
+  if (extension == ".vtp") return MeshFormat::Vtp;
+  throw Error(ErrorCode::kUsage, path.string(),
+              "unknown mesh extension '" + extension + "' (known: .stl, .ply, .obj, .vtp)");
+}
+
+void write_mesh(const TriangleMesh& mesh, const std::filesystem::path& path) {
+  const MeshFormat format = mesh_format_for(path);
+  vtkSmartPointer<vtkPolyData> polydata = vtk_bridge::to_polydata(mesh);
+  // The temporary keeps the extension: vtkPLYWriter appends ".ply" to names without it.
+  std::filesystem::path temporary = temporary_sibling(path);
+  temporary += path.extension();
+  try {
+    write_as(format, polydata, temporary);
+  } catch (const Error& e) {
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+    throw Error(ErrorCode::kWriteFailed, path.string(), e.reason());
+  }
+  std::error_code error;
+  std::filesystem::rename(temporary, path, error);
+  if (error) {
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+    throw Error(ErrorCode::kWriteFailed, path.string(), "cannot rename the temporary file: " + error.message());
+  }
+}
+
+TriangleMesh read_mesh(const std::filesystem::path& path) {
+  const MeshFormat format = mesh_format_for(path);
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) throw Error(ErrorCode::kFileNotFound, path.string(), "no such file");
+  switch (format) {
+    case MeshFormat::Stl: return run_reader<vtkSTLReader>(path);
+    case MeshFormat::Ply: return run_reader<vtkPLYReader>(path);
+    case MeshFormat::Obj: return run_reader<vtkOBJReader>(path);
+    case MeshFormat::Vtp: return run_reader<vtkXMLPolyDataReader>(path);
+  }
+  return {};
+}
+
+}  // namespace maxillo

@@ -1,0 +1,26 @@
+#pragma once
+// Mesh files, format chosen by extension (case-insensitive):
+//   .stl  binary STL (vertices are merged on reading)
+//   .ply  binary little-endian PLY
+//   .obj  Wavefront OBJ (text; v and f records)
+//   .vtp  VTK XML PolyData (binary, compressed)
+// Coordinates are written as they are (patient LPS mm for maxillo surfaces); no unit or frame
+// is stored in STL/PLY/OBJ, so readers must know the convention.
+#include <filesystem>
+
+#include "core/triangle_mesh.h"
+
+namespace maxillo {
+
+enum class MeshFormat { Stl, Ply, Obj, Vtp };
+
+// The format for a path's extension; throws Error(kUsage, path, ...) listing the known ones.
+MeshFormat mesh_format_for(const std::filesystem::path& path);
+
+// Writes atomically (temporary file + rename). Throws Error(kWriteFailed, path, reason).
+void write_mesh(const TriangleMesh& mesh, const std::filesystem::path& path);
+
+// Throws Error(kFileNotFound | kBadValue, path, reason); polygons are triangulated.
+TriangleMesh read_mesh(const std::filesystem::path& path);
+
+}  // namespace maxillo

@@ -1,0 +1,66 @@
+#include "pipeline/case_surfaces.h"
+
+#include "core/log.h"
+#include "imaging/volume_assembly.h"
+#include "pipeline/derivation.h"
+#include "pipeline/mesh_artefact.h"
+
+namespace maxillo::pipeline {
+namespace {
+
+constexpr const char* kSkinKind = "surface-skin";
+constexpr const char* kBoneKind = "surface-bone";
+
+Json surface_json(const SurfaceOptions& o) {
+  return {{"keep_largest_components", o.keep_largest_components},
+          {"min_component_fraction", o.min_component_fraction},
+          {"smoothing_iterations", o.smoothing_iterations},
+          {"smoothing_passband", o.smoothing_passband},
+          {"target_triangles", o.target_triangles}};
+}
+
+// Skin: the body mask's boundary (head rest and table removed by the segmentation), drawn
+// through the CT's own sub-voxel values. Bone: all bone including teeth.
+CaseSurfaces extract_case_surfaces(const Volume& volume, const SurfaceRecipe& recipe) {
+  auto labels = segment_tissues(volume, recipe.segmentation);
+  CaseSurfaces surfaces;
+  auto body = select_labels(labels, kSoftTissue, kTeeth);
+  surfaces.skin = extract_surface(restrict_to_mask(volume, body, recipe.segmentation.skin_hu),
+                                  recipe.segmentation.skin_hu, recipe.skin);
+  auto bone = select_labels(labels, kBone, kTeeth);
+  surfaces.bone = extract_surface(restrict_to_mask(volume, bone, recipe.segmentation.bone_hu),
+                                  recipe.segmentation.bone_hu, recipe.bone);
+  return surfaces;
+}
+
+}  // namespace
+
+Json SurfaceRecipe::to_json() const {
+  return {{"segmentation",
+           {{"skin_hu", segmentation.skin_hu},
+            {"bone_hu", segmentation.bone_hu},
+            {"teeth_hu", segmentation.teeth_hu},
+            {"headrest_gap_mm", segmentation.headrest_gap_mm},
+            {"min_bone_island_mm3", segmentation.min_bone_island_mm3}}},
+          {"skin", surface_json(skin)},
+          {"bone", surface_json(bone)}};
+}
+
+CaseSurfaces case_surfaces(Archive& archive, int64_t case_id, int64_t series, const SurfaceRecipe& recipe) {
+  auto parameters = recipe.to_json();
+  auto key = derivation_key({series_content_hash(archive, series)}, parameters);
+  auto skin = archive.find_artefact(case_id, kSkinKind, key);
+  auto bone = archive.find_artefact(case_id, kBoneKind, key);
+  if (skin && bone) {
+    log::info("surfaces up to date, reusing them");
+    return CaseSurfaces{load_mesh_artefact(archive, *skin), load_mesh_artefact(archive, *bone), key, true};
+  }
+  auto volume = load_series_volume(archive.series_instance_files(series));
+  auto surfaces = extract_case_surfaces(volume, recipe);
+  surfaces.key = key;
+  store_mesh_artefact(archive, case_id, kSkinKind, key, parameters, surfaces.skin);
+  store_mesh_artefact(archive, case_id, kBoneKind, key, parameters, surfaces.bone);
+  return surfaces;
+}
+
+}  // namespace maxillo::pipeline

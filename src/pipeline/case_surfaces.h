@@ -1,0 +1,34 @@
+#pragma once
+// The skin and bone surfaces of a case's CT series: volume -> tissue segmentation (head rest
+// removed) -> iso-surfaces -> smoothing and decimation. Stored in the archive as artefacts
+// keyed by the series content and the recipe, so a second request reuses them.
+#include <cstdint>
+
+#include "archive/archive.h"
+#include "core/json.h"
+#include "core/triangle_mesh.h"
+#include "imaging/segmentation.h"
+#include "mesh/surface_extraction.h"
+
+namespace maxillo::pipeline {
+
+struct SurfaceRecipe {
+  SegmentationOptions segmentation;
+  SurfaceOptions skin{.keep_largest_components = 1, .target_triangles = 150000};
+  SurfaceOptions bone{.keep_largest_components = 8, .min_component_fraction = 0.02, .target_triangles = 200000};
+
+  Json to_json() const;  // every parameter, for the derivation key and the artefact record
+};
+
+struct CaseSurfaces {
+  TriangleMesh skin;
+  TriangleMesh bone;
+  std::string key;  // derivation key of both surfaces
+  bool reused = false;  // true when both came from the archive
+};
+
+// Surfaces of `series` (a CT series of the case). Throws what volume loading and
+// segmentation throw (Error naming the file or series).
+CaseSurfaces case_surfaces(Archive& archive, int64_t case_id, int64_t series, const SurfaceRecipe& recipe = {});
+
+}  // namespace maxillo::pipeline

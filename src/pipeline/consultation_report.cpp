@@ -1,0 +1,125 @@
+#include "pipeline/consultation_report.h"
+
+#include <chrono>
+#include <ctime>
+
+#include "core/atomic_file.h"
+#include "core/version.h"
+#include "pipeline/case_landmarks.h"
+#include "pipeline/derivation.h"
+#include "report/report_template.h"
+#include "report/write_report.h"
+
+namespace maxillo::pipeline {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+std::string utc_now_iso8601() {
+  std::time_t now = std::time(nullptr);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
+  return text;
+}
+
+const StudyRecord* study_of(const CaseContents& contents, int64_t study) {
+  for (const auto& s : contents.studies)
+    if (s.id == study) return &s;
+  return nullptr;
+}
+
+// "study description · series description", either part left out when empty.
+std::string describe_series(const StudyRecord* study, const SeriesRecord& series) {
+  std::string study_text = study ? study->description : "";
+  if (study_text.empty()) return series.description;
+  return series.description.empty() ? study_text : study_text + " · " + series.description;
+}
+
+report::ReportModel model_header(const CaseContents& contents) {
+  report::ReportModel model;
+  model.patient = {contents.patient.name, contents.patient.patient_id, contents.patient.birth_date, contents.patient.sex};
+  model.case_label = contents.record.label;
+  for (const auto& entry : contents.series) {
+    const auto& s = entry.series;
+    const StudyRecord* study = study_of(contents, s.study);
+    model.series.push_back({study ? study->date : "", s.modality, describe_series(study, s), int(s.instance_count),
+                            {s.pixel_spacing_column.value_or(0), s.pixel_spacing_row.value_or(0),
+                             s.slice_thickness.value_or(0)}});
+  }
+  model.generated_at = utc_now_iso8601();
+  model.program_version = kVersion;
+  return model;
+}
+
+report::Section summary_section(const CaseContents& contents, int64_t series, const CaseSurfaces& surfaces,
+                                const LandmarkSet& landmarks) {
+  std::string description;
+  for (const auto& entry : contents.series)
+    if (entry.series.id == series) description = entry.series.description + " (" + entry.role + ")";
+  report::KeyValueBlock facts{{
+      {"Series analysed", description},
+      {"Skin surface", std::to_string(surfaces.skin.face_count()) + " triangles"},
+      {"Bone surface", std::to_string(surfaces.bone.face_count()) + " triangles"},
+      {"Landmarks", landmarks.empty() ? "none attached" : std::to_string(landmarks.size()) + " points"},
+  }};
+  return {"summary", {facts}};
+}
+
+report::Section views_section(const std::vector<CaseView>& views) {
+  report::ImageGrid grid;
+  grid.per_row = 3;
+  for (const auto& v : views) grid.figures.push_back({v.png, v.caption});
+  return {"views", {grid}};
+}
+
+// What the archive holds for the case: series with roles, then every derived item and how it
+// was made (program version, derivation key).
+report::Section contents_section(const Archive& archive, const CaseContents& contents) {
+  report::Table series;
+  series.columns = {{"series", 0.4}, {"role", 0.15}, {"modality", 0.15}, {"instances", 0.15, report::Align::Right},
+                    {"archive id", 0.15, report::Align::Right}};
+  for (const auto& entry : contents.series)
+    series.rows.push_back({entry.series.description, entry.role, entry.series.modality,
+                           std::to_string(entry.series.instance_count), std::to_string(entry.series.id)});
+  report::Table derived;
+  derived.columns = {{"derived item", 0.25}, {"made (UTC)", 0.3}, {"program", 0.15}, {"derivation key", 0.3}};
+  for (const auto& a : archive.artefacts(contents.record.id))
+    derived.rows.push_back({a.kind, a.created_at, a.program_version, a.inputs_hash.substr(0, 16)});
+  return {"contents", {series, derived}};
+}
+
+}  // namespace
+
+ConsultationResult write_consultation_report(Archive& archive, int64_t case_id, const std::filesystem::path& out_pdf,
+                                             const ConsultationOptions& options) {
+  auto report_template = report::load_report_template(options.template_resource);
+  auto contents = archive.case_contents(case_id);
+  auto series = primary_series(contents);
+  ConsultationResult result;
+
+  auto start = Clock::now();
+  auto surfaces = case_surfaces(archive, case_id, series, options.surfaces);
+  result.surfaces_reused = surfaces.reused;
+  result.seconds_surfaces = seconds_since(start);
+
+  start = Clock::now();
+  auto landmarks = latest_landmarks(archive, case_id);
+  auto views = case_views(archive, case_id, surfaces, landmarks, options.views);
+  result.seconds_views = seconds_since(start);
+
+  start = Clock::now();
+  auto model = model_header(contents);
+  model.sections.push_back(summary_section(contents, series, surfaces, landmarks));
+  model.sections.push_back(views_section(views));
+  model.sections.push_back(contents_section(archive, contents));
+  result.pages = report::write_report(model, report_template, out_pdf);
+  result.pdf = out_pdf;
+  result.report_sha256 = archive.store_object(read_file(out_pdf));
+  archive.add_artefact(NewArtefact{case_id, "report", result.report_sha256, "application/pdf",
+                                   derivation_key({surfaces.key}, {{"template", options.template_resource}}), "{}"});
+  result.seconds_layout = seconds_since(start);
+  return result;
+}
+
+}  // namespace maxillo::pipeline

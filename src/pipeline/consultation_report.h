@@ -1,0 +1,35 @@
+#pragma once
+// The consultation report of one case: patient and imaging, the 3D views of skin and bone, and
+// the case's contents, laid out from templates/consultation.json and stored back in the
+// archive as a "report" artefact.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+#include "archive/archive.h"
+#include "pipeline/case_surfaces.h"
+#include "pipeline/case_views.h"
+
+namespace maxillo::pipeline {
+
+struct ConsultationOptions {
+  std::string template_resource = "templates/consultation.json";
+  SurfaceRecipe surfaces;
+  ViewRecipe views;
+};
+
+struct ConsultationResult {
+  std::filesystem::path pdf;
+  std::string report_sha256;  // the stored copy in the archive
+  int pages = 0;
+  bool surfaces_reused = false;
+  double seconds_surfaces = 0;
+  double seconds_views = 0;
+  double seconds_layout = 0;
+};
+
+// Writes the report to out_pdf (atomically). Throws Error naming what could not be done.
+ConsultationResult write_consultation_report(Archive& archive, int64_t case_id, const std::filesystem::path& out_pdf,
+                                             const ConsultationOptions& options = {});
+
+}  // namespace maxillo::pipeline

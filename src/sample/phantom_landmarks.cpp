@@ -1,0 +1,77 @@
+#include "sample/phantom_landmarks.h"
+
+#include <cassert>
+
+#include "sample/phantom_dentition.h"
+#include "sample/phantom_mandible.h"
+#include "sample/phantom_skin.h"
+
+namespace maxillo::sample {
+namespace {
+
+constexpr double kOrbitaleX = 33;   // centre of the orbital opening
+constexpr double kPorionA = -20;    // ear canal axis (phantom_cavities.cpp)
+
+// First point of `tissue` on the ray from `outside` along `direction` (unit), to 1e-4 mm.
+Vector3d first_hit(const PartList& parts, Tissue tissue, const Vector3d& outside, const Vector3d& direction) {
+  auto hit = [&](double t) { return sample_parts(parts, outside + t * direction).tissue == tissue; };
+  double step = 0.25, t = 0;
+  while (!hit(t + step)) {
+    t += step;
+    assert(t < 200 && "phantom landmark ray missed its structure");
+    if (t > 200) return outside;
+  }
+  double lo = t, hi = t + step;
+  while (hi - lo > 1e-4) {
+    double mid = (lo + hi) / 2;
+    (hit(mid) ? hi : lo) = mid;
+  }
+  return outside + hi * direction;
+}
+
+Vector3d mirrored(const Vector3d& p) { return {-p.x(), p.y(), p.z()}; }
+
+}  // namespace
+
+LandmarkSet phantom_landmarks(const PhantomDesign& d, const PartList& parts) {
+  const Dentition teeth(d);
+  const SkinProfile skin(d);
+  LandmarkSet set;
+  auto add = [&set](const char* label, const Vector3d& p) { set.push_back({label, p}); };
+  auto skin_point = [&skin](double z) { return lps(0, skin.midline(z), z); };
+
+  add("S", d.S);
+  add("N", d.N);
+  Vector3d or_left = first_hit(parts, Tissue::kBone, lps(kOrbitaleX, 100, 0), Vector3d(0, 1, 0));
+  add("OrR", mirrored(or_left));
+  add("OrL", or_left);
+  Vector3d po_left = first_hit(parts, Tissue::kBone, lps(90, kPorionA, 0), Vector3d(-1, 0, 0));
+  add("PoR", mirrored(po_left));
+  add("PoL", po_left);
+  add("A", d.from_maxilla_reference(d.A));
+  add("B", d.from_mandible_reference(d.B));
+  add("ANS", d.from_maxilla_reference(d.ANS));
+  add("PNS", d.from_maxilla_reference(d.PNS));
+  add("Pog", d.from_mandible_reference(d.Pog));
+  add("Me", d.from_mandible_reference(d.Me));
+  add("Gn", d.from_mandible_reference(d.Gn));
+  add("GoR", d.from_mandible_reference(gonion(d, Side::kRight)));
+  add("GoL", d.from_mandible_reference(gonion(d, Side::kLeft)));
+  add("ArR", d.from_mandible_reference(articulare(d, Side::kRight)));
+  add("ArL", d.from_mandible_reference(articulare(d, Side::kLeft)));
+  add("U1", teeth.incisal_edge_centre(Jaw::kUpper, Side::kRight));
+  add("L1", teeth.incisal_edge_centre(Jaw::kLower, Side::kRight));
+  add("U6R", teeth.mesiobuccal_cusp_tip(Jaw::kUpper, Side::kRight));
+  add("U6L", teeth.mesiobuccal_cusp_tip(Jaw::kUpper, Side::kLeft));
+  add("L6R", teeth.mesiobuccal_cusp_tip(Jaw::kLower, Side::kRight));
+  add("L6L", teeth.mesiobuccal_cusp_tip(Jaw::kLower, Side::kLeft));
+  add("Prn", skin_point(kPronasaleHeight));
+  add("Sn", skin_point(kSubnasaleHeight));
+  add("Ls", skin_point(kLabraleSuperiusHeight));
+  add("Li", skin_point(kLabraleInferiusHeight));
+  add("PogS", skin_point(d.from_mandible_reference(d.Pog).z()));
+  add("NS", skin_point(d.N.z()));
+  return set;
+}
+
+}  // namespace maxillo::sample

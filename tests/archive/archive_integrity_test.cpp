@@ -1,0 +1,126 @@
+// Verify, repair, export, resolve and artefacts.
+#include <gtest/gtest.h>
+
+#include "archive/archive.h"
+#include "archive_fixture.h"
+#include "core/sha256.h"
+
+namespace maxillo {
+namespace {
+
+using testing::TemporaryFolder;
+
+Archive archive_with_series(const TemporaryFolder& folder, WrittenSeries* written = nullptr) {
+  auto series = testing::write_series(folder / "in", 4);
+  if (written) *written = series;
+  Archive archive = Archive::open(folder / "archive");
+  ImportOptions options;
+  options.progress = ProgressDisplay::Never;
+  archive.import_paths({folder / "in"}, options);
+  return archive;
+}
+
+TEST(ArchiveVerify, FreshArchiveIsConsistent) {
+  TemporaryFolder folder;
+  Archive archive = archive_with_series(folder);
+  VerifyReport report = archive.verify(RepairMode::ReportOnly, ProgressDisplay::Never);
+  EXPECT_TRUE(report.consistent());
+  EXPECT_EQ(report.objects_checked, 4u);
+}
+
+TEST(ArchiveVerify, DetectsACorruptedObjectAndRepairDoesNotHideIt) {
+  TemporaryFolder folder;
+  Archive archive = archive_with_series(folder);
+  auto victim = archive.series_instance_files(1)[2];
+  std::filesystem::permissions(victim, std::filesystem::perms::owner_write, std::filesystem::perm_options::add);
+  {
+    std::fstream file(victim, std::ios::in | std::ios::out | std::ios::binary);
+    file.seekp(1000);
+    file.put('X');
+  }
+  VerifyReport report = archive.verify(RepairMode::Repair, ProgressDisplay::Never);
+  ASSERT_EQ(report.corrupt.size(), 1u);
+  EXPECT_EQ(archive.object_path(report.corrupt[0]), victim);
+  EXPECT_FALSE(report.data_intact());
+  EXPECT_TRUE(std::filesystem::exists(victim));  // evidence is never deleted
+}
+
+TEST(ArchiveVerify, MissingObjectIsDataLossAndItsRowsStay) {
+  TemporaryFolder folder;
+  Archive archive = archive_with_series(folder);
+  auto victim = archive.series_instance_files(1)[0];
+  std::filesystem::remove(victim);
+  VerifyReport report = archive.verify(RepairMode::Repair, ProgressDisplay::Never);
+  EXPECT_EQ(report.missing.size(), 1u);
+  EXPECT_EQ(archive.series().front().instance_count, 4);
+}
+
+TEST(ArchiveVerify, RepairRemovesOrphansAndTemporariesOnly) {
+  TemporaryFolder folder;
+  Archive archive = archive_with_series(folder);
+  std::string orphan_sha = sha256_hex(std::string_view("orphan"));
+  auto orphan = archive.object_path(orphan_sha);
+  std::filesystem::create_directories(orphan.parent_path());
+  std::ofstream(orphan) << "orphan";
+  auto temporary = archive.series_instance_files(1)[0].parent_path() / ".abc.tmp-1-2-3";
+  std::ofstream(temporary) << "half";
+  VerifyReport before = archive.verify(RepairMode::ReportOnly, ProgressDisplay::Never);
+  EXPECT_EQ(before.orphans.size(), 1u);
+  EXPECT_EQ(before.temporaries.size(), 1u);
+  EXPECT_TRUE(before.data_intact());
+  VerifyReport repaired = archive.verify(RepairMode::Repair, ProgressDisplay::Never);
+  EXPECT_EQ(repaired.removed, 2u);
+  EXPECT_FALSE(std::filesystem::exists(orphan));
+  EXPECT_TRUE(archive.verify(RepairMode::ReportOnly, ProgressDisplay::Never).consistent());
+}
+
+TEST(ArchiveExport, SeriesComesBackByteIdentical) {
+  TemporaryFolder folder;
+  WrittenSeries written;
+  Archive archive = archive_with_series(folder, &written);
+  auto files = archive.export_series(archive.resolve_series(written.series_instance_uid), folder / "out");
+  ASSERT_EQ(files.size(), written.files.size());
+  for (size_t k = 0; k < files.size(); ++k) EXPECT_EQ(testing::read_text(files[k]), testing::read_text(written.files[k]));
+  EXPECT_THROW(archive.export_series(999, folder / "out2"), Error);
+}
+
+TEST(ArchiveResolve, NumericIdsPatientIdsAndUids) {
+  TemporaryFolder folder;
+  WrittenSeries written;
+  Archive archive = archive_with_series(folder, &written);
+  EXPECT_EQ(archive.resolve("P1").kind, ItemKind::Patient);
+  EXPECT_EQ(archive.resolve(written.study_instance_uid).kind, ItemKind::Study);
+  EXPECT_EQ(archive.resolve(written.series_instance_uid).kind, ItemKind::Series);
+  EXPECT_EQ(archive.resolve("1").kind, ItemKind::Series);
+  EXPECT_EQ(archive.resolve(archive.instances(1)[3].sop_instance_uid).kind, ItemKind::Instance);
+  EXPECT_EQ(archive.instances(1)[3].instance_number, 4);
+  try {
+    archive.resolve("no-such-thing");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ErrorCode::kNotFound);
+  }
+}
+
+TEST(ArchiveArtefacts, LatestMatchingArtefactIsFound) {
+  TemporaryFolder folder;
+  Archive archive = archive_with_series(folder);
+  int64_t case_id = archive.resolve_case("P1");
+  std::string first = archive.store_object(std::string_view("%PDF-1.4 first"));
+  std::string second = archive.store_object(std::string_view("%PDF-1.4 second"));
+  EXPECT_EQ(archive.store_object(std::string_view("%PDF-1.4 first")), first);  // idempotent
+  archive.add_artefact({case_id, "report", first, "application/pdf", "inputs-a", R"({"dpi":150})"});
+  archive.add_artefact({case_id, "report", second, "application/pdf", "inputs-a", "{}"});
+  auto found = archive.find_artefact(case_id, "report", "inputs-a");
+  ASSERT_TRUE(found);
+  EXPECT_EQ(found->object_sha256, second);
+  EXPECT_FALSE(found->program_version.empty());
+  EXPECT_FALSE(archive.find_artefact(case_id, "report", "inputs-b"));
+  EXPECT_FALSE(archive.find_artefact(case_id, "render", "inputs-a"));
+  EXPECT_EQ(archive.artefacts(case_id).size(), 2u);
+  EXPECT_TRUE(archive.verify(RepairMode::ReportOnly, ProgressDisplay::Never).consistent());
+  EXPECT_THROW(archive.add_artefact({case_id, "report", first, "application/pdf", "x", "not json"}), Error);
+}
+
+}  // namespace
+}  // namespace maxillo

@@ -1,0 +1,68 @@
+// Schema migrations: an empty folder is upgraded to the newest version, re-opening changes
+// nothing, and a schema newer than the program is refused.
+#include <gtest/gtest.h>
+#include <sqlite3.h>
+
+#include "archive/archive.h"
+#include "core/resources.h"
+#include "support/temporary_folder.h"
+
+namespace maxillo {
+namespace {
+
+int user_version(const std::filesystem::path& file) {
+  sqlite3* db = nullptr;
+  sqlite3_open(file.c_str(), &db);
+  sqlite3_stmt* statement = nullptr;
+  sqlite3_prepare_v2(db, "PRAGMA user_version", -1, &statement, nullptr);
+  sqlite3_step(statement);
+  int version = sqlite3_column_int(statement, 0);
+  sqlite3_finalize(statement);
+  sqlite3_close(db);
+  return version;
+}
+
+void set_user_version(const std::filesystem::path& file, int version) {
+  sqlite3* db = nullptr;
+  sqlite3_open(file.c_str(), &db);
+  sqlite3_exec(db, ("PRAGMA user_version = " + std::to_string(version)).c_str(), nullptr, nullptr, nullptr);
+  sqlite3_close(db);
+}
+
+TEST(ArchiveSchema, MigrationsAreEmbeddedAndNumberedFromOne) {
+  auto migrations = list_resources("db/");
+  ASSERT_FALSE(migrations.empty());
+  EXPECT_EQ(migrations.front(), "db/001_initial.sql");
+  EXPECT_EQ(Archive::newest_schema_version(), int(migrations.size()));
+}
+
+TEST(ArchiveSchema, EmptyFolderIsUpgradedToTheNewestVersionAndReopeningIsIdempotent) {
+  testing::TemporaryFolder folder;
+  auto archive_folder = folder / "archive";
+  {
+    Archive archive = Archive::open(archive_folder);
+    EXPECT_EQ(archive.schema_version(), Archive::newest_schema_version());
+    EXPECT_TRUE(archive.patients().empty());
+    EXPECT_TRUE(archive.cases().empty());
+  }
+  EXPECT_EQ(user_version(archive_folder / "index.sqlite"), Archive::newest_schema_version());
+  for (int n = 0; n < 2; ++n) {
+    Archive archive = Archive::open(archive_folder);
+    EXPECT_EQ(archive.schema_version(), Archive::newest_schema_version());
+  }
+}
+
+TEST(ArchiveSchema, NewerSchemaIsRefused) {
+  testing::TemporaryFolder folder;
+  { Archive::open(folder.path()); }
+  set_user_version(folder / "index.sqlite", Archive::newest_schema_version() + 1);
+  try {
+    Archive::open(folder.path());
+    FAIL() << "a newer schema must be refused";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ErrorCode::kSchemaTooNew);
+  }
+}
+
+}  // namespace
+}  // namespace maxillo

@@ -1,0 +1,150 @@
+// Black-box tests of the archive commands: import / list / show / verify / export, their exit
+// codes, stderr lines and --json keys; crash safety under kill -9; concurrent importers.
+#include <gtest/gtest.h>
+#include <signal.h>
+
+#include <algorithm>
+#include <chrono>
+#include <thread>
+
+#include "archive_fixture.h"
+#include "core/error.h"
+#include "core/json.h"
+#include "support/run_maxillo.h"
+
+namespace maxillo {
+namespace {
+
+using testing::TemporaryFolder;
+
+size_t count_lines(const std::string& text) { return size_t(std::count(text.begin(), text.end(), '\n')); }
+
+int64_t archived_instances(const std::filesystem::path& archive, const std::filesystem::path& scratch) {
+  auto result = testing::run_maxillo({"--archive", archive.string(), "--json", "list", "series"}, scratch);
+  EXPECT_EQ(result.exit_code, 0) << result.err;
+  int64_t total = 0;
+  for (const auto& series : Json::parse(result.out)) total += series.at("instances").get<int64_t>();
+  return total;
+}
+
+TEST(ArchiveCli, ImportReportsEachBadFileOnOneLineAndImportsTheRest) {
+  TemporaryFolder folder;
+  testing::write_series(folder / "in" / "good", 3);
+  std::ofstream(folder / "in" / "readme.txt") << std::string(300, 'x');
+  std::filesystem::create_symlink(folder / "nowhere", folder / "in" / "dangling.dcm");
+  auto archive = (folder / "archive").string();
+
+  auto result = testing::run_maxillo({"--archive", archive, "import", (folder / "in").string()}, folder.path());
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_EQ(count_lines(result.err), 2u) << result.err;
+  EXPECT_NE(result.err.find((folder / "in" / "readme.txt").string() + ": "), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find((folder / "in" / "dangling.dcm").string() + ": unreadable"), std::string::npos);
+  EXPECT_NE(result.out.find("3 imported"), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("2 failed"), std::string::npos) << result.out;
+
+  auto again = testing::run_maxillo({"--archive", archive, "import", (folder / "in" / "good").string()}, folder.path());
+  EXPECT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_NE(again.out.find("3 already archived, nothing changed"), std::string::npos) << again.out;
+
+  auto json = testing::run_maxillo({"--archive", archive, "--json", "import", (folder / "in").string()}, folder.path());
+  EXPECT_EQ(json.exit_code, 1);
+  Json report = Json::parse(json.out);
+  EXPECT_EQ(report.at("already_archived"), 3);
+  EXPECT_EQ(report.at("failed"), 2);
+  EXPECT_EQ(report.at("imported"), 0);
+  ASSERT_EQ(report.at("problems").size(), 2u);
+  EXPECT_EQ(report.at("problems")[0].at("outcome"), "failed");
+  EXPECT_TRUE(report.at("problems")[0].contains("reason"));
+}
+
+TEST(ArchiveCli, ListShowVerifyAndExportByteIdentical) {
+  TemporaryFolder folder;
+  auto written = testing::write_series(folder / "in", 4);
+  auto archive = (folder / "archive").string();
+  ASSERT_EQ(testing::run_maxillo({"--archive", archive, "import", (folder / "in").string()}, folder.path()).exit_code, 0);
+
+  auto patients = testing::run_maxillo({"--archive", archive, "--json", "list", "patients"}, folder.path());
+  ASSERT_EQ(patients.exit_code, 0) << patients.err;
+  EXPECT_EQ(Json::parse(patients.out).at(0).at("patient_id"), "P1");
+  auto cases = testing::run_maxillo({"--archive", archive, "--json", "list", "cases"}, folder.path());
+  EXPECT_EQ(Json::parse(cases.out).at(0).at("label"), "default");
+  EXPECT_EQ(testing::run_maxillo({"--archive", archive, "list", "nonsense"}, folder.path()).exit_code, 2);
+
+  auto show = testing::run_maxillo({"--archive", archive, "--json", "show", written.series_instance_uid}, folder.path());
+  ASSERT_EQ(show.exit_code, 0) << show.err;
+  Json shown = Json::parse(show.out);
+  EXPECT_EQ(shown.at("kind"), "series");
+  EXPECT_EQ(shown.at("item").at("instances"), 4);
+  auto missing = testing::run_maxillo({"--archive", archive, "show", "no-such-id"}, folder.path());
+  EXPECT_EQ(missing.exit_code, exit_code_for(ErrorCode::kNotFound));
+  EXPECT_NE(missing.err.find("no-such-id"), std::string::npos);
+
+  auto verify = testing::run_maxillo({"--archive", archive, "--json", "verify"}, folder.path());
+  EXPECT_EQ(verify.exit_code, 0) << verify.out;
+  EXPECT_EQ(Json::parse(verify.out).at("objects_checked"), 4);
+
+  auto out = folder / "exported";
+  auto exported = testing::run_maxillo({"--archive", archive, "export", written.series_instance_uid, "--out", out.string()},
+                                       folder.path());
+  ASSERT_EQ(exported.exit_code, 0) << exported.err;
+  std::vector<std::filesystem::path> files(std::filesystem::directory_iterator(out), {});
+  std::sort(files.begin(), files.end());
+  ASSERT_EQ(files.size(), 4u);
+  for (size_t k = 0; k < 4; ++k) EXPECT_EQ(testing::slurp(files[k]), testing::slurp(written.files[k]));
+}
+
+TEST(ArchiveCli, KilledImportLeavesAConsistentArchiveAndReimportCompletesIt) {
+  TemporaryFolder folder;
+  constexpr int kSeries = 4, kSlices = 150;
+  for (int s = 0; s < kSeries; ++s)
+    write_ct_series(testing::small_volume(kSlices, 256), testing::patient_metadata("P" + std::to_string(s)),
+                    folder / "in" / std::to_string(s));
+  const int64_t total = kSeries * kSlices;
+  bool interrupted_mid_import = false;
+  for (int delay_ms : {60, 150, 250}) {
+    auto archive = (folder / ("archive" + std::to_string(delay_ms))).string();
+    pid_t child = testing::start_maxillo({"--archive", archive, "import", "--batch", "40", (folder / "in").string()},
+                                         folder / "child.out", folder / "child.err");
+    std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms));
+    ::kill(child, SIGKILL);
+    testing::wait_exit_code(child);
+
+    auto verify = testing::run_maxillo({"--archive", archive, "--json", "verify"}, folder.path());
+    Json report = Json::parse(verify.out);
+    EXPECT_TRUE(report.at("data_intact").get<bool>()) << verify.out;  // at most orphans / temporaries
+    auto repair = testing::run_maxillo({"--archive", archive, "verify", "--repair"}, folder.path());
+    EXPECT_EQ(repair.exit_code, 0) << repair.out << repair.err;
+    EXPECT_EQ(testing::run_maxillo({"--archive", archive, "verify"}, folder.path()).exit_code, 0);
+    int64_t before = archived_instances(archive, folder.path());
+    if (before < total) interrupted_mid_import = true;
+
+    auto again = testing::run_maxillo({"--archive", archive, "import", (folder / "in").string()}, folder.path());
+    EXPECT_EQ(again.exit_code, 0) << again.err;
+    EXPECT_EQ(archived_instances(archive, folder.path()), total);
+    EXPECT_EQ(testing::run_maxillo({"--archive", archive, "verify"}, folder.path()).exit_code, 0);
+  }
+  EXPECT_TRUE(interrupted_mid_import) << "no kill landed during the import; the machine was too fast for the delays";
+}
+
+TEST(ArchiveCli, TwoConcurrentImportersOfOverlappingSets) {
+  TemporaryFolder folder;
+  for (const char* name : {"a", "b", "c"}) testing::write_series(folder / "in" / name, 120, std::string("P") + name);
+  auto archive = (folder / "archive").string();
+  pid_t one = testing::start_maxillo({"--archive", archive, "import", "--batch", "25", (folder / "in" / "a").string(),
+                                      (folder / "in" / "b").string()},
+                                     folder / "one.out", folder / "one.err");
+  pid_t two = testing::start_maxillo({"--archive", archive, "import", "--batch", "30", (folder / "in" / "b").string(),
+                                      (folder / "in" / "c").string()},
+                                     folder / "two.out", folder / "two.err");
+  EXPECT_EQ(testing::wait_exit_code(one), 0) << testing::slurp(folder / "one.err");
+  EXPECT_EQ(testing::wait_exit_code(two), 0) << testing::slurp(folder / "two.err");
+  EXPECT_EQ(testing::slurp(folder / "one.err"), "");
+  EXPECT_EQ(testing::slurp(folder / "two.err"), "");
+  EXPECT_EQ(archived_instances(archive, folder.path()), 360);
+  auto patients = testing::run_maxillo({"--archive", archive, "--json", "list", "patients"}, folder.path());
+  EXPECT_EQ(Json::parse(patients.out).size(), 3u);
+  EXPECT_EQ(testing::run_maxillo({"--archive", archive, "verify"}, folder.path()).exit_code, 0);
+}
+
+}  // namespace
+}  // namespace maxillo
