@@ -47,6 +47,7 @@ struct ImportReport {
   size_t conflicts = 0;
   size_t failed = 0;
   size_t identity_flags = 0;  // new identity flags raised by this import
+  size_t restored = 0;        // already archived files whose lost object file was written again
   std::vector<ImportProblem> problems;  // in the order met
   size_t files() const { return imported + already_archived + conflicts + failed; }
   bool all_ok() const { return conflicts == 0 && failed == 0; }
@@ -100,8 +101,9 @@ class Archive {
   std::optional<StudyRecord> study(int64_t id) const;
   std::optional<SeriesRecord> series_by_id(int64_t id) const;
 
-  // What a user-given ID names: a numeric archive id (tried as series, study, patient, case in
-  // that order), a Patient ID, or a Study/Series/SOP Instance UID. Throws Error(NotFound).
+  // What a user-given ID names: a typed archive id ("patient:3", "study:3", "series:3",
+  // "instance:3", "case:3"), a bare archive id (tried as series, study, patient, case in that
+  // order), a Patient ID, or a Study/Series/SOP Instance UID. Throws Error(NotFound).
   ResolvedItem resolve(std::string_view text) const;
   // A series by archive id or Series Instance UID. Throws Error(NotFound).
   int64_t resolve_series(std::string_view text) const;

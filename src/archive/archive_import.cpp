@@ -65,6 +65,16 @@ void report_problem(ImportReport& report, const ImportOptions& options, ImportPr
   report.problems.push_back(std::move(problem));
 }
 
+// An indexed object whose file has gone (verify reports it as missing) is written again from
+// the identical bytes being re-imported: re-importing the originals heals the archive.
+bool restore_lost_object(ObjectStore& objects, const ScannedFile& file) {
+  if (std::filesystem::exists(objects.path_of(file.sha256))) return false;
+  objects.put(file.sha256, file.bytes);
+  objects.make_durable();
+  log::warning(file.path.string(), ": restored the lost archived object ", file.sha256.substr(0, 12), "...");
+  return true;
+}
+
 }  // namespace
 
 ImportReport Archive::import_paths(const std::vector<std::filesystem::path>& paths, const ImportOptions& options) {
@@ -100,6 +110,7 @@ ImportReport Archive::import_paths(const std::vector<std::filesystem::path>& pat
     while (auto item = queue.pop()) {
       switch (item->stage) {
         case ScannedFile::Stage::Known:
+          if (restore_lost_object(state_->objects, *item)) ++report.restored;
           ++report.already_archived;
           progress.advance();
           break;

@@ -60,6 +60,17 @@ Json to_json(const CaseRecord& r) {
   return {{"id", r.id}, {"patient", r.patient}, {"label", r.label}, {"created_at", r.created_at}};
 }
 
+Json to_json(const ArtefactRecord& r) {
+  return {{"id", r.id},
+          {"kind", r.kind},
+          {"sha256", r.object_sha256},
+          {"media_type", r.media_type},
+          {"inputs_hash", r.inputs_hash},
+          {"parameters", Json::parse(r.parameters_json, nullptr, false)},
+          {"program_version", r.program_version},
+          {"created_at", r.created_at}};
+}
+
 Json to_json(const IdentityFlag& r) {
   return {{"id", r.id},
           {"patient", r.patient},
@@ -95,7 +106,7 @@ Json to_json(const ImportReport& r) {
   Json problems = Json::array();
   for (const auto& p : r.problems) problems.push_back(to_json(p));
   return {{"files", r.files()},         {"imported", r.imported}, {"already_archived", r.already_archived},
-          {"conflicts", r.conflicts},   {"failed", r.failed},     {"identity_flags", r.identity_flags},
+          {"conflicts", r.conflicts},   {"failed", r.failed},     {"identity_flags", r.identity_flags}, {"restored", r.restored},
           {"problems", problems}};
 }
 

@@ -11,6 +11,7 @@ Json to_json(const SeriesRecord& record);
 Json to_json(const InstanceRecord& record);
 Json to_json(const CaseRecord& record);
 Json to_json(const IdentityFlag& record);
+Json to_json(const ArtefactRecord& record);
 Json to_json(const CaseContents& contents);
 Json to_json(const ImportProblem& problem);
 Json to_json(const ImportReport& report);

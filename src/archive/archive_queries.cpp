@@ -120,8 +120,35 @@ std::vector<std::filesystem::path> Archive::series_instance_files(int64_t series
   return files;
 }
 
+namespace {
+
+// "case:3", "series:12"...: an archive id with its kind spelt out, for when bare numbers of
+// different kinds collide.
+std::optional<ResolvedItem> typed_id(std::string_view text) {
+  constexpr std::pair<std::string_view, ItemKind> kPrefixes[] = {
+      {"patient:", ItemKind::Patient}, {"study:", ItemKind::Study},      {"series:", ItemKind::Series},
+      {"instance:", ItemKind::Instance}, {"case:", ItemKind::Case}};
+  for (const auto& [prefix, kind] : kPrefixes)
+    if (text.starts_with(prefix))
+      if (auto number = as_number(text.substr(prefix.size()))) return ResolvedItem{kind, *number};
+  return std::nullopt;
+}
+
+}  // namespace
+
 ResolvedItem Archive::resolve(std::string_view text) const {
   auto& db = state_->db;
+  if (auto typed = typed_id(text)) {
+    constexpr ItemKind kinds[] = {ItemKind::Series, ItemKind::Study, ItemKind::Patient, ItemKind::Case};
+    for (size_t n = 0; n < std::size(kinds); ++n)
+      if (kinds[n] == typed->kind && row_exists(db, sql::kExists[n], typed->id)) return *typed;
+    if (typed->kind == ItemKind::Instance) {
+      for (const auto& s : series())
+        for (const auto& i : instances(s.id))
+          if (i.id == typed->id) return *typed;
+    }
+    throw Error(ErrorCode::kNotFound, std::string(text), "no such " + to_string(typed->kind));
+  }
   if (auto number = as_number(text)) {
     constexpr ItemKind kinds[] = {ItemKind::Series, ItemKind::Study, ItemKind::Patient, ItemKind::Case};
     for (size_t n = 0; n < std::size(kinds); ++n)

@@ -96,7 +96,6 @@ ScannedFile FileScanner::scan(const std::filesystem::path& path) {
   queries_->known_object.reset();  // ends the read snapshot
   if (known) {
     item.stage = ScannedFile::Stage::Known;
-    item.bytes = {};
     return item;
   }
   try {
@@ -110,7 +109,6 @@ ScannedFile FileScanner::scan(const std::filesystem::path& path) {
   queries_->object_of_sop.reset();
   if (archived_object == item.sha256) {  // archived by another process since the first lookup
     item.stage = ScannedFile::Stage::Known;
-    item.bytes = {};
     return item;
   }
   if (!archived_object.empty()) {

@@ -14,14 +14,14 @@ namespace maxillo {
 
 struct ScannedFile {
   enum class Stage {
-    Known,     // these bytes are archived already: nothing to do
+    Known,     // these bytes are archived already: nothing to do unless the object file was lost
     Conflict,  // its SOP Instance UID is archived with other bytes
     Parsed,    // new: header parsed, bytes to store
     Failed,    // bad input: code and reason say why
   };
   std::filesystem::path path;
   Stage stage = Stage::Failed;
-  std::vector<std::byte> bytes;  // kept only for Parsed files
+  std::vector<std::byte> bytes;  // kept for Parsed and Known files (a lost object is restored)
   std::string sha256;
   size_t size = 0;  // bytes in the file
   InstanceHeader header;

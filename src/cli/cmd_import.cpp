@@ -15,11 +15,12 @@ struct ImportArguments {
 };
 
 std::string summary_line(const ImportReport& r) {
-  if (r.files() > 0 && r.already_archived == r.files())
+  if (r.files() > 0 && r.already_archived == r.files() && r.restored == 0)
     return std::to_string(r.already_archived) + " already archived, nothing changed";
   std::string line = std::to_string(r.imported) + " imported, " + std::to_string(r.already_archived) +
                      " already archived, " + std::to_string(r.conflicts) + " conflicts, " +
                      std::to_string(r.failed) + " failed (" + std::to_string(r.files()) + " files)";
+  if (r.restored > 0) line += "; " + std::to_string(r.restored) + " lost object files restored";
   if (r.identity_flags > 0)
     line += "; " + std::to_string(r.identity_flags) +
             " identity flags raised (a Patient ID arrived with another name, birth date or sex: see `maxillo list flags`)";

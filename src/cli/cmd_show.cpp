@@ -38,7 +38,12 @@ Json describe_item(const Archive& archive, const ResolvedItem& item) {
         for (const auto& i : archive.instances(series.id))
           if (i.id == item.id) return to_json(i);
       return Json::object();
-    case ItemKind::Case: return to_json(archive.case_contents(item.id));
+    case ItemKind::Case: {
+      Json json = to_json(archive.case_contents(item.id));
+      json["artefacts"] = Json::array();
+      for (const auto& a : archive.artefacts(item.id)) json["artefacts"].push_back(to_json(a));
+      return json;
+    }
   }
   return Json::object();
 }
@@ -70,7 +75,7 @@ void print_text(const Json& json, int indent = 0) {
 
 void attach_show(CLI::App& app, CommandContext& ctx) {
   auto id = std::make_shared<std::string>();
-  app.add_option("ID", *id, "archive id, Patient ID, or Study/Series/SOP Instance UID")->required();
+  app.add_option("ID", *id, "archive id (typed: patient:N, study:N, series:N, instance:N, case:N), Patient ID, or Study/Series/SOP Instance UID")->required();
   app.callback([id, &ctx] {
     Archive archive = Archive::open(resolve_archive_dir(ctx.global));
     ResolvedItem item = archive.resolve(*id);

@@ -23,55 +23,69 @@ std::string landmarks_hash(const LandmarkSet& landmarks) {
   return hash.hex_digest();
 }
 
-std::string caption_for(render::StandardView view, const render::AnatomicalFrame& frame) {
-  std::string name(render::name_of(view));
-  if (view == render::StandardView::Lateral) name += " (right)";
-  return name + (frame.source == render::FrameSource::Frankfort ? ", Frankfort horizontal frame"
-                                                                : ", patient axes (no landmarks)");
+constexpr std::array kTissues = {ViewedTissue::Skin, ViewedTissue::Bone};
+
+std::string caption_for(ViewedTissue tissue, render::StandardView view, const render::AnatomicalFrame& frame) {
+  std::string caption = std::string(name_of(tissue)) + ", " + std::string(render::name_of(view));
+  if (view == render::StandardView::Lateral) caption += " (right)";
+  return caption + (frame.source == render::FrameSource::Frankfort ? "; Frankfort frame" : "; patient axes");
 }
 
-std::string artefact_kind(render::StandardView view) { return "render-" + std::string(render::name_of(view)); }
+std::string artefact_kind(ViewedTissue tissue, render::StandardView view) {
+  return "render-" + std::string(name_of(tissue)) + "-" + std::string(render::name_of(view));
+}
 
-// Renders all three views and stores each PNG as an artefact under `key`.
+render::Scene scene_of(ViewedTissue tissue, const CaseSurfaces& surfaces) {
+  render::Scene scene;
+  if (tissue == ViewedTissue::Skin) scene.meshes.push_back({&surfaces.skin, render::kSkinTone, 1.0, std::nullopt});
+  else scene.meshes.push_back({&surfaces.bone, render::kBoneIvory, 1.0, std::nullopt});
+  return scene;
+}
+
+// Renders every tissue and view and stores each PNG as an artefact under `key`.
 void render_and_store(Archive& archive, int64_t case_id, const CaseSurfaces& surfaces,
                       const render::AnatomicalFrame& frame, const ViewRecipe& recipe, const std::string& key,
                       const Json& parameters) {
-  render::Scene scene;
-  scene.meshes.push_back({&surfaces.bone, render::kBoneIvory, 1.0, std::nullopt});
-  scene.meshes.push_back({&surfaces.skin, render::kSkinTone, recipe.skin_opacity, std::nullopt});
-  auto bounds = render::scene_bounds(scene);
+  auto skin_bounds = render::scene_bounds(scene_of(ViewedTissue::Skin, surfaces));
   std::vector<render::Camera> cameras;
-  for (auto view : kViews) cameras.push_back(render::standard_camera(view, frame, bounds, 1.0));
+  for (auto view : kViews) cameras.push_back(render::standard_camera(view, frame, skin_bounds, 1.0));
   render::RenderSettings settings;
   settings.size = {recipe.image_size_px, recipe.image_size_px};
-  auto images = render::render_scene(scene, cameras, settings);
 
   TemporaryFolder scratch("maxillo-views");
-  for (size_t v = 0; v < kViews.size(); ++v) {
-    auto file = scratch / (std::string(render::name_of(kViews[v])) + ".png");
-    render::write_png(images[v], file);
-    auto sha = archive.store_object(read_file(file));
-    archive.add_artefact(NewArtefact{case_id, artefact_kind(kViews[v]), sha, "image/png", key, parameters.dump()});
+  for (auto tissue : kTissues) {
+    auto images = render::render_scene(scene_of(tissue, surfaces), cameras, settings);
+    for (size_t v = 0; v < kViews.size(); ++v) {
+      auto file = scratch / (artefact_kind(tissue, kViews[v]) + ".png");
+      render::write_png(images[v], file);
+      auto sha = archive.store_object(read_file(file));
+      archive.add_artefact(
+          NewArtefact{case_id, artefact_kind(tissue, kViews[v]), sha, "image/png", key, parameters.dump()});
+    }
   }
 }
 
 }  // namespace
 
+std::string_view name_of(ViewedTissue tissue) { return tissue == ViewedTissue::Skin ? "skin" : "bone"; }
+
 std::vector<CaseView> case_views(Archive& archive, int64_t case_id, const CaseSurfaces& surfaces,
                                  const LandmarkSet& landmarks, const ViewRecipe& recipe) {
   auto frame = render::anatomical_frame(landmarks);
-  Json parameters{{"image_size_px", recipe.image_size_px}, {"skin_opacity", recipe.skin_opacity}};
+  Json parameters{{"image_size_px", recipe.image_size_px}};
   auto key = derivation_key({surfaces.key, landmarks_hash(landmarks)}, parameters);
 
   bool all_stored = true;
-  for (auto view : kViews) all_stored = all_stored && archive.find_artefact(case_id, artefact_kind(view), key);
+  for (auto tissue : kTissues)
+    for (auto view : kViews) all_stored = all_stored && archive.find_artefact(case_id, artefact_kind(tissue, view), key);
   if (!all_stored) render_and_store(archive, case_id, surfaces, frame, recipe, key, parameters);
 
   std::vector<CaseView> views;
-  for (auto view : kViews) {
-    auto artefact = archive.find_artefact(case_id, artefact_kind(view), key);
-    views.push_back({view, archive.object_path(artefact->object_sha256), caption_for(view, frame)});
-  }
+  for (auto tissue : kTissues)
+    for (auto view : kViews) {
+      auto artefact = archive.find_artefact(case_id, artefact_kind(tissue, view), key);
+      views.push_back({tissue, view, archive.object_path(artefact->object_sha256), caption_for(tissue, view, frame)});
+    }
   return views;
 }
 

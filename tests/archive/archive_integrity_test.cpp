@@ -3,6 +3,7 @@
 
 #include "archive/archive.h"
 #include "archive_fixture.h"
+#include "core/atomic_file.h"
 #include "core/sha256.h"
 
 namespace maxillo {
@@ -55,6 +56,23 @@ TEST(ArchiveVerify, MissingObjectIsDataLossAndItsRowsStay) {
   EXPECT_EQ(archive.series().front().instance_count, 4);
 }
 
+TEST(ArchiveVerify, ReimportingTheOriginalsRestoresALostObject) {
+  TemporaryFolder folder;
+  Archive archive = archive_with_series(folder);
+  auto victim = archive.series_instance_files(1)[2];
+  auto original = read_file(victim);
+  std::filesystem::remove(victim);
+  ASSERT_EQ(archive.verify(RepairMode::ReportOnly, ProgressDisplay::Never).missing.size(), 1u);
+
+  ImportOptions options;
+  options.progress = ProgressDisplay::Never;
+  auto report = archive.import_paths({folder / "in"}, options);
+  EXPECT_EQ(report.restored, 1u);
+  EXPECT_EQ(report.already_archived, 4u);
+  EXPECT_EQ(read_file(victim), original);
+  EXPECT_TRUE(archive.verify(RepairMode::ReportOnly, ProgressDisplay::Never).consistent());
+}
+
 TEST(ArchiveVerify, RepairRemovesOrphansAndTemporariesOnly) {
   TemporaryFolder folder;
   Archive archive = archive_with_series(folder);
@@ -100,6 +118,22 @@ TEST(ArchiveResolve, NumericIdsPatientIdsAndUids) {
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), ErrorCode::kNotFound);
   }
+}
+
+TEST(ArchiveResolve, TypedIdsNameTheirKindEvenWhenBareNumbersCollide) {
+  TemporaryFolder folder;
+  Archive archive = archive_with_series(folder);
+  // Series 1, study 1, patient 1 and case 1 all exist: the bare "1" is the series.
+  EXPECT_EQ(archive.resolve("1").kind, ItemKind::Series);
+  for (auto [text, kind] : {std::pair{"case:1", ItemKind::Case}, {"patient:1", ItemKind::Patient},
+                            {"study:1", ItemKind::Study}, {"series:1", ItemKind::Series},
+                            {"instance:4", ItemKind::Instance}}) {
+    auto item = archive.resolve(text);
+    EXPECT_EQ(item.kind, kind) << text;
+  }
+  EXPECT_EQ(archive.resolve("instance:4").id, 4);
+  EXPECT_THROW(archive.resolve("case:99"), Error);
+  EXPECT_THROW(archive.resolve("case:x"), Error);
 }
 
 TEST(ArchiveArtefacts, LatestMatchingArtefactIsFound) {

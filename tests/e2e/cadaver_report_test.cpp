@@ -1,0 +1,45 @@
+// The real cadaver head CT (../shared/data/cthead-stanford) through the whole pipe, as a clinic
+// would run it: wrap as DICOM, import, report. Skipped where the data is absent.
+#include <gtest/gtest.h>
+
+#include "support/pdf_tools.h"
+#include "support/temporary_folder.h"
+
+namespace maxillo {
+namespace {
+using testing::quote;
+using testing::run_command;
+
+const std::filesystem::path kCthead = std::filesystem::path(MAXILLO_SHARED_DATA) / "cthead-stanford";
+
+TEST(CadaverReport, WrapImportAndReport) {
+  if (!std::filesystem::exists(kCthead / "slices" / "CThead.1"))
+    GTEST_SKIP() << "real data absent: " << kCthead << " (see ../shared/data/README.md)";
+  testing::TemporaryFolder folder("maxillo-cadaver");
+  const std::string maxillo = std::string(MAXILLO_BINARY) + " --archive " + quote(folder / "archive");
+
+  auto wrap = run_command(std::string("bash ") + MAXILLO_SOURCE_DIR + "/scripts/cthead-to-dicom " +
+                          quote(folder / "ct") + " --data " + quote(kCthead / "slices") + " --maxillo " + MAXILLO_BINARY + " 2>&1");
+  ASSERT_EQ(wrap.exit_code, 0) << wrap.output;
+  auto import = run_command(maxillo + " import " + quote(folder / "ct") + " 2>&1");
+  ASSERT_EQ(import.exit_code, 0) << import.output;
+  EXPECT_NE(import.output.find("113 imported"), std::string::npos) << import.output;
+
+  auto report = run_command(maxillo + " report CTHEAD-UNC --out " + quote(folder / "report.pdf") + " 2>&1");
+  ASSERT_EQ(report.exit_code, 0) << report.output;
+  EXPECT_EQ(run_command("qpdf --check " + quote(folder / "report.pdf") + " >/dev/null 2>&1").exit_code, 0);
+  auto text = testing::pdf_text(folder / "report.pdf");
+  EXPECT_NE(text.find("CThead"), std::string::npos);
+  EXPECT_NE(text.find("patient axes"), std::string::npos) << "no landmarks: the camera uses the scanner axes";
+  auto views = testing::pdf_images(folder / "report.pdf", folder / "images");
+  ASSERT_EQ(views.size(), 6u);
+  for (const auto& view : views) EXPECT_GT(view.foreground_fraction, 0.1) << view.file;
+
+  // A second report reuses the stored surfaces and renders (same derivation keys).
+  auto again = run_command(maxillo + " --json report CTHEAD-UNC --out " + quote(folder / "again.pdf") + " 2>/dev/null");
+  ASSERT_EQ(again.exit_code, 0);
+  EXPECT_NE(again.output.find("\"surfaces_reused\": true"), std::string::npos) << again.output;
+}
+
+}  // namespace
+}  // namespace maxillo
