@@ -10,6 +10,7 @@
 #include "archive_fixture.h"
 #include "core/error.h"
 #include "core/json.h"
+#include "support/run_command.h"
 #include "support/run_maxillo.h"
 
 namespace maxillo {
@@ -55,6 +56,30 @@ TEST(ArchiveCli, ImportReportsEachBadFileOnOneLineAndImportsTheRest) {
   ASSERT_EQ(report.at("problems").size(), 2u);
   EXPECT_EQ(report.at("problems")[0].at("outcome"), "failed");
   EXPECT_TRUE(report.at("problems")[0].contains("reason"));
+}
+
+// Permission denied, as a clinic's unprivileged service account meets it. Tests run as root in
+// CI, where every file is readable: the import then runs as `nobody` through setpriv.
+TEST(ArchiveCli, UnreadableFileIsNamedAsPermissionDeniedAndTheRestImports) {
+  TemporaryFolder folder;
+  testing::write_series(folder / "in", 3);
+  auto locked = folder / "in" / "locked.dcm";
+  std::filesystem::copy_file(folder / "in" / "slice0000.dcm", locked);
+  std::filesystem::permissions(locked, std::filesystem::perms::none);
+  std::filesystem::create_directories(folder / "archive");
+  std::filesystem::permissions(folder / "archive", std::filesystem::perms::all);
+  std::filesystem::permissions(folder.path(), std::filesystem::perms::all);
+
+  std::string as_user;
+  if (::geteuid() == 0) {
+    if (!testing::tool_available("setpriv")) GTEST_SKIP() << "running as root without setpriv";
+    as_user = "setpriv --reuid=65534 --regid=65534 --clear-groups ";
+  }
+  auto result = testing::run_command(as_user + MAXILLO_BINARY + " --archive " + testing::quote(folder / "archive") +
+                                     " import " + testing::quote(folder / "in") + " 2>&1");
+  EXPECT_EQ(result.exit_code, 1) << result.output;
+  EXPECT_NE(result.output.find(locked.string() + ": unreadable: Permission denied"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("3 imported"), std::string::npos) << result.output;
 }
 
 TEST(ArchiveCli, ListShowVerifyAndExportByteIdentical) {
