@@ -61,6 +61,7 @@ struct ImportOptions {
 };
 
 enum class RepairMode { ReportOnly, Repair };
+enum class ExportProfile { Original, Deidentified };
 
 struct VerifyReport {
   size_t objects_checked = 0;
@@ -134,9 +135,15 @@ class Archive {
   // --- integrity and export ---
   // Re-hashes every object. Repair removes orphan and temporary files only, never rows.
   VerifyReport verify(RepairMode mode, ProgressDisplay progress = ProgressDisplay::Auto);
-  // Copies the series' original files into out_dir (created), named <instance number>_<SOP UID>.dcm.
+  // Writes the series' files into out_dir (created), named <instance number>_<SOP UID>.dcm:
+  // Original = the archived bytes; Deidentified = copies without identifying attributes, with
+  // pseudonyms and new UIDs (archive/dicom_deidentify.h) keyed by deidentification_secret().
   // Returns the written paths in instance order. Throws Error(NotFound / WriteFailed / ArchiveCorrupt).
-  std::vector<std::filesystem::path> export_series(int64_t series, const std::filesystem::path& out_dir) const;
+  std::vector<std::filesystem::path> export_series(int64_t series, const std::filesystem::path& out_dir,
+                                                   ExportProfile profile = ExportProfile::Original) const;
+  // This archive's secret for pseudonyms (ARCHIVE/deidentify.key, 256 random bits, mode 0600,
+  // made on first use). The same secret gives the same pseudonyms: keep it with the archive.
+  std::string deidentification_secret() const;
 
   struct State;  // private: connection, prepared statements, object store
 

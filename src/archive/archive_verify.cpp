@@ -58,30 +58,4 @@ VerifyReport Archive::verify(RepairMode mode, ProgressDisplay display) {
   return report;
 }
 
-std::vector<std::filesystem::path> Archive::export_series(int64_t series, const std::filesystem::path& out_dir) const {
-  auto members = instances(series);
-  if (members.empty()) throw Error(ErrorCode::kNotFound, std::to_string(series), "no such series or no instances");
-  std::error_code error;
-  std::filesystem::create_directories(out_dir, error);
-  if (error) throw Error(ErrorCode::kWriteFailed, out_dir.string(), error.message());
-  std::vector<std::filesystem::path> written;
-  for (const auto& instance : members) {
-    auto source = state_->objects.path_of(instance.object_sha256);
-    std::vector<std::byte> bytes;
-    try {
-      bytes = read_file(source);
-    } catch (const Error& e) {
-      throw Error(ErrorCode::kArchiveCorrupt, source.string(), "archived object unreadable: " + e.reason());
-    }
-    if (sha256_hex(bytes) != instance.object_sha256)
-      throw Error(ErrorCode::kArchiveCorrupt, source.string(), "archived object no longer matches its hash");
-    char number[16];
-    std::snprintf(number, sizeof number, "%05d", instance.instance_number.value_or(0));
-    auto target = out_dir / (std::string(number) + "_" + instance.sop_instance_uid + ".dcm");
-    write_file_atomically(target, bytes, Durability::Unflushed);
-    written.push_back(target);
-  }
-  return written;
-}
-
 }  // namespace maxillo
