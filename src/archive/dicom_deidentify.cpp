@@ -3,6 +3,7 @@
 #include <dcmtk/dcmdata/dctk.h>
 
 #include "archive/dicom_header.h"
+#include "archive/dicom_uid.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/sha256.h"
@@ -26,8 +27,6 @@ const DcmTagKey kRemoved[] = {
 const DcmTagKey kEmptied[] = {DCM_PatientBirthDate, DCM_ReferringPhysicianName, DCM_AccessionNumber, DCM_StudyID};
 const DcmTagKey kReplacedUids[] = {DCM_StudyInstanceUID, DCM_SeriesInstanceUID, DCM_SOPInstanceUID,
                                    DCM_FrameOfReferenceUID};
-
-__extension__ typedef unsigned __int128 Uint128;  // GCC/Clang; a UUID is 128 bits
 
 std::string text_of(DcmItem& item, const DcmTagKey& tag) {
   OFString value;
@@ -73,19 +72,7 @@ std::string pseudonym_for(std::string_view secret, std::string_view patient_id) 
 }
 
 std::string pseudonymous_uid(std::string_view secret, std::string_view uid) {
-  Sha256 hash;
-  hash.update(secret);
-  hash.update("\nuid\n");
-  hash.update(uid);
-  std::string hex = hash.hex_digest().substr(0, 32);  // 128 bits, as a UUID
-  Uint128 value = 0;
-  for (char c : hex) value = (value << 4) | unsigned(c <= '9' ? c - '0' : c - 'a' + 10);
-  std::string digits;
-  do {
-    digits.insert(digits.begin(), char('0' + int(value % 10)));
-    value /= 10;
-  } while (value > 0);
-  return "2.25." + digits;
+  return derived_uid(std::string(secret) + "\nuid\n" + std::string(uid));
 }
 
 std::string write_deidentified_copy(const std::filesystem::path& source, const std::filesystem::path& target,

@@ -144,14 +144,21 @@ WrittenSeries write_ct_series(const Volume& volume, const SeriesMetadata& metada
   written.study_instance_uid = metadata.study_instance_uid.empty() ? new_uid() : metadata.study_instance_uid;
   written.series_instance_uid = metadata.series_instance_uid.empty() ? new_uid() : metadata.series_instance_uid;
 
+  // A caller that names the series gets reproducible files: the frame of reference and the
+  // instances are numbered under its UID. Otherwise every UID is new.
+  const bool named_series = !metadata.series_instance_uid.empty();
+  auto instance_uid = [&](int number) {
+    return named_series ? written.series_instance_uid + "." + std::to_string(number) : new_uid();
+  };
+
   DcmDataset common;
-  put_patient_study_series(common, metadata, written.study_instance_uid, written.series_instance_uid, new_uid());
+  put_patient_study_series(common, metadata, written.study_instance_uid, written.series_instance_uid, instance_uid(0));
   put_image_geometry(common, g);
   put_pixel_description(common, g, metadata);
 
   for (int k = 0; k < g.size.z(); ++k) {
     auto path = slice_path(folder, prefix, k);
-    write_slice(common, volume, k, new_uid(), path);
+    write_slice(common, volume, k, instance_uid(k + 1), path);
     written.files.push_back(std::move(path));
   }
   return written;

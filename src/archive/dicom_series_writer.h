@@ -18,7 +18,9 @@ struct SeriesMetadata {
   std::string patient_id;
   std::string patient_birth_date;  // YYYYMMDD or empty
   std::string patient_sex;         // M, F, O or empty
-  // Study and series modules; UIDs are generated when empty.
+  // Study and series modules; UIDs are generated when empty. When series_instance_uid is
+  // given (at most 58 characters), the frame of reference and SOP Instance UIDs are numbered
+  // under it (<series>.0, <series>.1 ...), so writing the same volume twice gives identical files.
   std::string study_instance_uid;
   std::string series_instance_uid;
   std::string study_date;  // YYYYMMDD

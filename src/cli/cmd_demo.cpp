@@ -60,7 +60,8 @@ int run_demo(const DemoOptions& options, const GlobalOptions& global) {
   clock.mark("volume, surfaces, views, report");
 
   Json summary{{"report", report.pdf.string()}, {"pages", report.pages}, {"archive", archive_dir.string()},
-               {"case", case_id}, {"timing", clock.to_json()}};
+               {"case", case_id}, {"imported", imported.imported}, {"already_archived", imported.already_archived},
+               {"surfaces_reused", report.surfaces_reused}, {"timing", clock.to_json()}};
   if (global.json) std::cout << summary.dump(2) << "\n";
   else std::cout << "demo report: " << report.pdf.string() << " (" << report.pages << " pages, "
                  << summary["timing"]["total_seconds"].get<double>() << " s)\n";

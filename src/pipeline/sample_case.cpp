@@ -4,6 +4,7 @@
 
 #include <cstdio>
 
+#include "archive/dicom_uid.h"
 #include "ceph/landmark_io.h"
 #include "core/error.h"
 #include "core/log.h"
@@ -54,6 +55,10 @@ SeriesMetadata phantom_series_metadata(const PhantomSpec& spec, SkeletalClass sk
   std::snprintf(description, sizeof description, "Phantom CT %.2f mm, skeletal Class %s", spec.spacing_mm,
                 std::string(name_of(skeletal_class)).c_str());
   metadata.series_description = description;
+  // UIDs derived from the description: the same phantom is the same scan, so regenerating it
+  // re-imports as "already archived" instead of piling up copies.
+  metadata.study_instance_uid = derived_uid("maxillo phantom study");
+  metadata.series_instance_uid = derived_uid(std::string("maxillo phantom series: ") + description);
   return metadata;
 }
 

@@ -27,8 +27,8 @@ SeriesMetadata phantom_series_metadata(const PhantomSpec& spec, SkeletalClass sk
 std::string_view name_of(SkeletalClass skeletal_class);  // "I", "II", "III"
 
 // Generates the phantom and writes it under out_dir (created): ct/ replaced as a whole (never
-// a mix of two runs' slices), landmarks.mrk.json and landmarks.csv. Deterministic pixel data;
-// the UIDs are new on every call (a new "scan" of the same phantom).
+// a mix of two runs' slices), landmarks.mrk.json and landmarks.csv. Deterministic: the same
+// class and spacing give byte-identical files, UIDs included.
 SampleCase write_sample_case(SkeletalClass skeletal_class, double spacing_mm, const std::filesystem::path& out_dir);
 
 }  // namespace maxillo::pipeline

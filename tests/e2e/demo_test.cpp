@@ -2,6 +2,7 @@
 // real poppler and qpdf tools, and the report's images checked for content.
 #include <gtest/gtest.h>
 
+#include "core/json.h"
 #include "support/pdf_tools.h"
 #include "support/temporary_folder.h"
 
@@ -62,6 +63,22 @@ TEST_F(DemoTest, ReportIsStoredInTheArchiveAndVerifies) {
   auto show = run_command(std::string(MAXILLO_BINARY) + " --json --archive " + quote(archive) + " show case:1 2>/dev/null");
   for (const char* kind : {"\"report\"", "\"surface-skin\"", "\"render-bone-lateral\"", "\"landmarks\""})
     EXPECT_NE(show.output.find(kind), std::string::npos) << kind << " missing in " << show.output;
+}
+
+// The same phantom is the same scan (UIDs derived from it): a second demo into the same folder
+// re-imports nothing and reuses the stored surfaces.
+TEST_F(DemoTest, SecondRunIsIdempotent) {
+  ASSERT_EQ(demo_.exit_code, 0);
+  auto again = run_command(std::string(MAXILLO_BINARY) + " --json demo --out " + quote(folder_->path() / "out") +
+                           " 2>/dev/null");
+  ASSERT_EQ(again.exit_code, 0) << again.output;
+  auto summary = Json::parse(again.output);
+  EXPECT_EQ(summary.at("imported"), 0);
+  EXPECT_GT(summary.at("already_archived").get<int>(), 100);
+  EXPECT_EQ(summary.at("surfaces_reused"), true);
+  auto series = run_command(std::string(MAXILLO_BINARY) + " --json --archive " + quote(folder_->path() / "out" / "archive") +
+                            " list series 2>/dev/null");
+  EXPECT_EQ(Json::parse(series.output).size(), 1u) << series.output;
 }
 
 }  // namespace
