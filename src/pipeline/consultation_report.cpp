@@ -4,6 +4,7 @@
 #include <ctime>
 
 #include "core/atomic_file.h"
+#include "core/progress.h"
 #include "core/version.h"
 #include "pipeline/case_landmarks.h"
 #include "pipeline/derivation.h"
@@ -97,16 +98,19 @@ ConsultationResult write_consultation_report(Archive& archive, int64_t case_id, 
   auto contents = archive.case_contents(case_id);
   auto series = primary_series(contents);
   ConsultationResult result;
+  Progress progress("report", 3);  // surfaces, views, layout: each takes seconds on a real CT
 
   auto start = Clock::now();
   auto surfaces = case_surfaces(archive, case_id, series, options.surfaces);
   result.surfaces_reused = surfaces.reused;
   result.seconds_surfaces = seconds_since(start);
+  progress.advance();
 
   start = Clock::now();
   auto landmarks = latest_landmarks(archive, case_id);
   auto views = case_views(archive, case_id, surfaces, landmarks, options.views);
   result.seconds_views = seconds_since(start);
+  progress.advance();
 
   start = Clock::now();
   auto model = model_header(contents);
@@ -119,6 +123,8 @@ ConsultationResult write_consultation_report(Archive& archive, int64_t case_id, 
   archive.add_artefact(NewArtefact{case_id, "report", result.report_sha256, "application/pdf",
                                    derivation_key({surfaces.key}, {{"template", options.template_resource}}), "{}"});
   result.seconds_layout = seconds_since(start);
+  progress.advance();
+  progress.finish();
   return result;
 }
 

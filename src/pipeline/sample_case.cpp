@@ -82,6 +82,7 @@ SampleCase write_sample_case(SkeletalClass skeletal_class, double spacing_mm, co
   sample.csv_file = out_dir / "landmarks.csv";
   write_landmarks(sample.markups_file, phantom.landmarks);
   write_landmarks(sample.csv_file, phantom.landmarks);
+  progress.advance();
   progress.finish();
   sample.landmarks = phantom.landmarks;
   sample.geometry = phantom.ct.geometry;
