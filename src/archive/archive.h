@@ -114,10 +114,10 @@ class Archive {
 
   // --- cases ---
   std::optional<CaseRecord> case_of_patient(int64_t patient, std::string_view label = "default") const;
-  // A case id, or a Patient ID (its "default" case). Throws Error(NotFound).
+  // A case id (bare or typed "case:N"), or a Patient ID (its "default" case). Throws Error(NotFound).
   int64_t resolve_case(std::string_view text) const;
   CaseContents case_contents(int64_t case_id) const;
-  // Changes the role of a series in a case ("preop", "postop", "follow-up", "unassigned").
+  // Changes the role of a series in a case ("preop", "postop", "follow-up", "report", "unassigned").
   void set_series_role(int64_t case_id, int64_t series, std::string_view role);
 
   // --- objects and derived artefacts ---

@@ -15,6 +15,10 @@ std::optional<CaseRecord> Archive::case_of_patient(int64_t patient, std::string_
 }
 
 int64_t Archive::resolve_case(std::string_view text) const {
+  if (text.starts_with("case:")) {
+    auto item = resolve(text);  // typed: must be a case, or NotFound
+    return item.id;
+  }
   int64_t number = 0;
   auto [end, status] = std::from_chars(text.data(), text.data() + text.size(), number);
   if (status == std::errc() && end == text.data() + text.size()) {
@@ -64,9 +68,9 @@ CaseContents Archive::case_contents(int64_t case_id) const {
 }
 
 void Archive::set_series_role(int64_t case_id, int64_t series, std::string_view role) {
-  static constexpr std::string_view kRoles[] = {"preop", "postop", "follow-up", "unassigned"};
+  static constexpr std::string_view kRoles[] = {"preop", "postop", "follow-up", "report", "unassigned"};
   if (std::find(std::begin(kRoles), std::end(kRoles), role) == std::end(kRoles))
-    throw Error(ErrorCode::kBadValue, std::string(role), "unknown role (preop, postop, follow-up, unassigned)");
+    throw Error(ErrorCode::kBadValue, std::string(role), "unknown role (preop, postop, follow-up, report, unassigned)");
   sqlite::Transaction transaction(state_->db);
   sqlite::Statement update(state_->db, sql::kSetSeriesRole);
   update.bind(1, case_id).bind(2, series).bind(3, role).run();

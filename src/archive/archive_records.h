@@ -78,7 +78,7 @@ struct CaseRecord {
 
 struct CaseSeries {
   SeriesRecord series;
-  std::string role;  // "preop", "postop", "follow-up" or "unassigned"
+  std::string role;  // "preop", "postop", "follow-up", "report" (maxillo's own DICOM reports) or "unassigned"
 };
 
 // What a report header and its series table need about one case.
