@@ -5,7 +5,7 @@
 
 #include "archive/archive.h"
 #include "archive_fixture.h"
-#include "bad_dicom_files.h"
+#include "support/bad_dicom_files.h"
 
 namespace maxillo {
 namespace {

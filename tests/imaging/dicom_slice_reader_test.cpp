@@ -18,6 +18,7 @@
 #include "archive/dicom_series_writer.h"
 #include "core/error.h"
 #include "support/run_command.h"
+#include "support/bad_dicom_files.h"
 #include "support/temporary_folder.h"
 #include "synthetic_slices.h"
 
@@ -167,21 +168,8 @@ TEST(DicomSliceReader, RefusesWhatItCannotRead) {
   EXPECT_NE(reason.find("Image Position (Patient)"), std::string::npos) << reason;
 
   // JPEG 2000: a valid encapsulation with a fake codestream; DCMTK has no decoder for it.
-  DcmFileFormat file;
-  ASSERT_TRUE(file.loadFile(good.c_str()).good());
-  DcmDataset* d = file.getDataset();
-  d->findAndDeleteElement(DCM_PixelData);
-  auto* sequence = new DcmPixelSequence(DcmTag(DCM_PixelData, EVR_OB));
-  sequence->insert(new DcmPixelItem(DcmTag(DCM_Item, EVR_OB)));
-  auto* fragment = new DcmPixelItem(DcmTag(DCM_Item, EVR_OB));
-  Uint8 codestream[16] = {0xFF, 0x4F, 0xFF, 0x51, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0xFF, 0xD9};
-  fragment->putUint8Array(codestream, sizeof codestream);
-  sequence->insert(fragment);
-  auto* pixels = new DcmPixelData(DCM_PixelData);
-  pixels->putOriginalRepresentation(EXS_JPEG2000LosslessOnly, nullptr, sequence);
-  d->insert(pixels, true);
   const auto j2k = folder / "j2k.dcm";
-  ASSERT_TRUE(file.saveFile(j2k.c_str(), EXS_JPEG2000LosslessOnly).good());
+  testing::write_jpeg2000(good, j2k);
   EXPECT_EQ(code_of_reading(j2k, &reason), ErrorCode::kUnsupportedSyntax);
   EXPECT_NE(reason.find("JPEG 2000"), std::string::npos) << reason;
 
