@@ -101,6 +101,7 @@ class Archive {
   std::optional<PatientRecord> patient(int64_t id) const;
   std::optional<StudyRecord> study(int64_t id) const;
   std::optional<SeriesRecord> series_by_id(int64_t id) const;
+  std::optional<InstanceRecord> instance(int64_t id) const;
 
   // What a user-given ID names: a typed archive id ("patient:3", "study:3", "series:3",
   // "instance:3", "case:3"), a bare archive id (tried as series, study, patient, case in that

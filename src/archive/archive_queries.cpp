@@ -23,6 +23,11 @@ StudyRecord study_from(const sqlite::Statement& row) {
   return {row.integer(0), row.integer(1), row.text(2), row.text(3), row.text(4),
           row.text(5),    row.text(6),    row.integer(7)};
 }
+InstanceRecord instance_from(const sqlite::Statement& r) {
+  return InstanceRecord{r.integer(0), r.integer(1), r.text(2), r.text(3), optional_int(r, 4), r.text(5),
+                        r.text(6),    r.text(7),    r.text(8), r.integer(9), r.text(10), r.text(11)};
+}
+
 SeriesRecord series_from(const sqlite::Statement& row) {
   return {row.integer(0),        row.integer(1),        row.text(2),           row.text(3),
           row.text(4),           optional_int(row, 5),  optional_int(row, 6),  optional_int(row, 7),
@@ -93,13 +98,13 @@ std::optional<SeriesRecord> Archive::series_by_id(int64_t id) const {
 }
 
 std::vector<InstanceRecord> Archive::instances(int64_t series) const {
-  return all_rows<InstanceRecord>(
-      state_->db, sql::kInstancesOfSeries,
-      [](const sqlite::Statement& r) {
-        return InstanceRecord{r.integer(0), r.integer(1), r.text(2), r.text(3), optional_int(r, 4), r.text(5),
-                              r.text(6),    r.text(7),    r.text(8), r.integer(9), r.text(10), r.text(11)};
-      },
-      series);
+  return all_rows<InstanceRecord>(state_->db, std::string(sql::kInstanceColumns) + sql::kOfSeriesInOrder,
+                                  instance_from, series);
+}
+
+std::optional<InstanceRecord> Archive::instance(int64_t id) const {
+  auto rows = all_rows<InstanceRecord>(state_->db, std::string(sql::kInstanceColumns) + sql::kWithId, instance_from, id);
+  return rows.empty() ? std::nullopt : std::optional(rows.front());
 }
 
 std::vector<CaseRecord> Archive::cases() const {
@@ -142,11 +147,7 @@ ResolvedItem Archive::resolve(std::string_view text) const {
     constexpr ItemKind kinds[] = {ItemKind::Series, ItemKind::Study, ItemKind::Patient, ItemKind::Case};
     for (size_t n = 0; n < std::size(kinds); ++n)
       if (kinds[n] == typed->kind && row_exists(db, sql::kExists[n], typed->id)) return *typed;
-    if (typed->kind == ItemKind::Instance) {
-      for (const auto& s : series())
-        for (const auto& i : instances(s.id))
-          if (i.id == typed->id) return *typed;
-    }
+    if (typed->kind == ItemKind::Instance && instance(typed->id)) return *typed;
     throw Error(ErrorCode::kNotFound, std::string(text), "no such " + to_string(typed->kind));
   }
   if (auto number = as_number(text)) {

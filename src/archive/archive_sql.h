@@ -58,10 +58,11 @@ inline constexpr const char* kSeries =
     "SELECT x.id, x.study, x.series_uid, x.modality, x.description, x.number, x.rows, x.columns, "
     "x.pixel_spacing_row, x.pixel_spacing_column, x.slice_thickness, "
     "(SELECT COUNT(*) FROM instances i WHERE i.series = x.id) FROM series x";
-inline constexpr const char* kInstancesOfSeries =
+inline constexpr const char* kInstanceColumns =
     "SELECT id, series, sop_instance_uid, sop_class_uid, instance_number, image_position, image_orientation, "
-    "transfer_syntax, object, size, source_path, imported_at FROM instances WHERE series = ?1 "
-    "ORDER BY instance_number IS NULL, instance_number, id";
+    "transfer_syntax, object, size, source_path, imported_at FROM instances ";
+inline constexpr const char* kOfSeriesInOrder = "WHERE series = ?1 ORDER BY instance_number IS NULL, instance_number, id";
+inline constexpr const char* kWithId = "WHERE id = ?1";
 inline constexpr const char* kCases = "SELECT id, patient, label, created_at FROM cases";
 inline constexpr const char* kIdentityFlags =
     "SELECT id, patient, attribute, archived_value, arrived_value, source_path, sop_instance_uid, flagged_at "

@@ -34,9 +34,7 @@ Json describe_item(const Archive& archive, const ResolvedItem& item) {
       return json;
     }
     case ItemKind::Instance:
-      for (const auto& series : archive.series())
-        for (const auto& i : archive.instances(series.id))
-          if (i.id == item.id) return to_json(i);
+      if (auto instance = archive.instance(item.id)) return to_json(*instance);
       return Json::object();
     case ItemKind::Case: {
       Json json = to_json(archive.case_contents(item.id));
