@@ -3,6 +3,10 @@
 // Canonical labels (see docs/ARCHITECTURE.md): S, N, Or, Po, A, B, ANS, PNS, Pog, Me, Gn, Go,
 // Ar, U1 (upper incisor tip), L1 (lower incisor tip), U6R/U6L and L6R/L6L (first molar
 // mesio-buccal cusps, patient right/left). Bilateral points carry an R/L suffix (OrR, PoL...).
+// Cephalometry (cephalometric_analysis.h) also reads: Si (the source's maxillary point: lowest
+// point of the maxillary sinus on a parallel to ANS-PNS), occlusal plane points U4/L4 or U5/L5
+// (premolars, with U6/L6 the functional occlusal plane) or OccP/OccA (a traced occlusal line).
+// On a 2D cephalogram bilateral points may be given without suffix (Go, U6...).
 #include <Eigen/Core>
 #include <optional>
 #include <string>

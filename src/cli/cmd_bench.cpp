@@ -106,6 +106,9 @@ void run_bench(const BenchArguments& args, CommandContext& ctx) {
 
 }  // namespace
 
+void attach_bench_cube(CLI::App& bench, CommandContext& ctx);  // cmd_bench_cube.cpp
+void attach_bench_occlusion(CLI::App& bench, CommandContext& ctx);  // cmd_bench_occlusion.cpp
+
 void attach_bench(CLI::App& app, CommandContext& ctx) {
   app.require_subcommand(1);
   CLI::App* import = app.add_subcommand("import", "import throughput (instances/s), first import and re-import");
@@ -114,6 +117,8 @@ void attach_bench(CLI::App& app, CommandContext& ctx) {
   import->add_option("--runs", args->runs, "runs; the median is reported")->check(CLI::Range(1, 50));
   import->add_option("--workdir", args->workdir, "scratch folder (default: $TMPDIR/maxillo-bench; emptied)");
   import->callback([args, &ctx] { run_bench(*args, ctx); });
+  attach_bench_cube(app, ctx);
+  attach_bench_occlusion(app, ctx);
 }
 
 }  // namespace maxillo::cli

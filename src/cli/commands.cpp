@@ -17,6 +17,9 @@ void attach_convert(CLI::App&, CommandContext&);
 void attach_report(CLI::App&, CommandContext&);
 void attach_demo(CLI::App&, CommandContext&);
 void attach_sample(CLI::App&, CommandContext&);
+void attach_occlude(CLI::App&, CommandContext&);
+void attach_ceph(CLI::App&, CommandContext&);
+void attach_followup(CLI::App&, CommandContext&);
 
 std::span<const CommandSpec> command_table() {
   static const std::array kCommands = {
@@ -26,11 +29,14 @@ std::span<const CommandSpec> command_table() {
       CommandSpec{"show", "Archive", "show a patient, study, series, instance or case by ID or UID", attach_show},
       CommandSpec{"verify", "Archive", "re-hash every archived object; --repair removes orphans", attach_verify},
       CommandSpec{"export", "Archive", "write a series' original files into a folder", attach_export},
-      CommandSpec{"bench", "Archive", "benchmarks (bench import)", attach_bench},
+      CommandSpec{"bench", "Archive", "benchmarks (bench import, bench cube, bench occlusion)", attach_bench},
       CommandSpec{"surfaces", "Imaging", "skin and bone surfaces from a DICOM series", attach_surfaces},
       CommandSpec{"convert", "Imaging", "wrap a MetaImage/NRRD volume as a DICOM CT series", attach_convert},
       CommandSpec{"report", "Reports", "consultation report of a case as PDF", attach_report},
+      CommandSpec{"ceph", "Cephalometry", "cephalometric measurements, time points, ISBI check", attach_ceph},
+      CommandSpec{"followup", "Cephalometry", "follow-up tables of a case or a cohort CSV", attach_followup},
       CommandSpec{"sample", "General", "write the synthetic phantom: DICOM CT series and landmarks", attach_sample},
+      CommandSpec{"occlude", "Planning", "virtual occlusion: guided alignment of the dental arches, occlusionogram", attach_occlude},
       CommandSpec{"demo", "General", "the whole pipeline on the synthetic phantom, ending in a PDF report", attach_demo},
   };
   return kCommands;

@@ -1,18 +1,73 @@
 #include "pipeline/case_landmarks.h"
 
+#include <algorithm>
+#include <map>
+
 #include "ceph/landmark_io.h"
+#include "core/error.h"
 #include "core/json.h"
+#include "core/sha256.h"
 
 namespace maxillo::pipeline {
 namespace {
 constexpr const char* kLandmarksKind = "landmarks";
+
+Json frame_json(const LandmarkFrame& frame) {
+  if (frame.geometry != LandmarkGeometry::kCephalogram) return "LPS";
+  return Json{{"cephalogram",
+               {{"pixel_spacing_mm", frame.axes.pixel_spacing_mm},
+                {"image_y", frame.axes.vertical == ImageVerticalAxis::kDown ? "down" : "up"},
+                {"face", frame.axes.facing == FacingDirection::kPlusX ? "+x" : "-x"}}}};
+}
+
+LandmarkFrame frame_from_json(const Json& json) {
+  LandmarkFrame frame;
+  if (!json.is_object() || !json.contains("cephalogram")) return frame;
+  const auto& c = json["cephalogram"];
+  frame.geometry = LandmarkGeometry::kCephalogram;
+  frame.axes.pixel_spacing_mm = c.value("pixel_spacing_mm", 1.0);
+  frame.axes.vertical = c.value("image_y", "up") == "down" ? ImageVerticalAxis::kDown : ImageVerticalAxis::kUp;
+  frame.axes.facing = c.value("face", "+x") == "-x" ? FacingDirection::kMinusX : FacingDirection::kPlusX;
+  return frame;
+}
+
+LandmarkSet read_set(const Archive& archive, const ArtefactRecord& record) {
+  auto bytes = archive.read_object(record.object_sha256);
+  std::string text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+  return parse_landmarks(text, LandmarkFormat::kSlicerMarkupsJson, "archive object " + record.object_sha256);
+}
+
+}  // namespace
+
+bool is_iso_date(const std::string& text) {
+  if (text.size() != 10 || text[4] != '-' || text[7] != '-') return false;
+  for (size_t i : {0, 1, 2, 3, 5, 6, 8, 9})
+    if (text[i] < '0' || text[i] > '9') return false;
+  int month = std::stoi(text.substr(5, 2)), day = std::stoi(text.substr(8, 2));
+  return month >= 1 && month <= 12 && day >= 1 && day <= 31;
 }
 
 void attach_landmarks(Archive& archive, int64_t case_id, const LandmarkSet& landmarks, const std::string& source) {
+  attach_landmarks(archive, case_id, landmarks, source, TimePoint{});
+}
+
+void attach_landmarks(Archive& archive, int64_t case_id, const LandmarkSet& landmarks, const std::string& source,
+                      const TimePoint& time_point, const LandmarkFrame& frame) {
+  if (!time_point.date.empty() && !is_iso_date(time_point.date))
+    throw Error(ErrorCode::kBadValue, time_point.date, "date must be YYYY-MM-DD");
   auto text = format_landmarks(landmarks, LandmarkFormat::kSlicerMarkupsJson);
   auto sha = archive.store_object(text);
-  archive.add_artefact(NewArtefact{case_id, kLandmarksKind, sha, "application/json", sha,
-                                   Json{{"source", source}, {"count", landmarks.size()}, {"frame", "LPS"}}.dump()});
+  Json parameters{{"source", source}, {"count", landmarks.size()}, {"frame", frame_json(frame)}};
+  std::string inputs = sha;
+  if (!time_point.label.empty() || !time_point.date.empty()) {
+    parameters["time_point"] = time_point.label;
+    parameters["date"] = time_point.date;
+    Sha256 hash;
+    hash.update(sha);
+    hash.update("\n" + time_point.label + "\n" + time_point.date);
+    inputs = hash.hex_digest();
+  }
+  archive.add_artefact(NewArtefact{case_id, kLandmarksKind, sha, "application/json", inputs, parameters.dump()});
 }
 
 LandmarkSet latest_landmarks(const Archive& archive, int64_t case_id) {
@@ -21,9 +76,42 @@ LandmarkSet latest_landmarks(const Archive& archive, int64_t case_id) {
   for (const auto& a : artefacts)
     if (a.kind == kLandmarksKind && (!newest || a.id > newest->id)) newest = &a;
   if (!newest) return {};
-  auto bytes = archive.read_object(newest->object_sha256);
-  std::string text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
-  return parse_landmarks(text, LandmarkFormat::kSlicerMarkupsJson, "archive object " + newest->object_sha256);
+  return read_set(archive, *newest);
+}
+
+std::vector<StoredLandmarks> landmark_history(const Archive& archive, int64_t case_id) {
+  auto artefacts = archive.artefacts(case_id);
+  std::sort(artefacts.begin(), artefacts.end(), [](const auto& a, const auto& b) { return a.id < b.id; });
+  std::vector<StoredLandmarks> history;
+  std::map<std::string, int> versions;
+  for (const auto& record : artefacts) {
+    if (record.kind != kLandmarksKind) continue;
+    auto parameters = Json::parse(record.parameters_json, nullptr, /*allow_exceptions=*/false);
+    if (parameters.is_discarded() || !parameters.is_object()) parameters = Json::object();
+    StoredLandmarks stored;
+    stored.artefact_id = record.id;
+    stored.time_point = {parameters.value("time_point", ""), parameters.value("date", "")};
+    stored.frame = frame_from_json(parameters.value("frame", Json("LPS")));
+    stored.source = parameters.value("source", "");
+    stored.created_at = record.created_at;
+    stored.version = ++versions[stored.time_point.label];
+    stored.landmarks = read_set(archive, record);
+    history.push_back(std::move(stored));
+  }
+  return history;
+}
+
+std::vector<StoredLandmarks> landmark_time_points(const Archive& archive, int64_t case_id) {
+  std::map<std::string, StoredLandmarks> newest;
+  for (auto& stored : landmark_history(archive, case_id))
+    if (!stored.time_point.label.empty()) newest[stored.time_point.label] = std::move(stored);
+  std::vector<StoredLandmarks> out;
+  for (auto& [label, stored] : newest) out.push_back(std::move(stored));
+  std::stable_sort(out.begin(), out.end(), [](const StoredLandmarks& a, const StoredLandmarks& b) {
+    if (a.time_point.date.empty() != b.time_point.date.empty()) return b.time_point.date.empty();
+    return a.time_point.date < b.time_point.date;
+  });
+  return out;
 }
 
 }  // namespace maxillo::pipeline

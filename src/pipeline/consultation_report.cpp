@@ -7,6 +7,7 @@
 #include "core/progress.h"
 #include "core/version.h"
 #include "pipeline/case_landmarks.h"
+#include "pipeline/cephalometry_section.h"
 #include "pipeline/derivation.h"
 #include "report/report_template.h"
 #include "report/write_report.h"
@@ -67,6 +68,13 @@ report::Section summary_section(const CaseContents& contents, int64_t series, co
   return {"summary", {facts}};
 }
 
+// DICOM Patient's Sex to the sex whose norms apply (Wits differs by sex); "O" and "" have none.
+ceph::Sex sex_for_norms(const std::string& dicom_sex) {
+  if (dicom_sex == "F") return ceph::Sex::kFemale;
+  if (dicom_sex == "M") return ceph::Sex::kMale;
+  return ceph::Sex::kUnknown;
+}
+
 report::Section views_section(const std::vector<CaseView>& views) {
   report::ImageGrid grid;
   grid.per_row = 3;
@@ -116,6 +124,7 @@ ConsultationResult write_consultation_report(Archive& archive, int64_t case_id, 
   auto model = model_header(contents);
   model.sections.push_back(summary_section(contents, series, surfaces, landmarks));
   model.sections.push_back(views_section(views));
+  model.sections.push_back(case_cephalometry_section(archive, case_id, sex_for_norms(contents.patient.sex)));
   model.sections.push_back(contents_section(archive, contents));
   result.pages = report::write_report(model, report_template, out_pdf);
   result.pdf = out_pdf;

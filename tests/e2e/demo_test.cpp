@@ -39,7 +39,7 @@ TEST_F(DemoTest, ReportTextIsExtractable) {
   ASSERT_TRUE(std::filesystem::exists(report()));
   auto text = testing::pdf_text(report());
   for (const char* expected : {"Phantom, Maxillo", "MAXILLO-PHANTOM-001", "Synthetic craniofacial phantom", "CT",
-                               "skin, frontal", "skin, lateral", "bone, oblique", "Frankfort frame", "Case contents",
+                               "skin, frontal", "skin, lateral", "bone, oblique", "Frankfort frame", "Case contents", "SNA", "ANB",
                                "surface-skin", "page 1 of"})
     EXPECT_NE(text.find(expected), std::string::npos) << "missing text: " << expected;
 }

@@ -1,0 +1,113 @@
+#include "softtissue/mass_spring_model.h"
+
+#include <Eigen/Dense>
+
+#include <cassert>
+
+namespace maxillo::softtissue {
+namespace {
+
+// Force on point i from its springs, and the local stiffness (the point's own Hessian block,
+// with the transverse term of compressed springs dropped so it stays positive definite).
+void local_force(const MassSpringModel& model, const std::vector<Eigen::Vector3d>& x, int i, Eigen::Vector3d& force,
+                 Eigen::Matrix3d& hessian) {
+  force.setZero();
+  hessian.setZero();
+  for (int s = model.offsets[size_t(i)]; s < model.offsets[size_t(i) + 1]; ++s) {
+    Eigen::Vector3d d = x[size_t(model.other_end[size_t(s)])] - x[size_t(i)];
+    double length = d.norm();
+    double k = model.stiffness[size_t(s)], rest = model.rest_length[size_t(s)];
+    Eigen::Vector3d direction = d / length;
+    force += k * (length - rest) * direction;
+    Eigen::Matrix3d axial = direction * direction.transpose();
+    hessian += k * axial + k * std::max(0.0, 1.0 - rest / length) * (Eigen::Matrix3d::Identity() - axial);
+  }
+}
+
+}  // namespace
+
+MassSpringModel make_van_gelder_model(const TetMesh& mesh, double young_modulus_mpa) {
+  assert(young_modulus_mpa > 0 && "make_van_gelder_model: Young's modulus must be positive");
+  MassSpringModel model;
+  model.rest_positions = mesh.nodes;
+  const NodeGraph graph = build_node_graph(mesh);
+  std::vector<double> volume_sum(graph.neighbours.size(), 0.0);
+  for (int t = 0; t < mesh.tet_count(); ++t) {
+    double volume = signed_volume(mesh, t);
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b)
+        if (a != b) volume_sum[size_t(graph.find(mesh.tets(t, a), mesh.tets(t, b)))] += volume;
+  }
+  model.offsets.assign(graph.offsets.size(), 0);
+  for (int i = 0; i < mesh.node_count(); ++i) {
+    for (int e = graph.row_begin(i); e < graph.row_end(i); ++e) {
+      int j = graph.neighbours[size_t(e)];
+      if (j == i) continue;
+      double rest = (mesh.nodes.row(j) - mesh.nodes.row(i)).norm();
+      model.other_end.push_back(j);
+      model.rest_length.push_back(rest);
+      model.stiffness.push_back(young_modulus_mpa * volume_sum[size_t(e)] / (rest * rest));
+    }
+    model.offsets[size_t(i) + 1] = int(model.other_end.size());
+  }
+  return model;
+}
+
+Eigen::MatrixX3d spring_forces(const MassSpringModel& model, const Eigen::MatrixX3d& displacement) {
+  const int n = model.node_count();
+  std::vector<Eigen::Vector3d> x(static_cast<size_t>(n));
+  for (int i = 0; i < n; ++i) x[size_t(i)] = (model.rest_positions.row(i) + displacement.row(i)).transpose();
+  Eigen::MatrixX3d forces(n, 3);
+  Eigen::Vector3d force;
+  Eigen::Matrix3d hessian;
+  for (int i = 0; i < n; ++i) {
+    local_force(model, x, i, force, hessian);
+    forces.row(i) = force.transpose();
+  }
+  return forces;
+}
+
+LocalIterationResult solve_mass_spring(const MassSpringModel& model, const BoundaryConditions& bc,
+                                       const LocalIterationOptions& options) {
+  const int n = model.node_count();
+  assert(bc.node_count() == n && "solve_mass_spring: conditions and model differ in node count");
+  LocalIterationResult result;
+  const Eigen::MatrixX3d start = initial_displacement(bc);
+  std::vector<Eigen::Vector3d> x(static_cast<size_t>(n));
+  for (int i = 0; i < n; ++i) x[size_t(i)] = (model.rest_positions.row(i) + start.row(i)).transpose();
+  std::vector<char> active(static_cast<size_t>(n)), next(size_t(n), 0);
+  for (int i = 0; i < n; ++i) active[size_t(i)] = bc.is_free(i) ? 1 : 0;
+  bool any_active = true;
+  Eigen::Vector3d force;
+  Eigen::Matrix3d hessian;
+  while (any_active && result.iterations < options.max_iterations) {
+    any_active = false;
+    double max_move = 0;
+    for (int i = 0; i < n; ++i) {
+      if (!active[size_t(i)]) continue;
+      local_force(model, x, i, force, hessian);
+      Eigen::Vector3d step = options.relaxation * hessian.ldlt().solve(force);
+      x[size_t(i)] += step;
+      ++result.point_updates;
+      double move = step.norm();
+      max_move = std::max(max_move, move);
+      if (move <= options.gradient_threshold_mm) continue;
+      next[size_t(i)] = 1;
+      for (int s = model.offsets[size_t(i)]; s < model.offsets[size_t(i) + 1]; ++s) {
+        int j = model.other_end[size_t(s)];
+        if (bc.is_free(j)) next[size_t(j)] = 1;
+      }
+      any_active = true;
+    }
+    active.swap(next);
+    std::fill(next.begin(), next.end(), 0);
+    result.last_max_move_mm = max_move;
+    ++result.iterations;
+  }
+  result.status = any_active ? IterationStatus::kIterationLimit : IterationStatus::kConverged;
+  result.displacement.resize(n, 3);
+  for (int i = 0; i < n; ++i) result.displacement.row(i) = x[size_t(i)].transpose() - model.rest_positions.row(i);
+  return result;
+}
+
+}  // namespace maxillo::softtissue

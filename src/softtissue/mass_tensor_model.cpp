@@ -1,0 +1,77 @@
+#include "softtissue/mass_tensor_model.h"
+
+#include <Eigen/Dense>
+
+#include <cassert>
+
+namespace maxillo::softtissue {
+
+MassTensorModel make_mass_tensor_model(const StiffnessBlocks& stiffness) {
+  MassTensorModel model;
+  const int n = stiffness.node_count();
+  model.offsets.assign(size_t(n) + 1, 0);
+  model.inverse_diagonal.resize(static_cast<size_t>(n));
+  for (int j = 0; j < n; ++j) {
+    for (int e = stiffness.graph.row_begin(j); e < stiffness.graph.row_end(j); ++e) {
+      int k = stiffness.graph.neighbours[size_t(e)];
+      if (k == j) {
+        model.inverse_diagonal[size_t(j)] = stiffness.blocks[size_t(e)].inverse();
+      } else {
+        model.neighbours.push_back(k);
+        model.neighbour_tensors.push_back(stiffness.blocks[size_t(e)]);
+      }
+    }
+    model.offsets[size_t(j) + 1] = int(model.neighbours.size());
+  }
+  return model;
+}
+
+LocalIterationResult solve_mass_tensor(const MassTensorModel& model, const BoundaryConditions& bc,
+                                       const LocalIterationOptions& options, const Eigen::MatrixX3d* start) {
+  const int n = model.node_count();
+  assert(bc.node_count() == n && "solve_mass_tensor: conditions and model differ in node count");
+  LocalIterationResult result;
+  result.displacement = initial_displacement(bc);
+  if (start != nullptr)
+    for (int j = 0; j < n; ++j)
+      if (bc.is_free(j)) result.displacement.row(j) = start->row(j);
+  // Row-major copy: each point's position is 3 contiguous doubles.
+  std::vector<Eigen::Vector3d> u(static_cast<size_t>(n));
+  for (int j = 0; j < n; ++j) u[size_t(j)] = result.displacement.row(j).transpose();
+  std::vector<char> active(static_cast<size_t>(n)), next(size_t(n), 0);
+  for (int j = 0; j < n; ++j) active[size_t(j)] = bc.is_free(j) ? 1 : 0;
+  const double threshold = options.gradient_threshold_mm;
+  bool any_active = true;
+  while (any_active && result.iterations < options.max_iterations) {
+    any_active = false;
+    double max_move = 0;
+    for (int j = 0; j < n; ++j) {
+      if (!active[size_t(j)]) continue;
+      Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+      for (int e = model.offsets[size_t(j)]; e < model.offsets[size_t(j) + 1]; ++e)
+        sum.noalias() += model.neighbour_tensors[size_t(e)] * u[size_t(model.neighbours[size_t(e)])];
+      Eigen::Vector3d step = options.relaxation * (-(model.inverse_diagonal[size_t(j)] * sum) - u[size_t(j)]);
+      u[size_t(j)] += step;
+      ++result.point_updates;
+      double move = step.norm();
+      max_move = std::max(max_move, move);
+      if (move <= threshold) continue;
+      // This point moved: it and its free neighbours are evaluated in the next sweep.
+      next[size_t(j)] = 1;
+      for (int e = model.offsets[size_t(j)]; e < model.offsets[size_t(j) + 1]; ++e) {
+        int k = model.neighbours[size_t(e)];
+        if (bc.is_free(k)) next[size_t(k)] = 1;
+      }
+      any_active = true;
+    }
+    active.swap(next);
+    std::fill(next.begin(), next.end(), 0);
+    result.last_max_move_mm = max_move;
+    ++result.iterations;
+  }
+  result.status = any_active ? IterationStatus::kIterationLimit : IterationStatus::kConverged;
+  for (int j = 0; j < n; ++j) result.displacement.row(j) = u[size_t(j)].transpose();
+  return result;
+}
+
+}  // namespace maxillo::softtissue

@@ -1,0 +1,62 @@
+// Black-box test of `maxillo occlude` on two blocks: a block 1 mm above a slab, pulled down and
+// sideways by springs, must come to rest on the slab.
+#include <gtest/gtest.h>
+
+#include <Eigen/Core>
+#include <fstream>
+
+#include "core/json.h"
+#include "support/run_maxillo.h"
+#include "support/temporary_folder.h"
+
+namespace {
+
+// Closed axis-aligned box as Wavefront OBJ, outward faces (same layout as test_meshes.h).
+void write_box_obj(const std::filesystem::path& path, const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) {
+  std::ofstream out(path);
+  for (int i = 0; i < 8; ++i)
+    out << "v " << ((i & 1) ? hi.x() : lo.x()) << " " << ((i & 2) ? hi.y() : lo.y()) << " "
+        << ((i & 4) ? hi.z() : lo.z()) << "\n";
+  const int faces[12][3] = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+                            {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+  for (const auto& f : faces) out << "f " << f[0] + 1 << " " << f[1] + 1 << " " << f[2] + 1 << "\n";
+}
+
+TEST(OccludeCommand, SpringsBringTheBlockToRestOnTheSlab) {
+  maxillo::TemporaryFolder folder;
+  write_box_obj(folder / "lower.obj", {-5, -5, -2}, {5, 5, 0});
+  write_box_obj(folder / "upper.obj", {-2, -2, 1}, {2, 2, 3});
+  std::ofstream(folder / "pairs.csv")
+      << "ux,uy,uz,lx,ly,lz\n-2,-2,1,-1,-1.5,-0.5\n2,-2,1,3,-1.5,-0.5\n0,2,1,1,2.5,-0.5\n";
+  const auto run =
+      maxillo::testing::run_maxillo({"occlude", (folder / "upper.obj").string(), (folder / "lower.obj").string(),
+                                     "--pairs", (folder / "pairs.csv").string(), "--out", (folder / "out").string()},
+                                    folder.path());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  std::ifstream in(folder / "out" / "occlusion.json");
+  const maxillo::Json result = maxillo::Json::parse(in);
+  EXPECT_EQ(result["status"], "converged");
+  EXPECT_NEAR(result["upper_transform"][0][3].get<double>(), 1.0, 0.01);
+  EXPECT_NEAR(result["upper_transform"][1][3].get<double>(), 0.5, 0.01);
+  EXPECT_NEAR(result["upper_transform"][2][3].get<double>(), -1.0, 0.06);
+  EXPECT_LE(result["penetration_mm"].get<double>(), result["allowed_penetration_mm"].get<double>());
+  EXPECT_EQ(result["upper"]["teeth"].size(), 1u);
+  EXPECT_EQ(result["upper"]["contact_vertices"], 4);  // the block's bottom corners
+  for (const char* file : {"occlusionogram.png", "upper_distances.csv", "lower_distances.csv"})
+    EXPECT_TRUE(std::filesystem::exists(folder / "out" / file)) << file;
+}
+
+TEST(OccludeCommand, RefusesTooFewPairsNamingTheFile) {
+  maxillo::TemporaryFolder folder;
+  write_box_obj(folder / "lower.obj", {-5, -5, -2}, {5, 5, 0});
+  write_box_obj(folder / "upper.obj", {-2, -2, 1}, {2, 2, 3});
+  std::ofstream(folder / "pairs.csv") << "1,2,3,4,5,6\n";
+  const auto run =
+      maxillo::testing::run_maxillo({"occlude", (folder / "upper.obj").string(), (folder / "lower.obj").string(),
+                                     "--pairs", (folder / "pairs.csv").string(), "--out", (folder / "out").string()},
+                                    folder.path());
+  EXPECT_NE(run.exit_code, 0);
+  EXPECT_NE(run.err.find("pairs.csv"), std::string::npos) << run.err;
+}
+
+}  // namespace
