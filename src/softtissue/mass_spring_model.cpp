@@ -75,36 +75,16 @@ LocalIterationResult solve_mass_spring(const MassSpringModel& model, const Bound
   const Eigen::MatrixX3d start = initial_displacement(bc);
   std::vector<Eigen::Vector3d> x(static_cast<size_t>(n));
   for (int i = 0; i < n; ++i) x[size_t(i)] = (model.rest_positions.row(i) + start.row(i)).transpose();
-  std::vector<char> active(static_cast<size_t>(n)), next(size_t(n), 0);
-  for (int i = 0; i < n; ++i) active[size_t(i)] = bc.is_free(i) ? 1 : 0;
-  bool any_active = true;
   Eigen::Vector3d force;
   Eigen::Matrix3d hessian;
-  while (any_active && result.iterations < options.max_iterations) {
-    any_active = false;
-    double max_move = 0;
-    for (int i = 0; i < n; ++i) {
-      if (!active[size_t(i)]) continue;
-      local_force(model, x, i, force, hessian);
-      Eigen::Vector3d step = options.relaxation * hessian.ldlt().solve(force);
-      x[size_t(i)] += step;
-      ++result.point_updates;
-      double move = step.norm();
-      max_move = std::max(max_move, move);
-      if (move <= options.gradient_threshold_mm) continue;
-      next[size_t(i)] = 1;
-      for (int s = model.offsets[size_t(i)]; s < model.offsets[size_t(i) + 1]; ++s) {
-        int j = model.other_end[size_t(s)];
-        if (bc.is_free(j)) next[size_t(j)] = 1;
-      }
-      any_active = true;
-    }
-    active.swap(next);
-    std::fill(next.begin(), next.end(), 0);
-    result.last_max_move_mm = max_move;
-    ++result.iterations;
-  }
-  result.status = any_active ? IterationStatus::kIterationLimit : IterationStatus::kConverged;
+  // A local Newton step of point i towards zero net spring force, its neighbours held.
+  auto update_point = [&](int i) {
+    local_force(model, x, i, force, hessian);
+    Eigen::Vector3d step = options.relaxation * hessian.ldlt().solve(force);
+    x[size_t(i)] += step;
+    return step;
+  };
+  sweep_until_rest(model.offsets, model.other_end, bc, options, update_point, result);
   result.displacement.resize(n, 3);
   for (int i = 0; i < n; ++i) result.displacement.row(i) = x[size_t(i)].transpose() - model.rest_positions.row(i);
   return result;

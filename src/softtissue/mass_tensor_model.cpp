@@ -38,38 +38,16 @@ LocalIterationResult solve_mass_tensor(const MassTensorModel& model, const Bound
   // Row-major copy: each point's position is 3 contiguous doubles.
   std::vector<Eigen::Vector3d> u(static_cast<size_t>(n));
   for (int j = 0; j < n; ++j) u[size_t(j)] = result.displacement.row(j).transpose();
-  std::vector<char> active(static_cast<size_t>(n)), next(size_t(n), 0);
-  for (int j = 0; j < n; ++j) active[size_t(j)] = bc.is_free(j) ? 1 : 0;
-  const double threshold = options.gradient_threshold_mm;
-  bool any_active = true;
-  while (any_active && result.iterations < options.max_iterations) {
-    any_active = false;
-    double max_move = 0;
-    for (int j = 0; j < n; ++j) {
-      if (!active[size_t(j)]) continue;
-      Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-      for (int e = model.offsets[size_t(j)]; e < model.offsets[size_t(j) + 1]; ++e)
-        sum.noalias() += model.neighbour_tensors[size_t(e)] * u[size_t(model.neighbours[size_t(e)])];
-      Eigen::Vector3d step = options.relaxation * (-(model.inverse_diagonal[size_t(j)] * sum) - u[size_t(j)]);
-      u[size_t(j)] += step;
-      ++result.point_updates;
-      double move = step.norm();
-      max_move = std::max(max_move, move);
-      if (move <= threshold) continue;
-      // This point moved: it and its free neighbours are evaluated in the next sweep.
-      next[size_t(j)] = 1;
-      for (int e = model.offsets[size_t(j)]; e < model.offsets[size_t(j) + 1]; ++e) {
-        int k = model.neighbours[size_t(e)];
-        if (bc.is_free(k)) next[size_t(k)] = 1;
-      }
-      any_active = true;
-    }
-    active.swap(next);
-    std::fill(next.begin(), next.end(), 0);
-    result.last_max_move_mm = max_move;
-    ++result.iterations;
-  }
-  result.status = any_active ? IterationStatus::kIterationLimit : IterationStatus::kConverged;
+  // Eq. 12: point j takes the position where its own force vanishes given its neighbours'.
+  auto update_point = [&](int j) {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (int e = model.offsets[size_t(j)]; e < model.offsets[size_t(j) + 1]; ++e)
+      sum.noalias() += model.neighbour_tensors[size_t(e)] * u[size_t(model.neighbours[size_t(e)])];
+    Eigen::Vector3d step = options.relaxation * (-(model.inverse_diagonal[size_t(j)] * sum) - u[size_t(j)]);
+    u[size_t(j)] += step;
+    return step;
+  };
+  sweep_until_rest(model.offsets, model.neighbours, bc, options, update_point, result);
   for (int j = 0; j < n; ++j) result.displacement.row(j) = u[size_t(j)].transpose();
   return result;
 }
