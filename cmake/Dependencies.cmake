@@ -13,7 +13,8 @@ find_package(VTK 9.1 REQUIRED COMPONENTS
   CommonCore CommonDataModel CommonTransforms CommonExecutionModel
   FiltersCore FiltersGeneral FiltersModeling FiltersSources FiltersGeometry
   ImagingCore IOGeometry IOPLY IOXML IOImage
-  RenderingCore RenderingOpenGL2 RenderingAnnotation RenderingFreeType InteractionStyle)
+  RenderingCore RenderingOpenGL2 RenderingAnnotation RenderingFreeType InteractionStyle
+  ChartsCore RenderingContext2D RenderingContextOpenGL2)  # charts (render/chart_*.cpp)
 
 find_library(HPDF_LIBRARY NAMES hpdf REQUIRED)
 find_path(HPDF_INCLUDE_DIR hpdf.h REQUIRED)

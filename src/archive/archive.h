@@ -115,9 +115,15 @@ class Archive {
 
   // --- cases ---
   std::optional<CaseRecord> case_of_patient(int64_t patient, std::string_view label = "default") const;
-  // A case id (bare or typed "case:N"), or a Patient ID (its "default" case). Throws Error(NotFound).
+  // A case id (bare or typed "case:N"), or a Patient ID (its "default" case, else its only case).
+  // Throws Error(NotFound).
   int64_t resolve_case(std::string_view text) const;
   CaseContents case_contents(int64_t case_id) const;
+  // The case `label` of the patient with this Patient ID, the patient and the case created when
+  // missing (idempotent): for cases without images, e.g. a follow-up cohort's landmark sets. A
+  // patient made here has no name, birth date or sex (DICOM files arriving later for that Patient
+  // ID therefore raise identity flags to confirm). Error(kBadValue) for an empty ID or label.
+  int64_t ensure_case(std::string_view patient_id, std::string_view label);
   // Changes the role of a series in a case ("preop", "postop", "follow-up", "report", "unassigned").
   void set_series_role(int64_t case_id, int64_t series, std::string_view role);
 

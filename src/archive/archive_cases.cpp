@@ -28,8 +28,14 @@ int64_t Archive::resolve_case(std::string_view text) const {
   }
   sqlite::Statement patient(state_->db, sql::kPatientIdOf);
   patient.bind(1, text);
-  if (patient.step())
+  if (patient.step()) {
     if (auto found = case_of_patient(patient.integer(0))) return found->id;
+    // No default case (e.g. a cohort's image-less case): the patient's only case, if it has one.
+    std::vector<int64_t> cases;
+    for (const auto& c : this->cases())
+      if (c.patient == patient.integer(0)) cases.push_back(c.id);
+    if (cases.size() == 1) return cases.front();
+  }
   throw Error(ErrorCode::kNotFound, std::string(text), "no case with this id and no patient with this Patient ID");
 }
 

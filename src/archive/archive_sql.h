@@ -17,6 +17,9 @@ inline constexpr const char* kPatientByPatientId =
 // ?1 patient ?2 created_at
 inline constexpr const char* kInsertDefaultCase =
     "INSERT INTO cases(patient, label, created_at) VALUES (?1, 'default', ?2) ON CONFLICT(patient, label) DO NOTHING";
+// ?1 patient ?2 label ?3 created_at
+inline constexpr const char* kInsertLabelledCase =
+    "INSERT INTO cases(patient, label, created_at) VALUES (?1, ?2, ?3) ON CONFLICT(patient, label) DO NOTHING";
 inline constexpr const char* kDefaultCaseOfPatient = "SELECT id FROM cases WHERE patient = ?1 AND label = 'default'";
 // ?1 patient ?2 attribute ?3 archived ?4 arrived ?5 source_path ?6 sop_instance_uid ?7 flagged_at
 inline constexpr const char* kInsertIdentityFlag =

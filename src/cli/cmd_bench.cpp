@@ -108,6 +108,7 @@ void run_bench(const BenchArguments& args, CommandContext& ctx) {
 
 void attach_bench_cube(CLI::App& bench, CommandContext& ctx);  // cmd_bench_cube.cpp
 void attach_bench_occlusion(CLI::App& bench, CommandContext& ctx);  // cmd_bench_occlusion.cpp
+void attach_bench_face(CLI::App& bench, CommandContext& ctx);       // cmd_bench_face.cpp
 
 void attach_bench(CLI::App& app, CommandContext& ctx) {
   app.require_subcommand(1);
@@ -119,6 +120,7 @@ void attach_bench(CLI::App& app, CommandContext& ctx) {
   import->callback([args, &ctx] { run_bench(*args, ctx); });
   attach_bench_cube(app, ctx);
   attach_bench_occlusion(app, ctx);
+  attach_bench_face(app, ctx);
 }
 
 }  // namespace maxillo::cli

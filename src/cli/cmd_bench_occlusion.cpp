@@ -19,6 +19,7 @@
 #include "mesh/mesh_io.h"
 #include "occlusion/arch_repair.h"
 #include "occlusion/occlusion_benchmark.h"
+#include "occlusion/occlusion_comparison.h"
 
 namespace maxillo::cli {
 namespace {
@@ -73,8 +74,8 @@ void run_occlusion_bench(const OcclusionBenchArguments& args, CommandContext& ct
     const AlignmentResult aligned = align_guided(engine, springs);
     PoseResult r;
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
-    r.p95_mm = percentile(vertex_displacements(upper, region, aligned.pose, natural), 95);
-    r.start_p95_mm = percentile(vertex_displacements(upper, region, start, natural), 95);
+    r.p95_mm = compare_poses(upper, region, natural, aligned.pose).statistics.p95_mm;
+    r.start_p95_mm = compare_poses(upper, region, natural, start).statistics.p95_mm;
     r.penetration_mm = aligned.penetration_mm;
     r.allowed_mm = engine.allowed_penetration_mm();
     r.iterations = aligned.iterations;

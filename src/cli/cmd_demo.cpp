@@ -7,7 +7,13 @@
 #include "core/json.h"
 #include "core/log.h"
 #include "pipeline/case_landmarks.h"
+#include "pipeline/ceph_sample_cohort.h"
+#include "pipeline/cohort_archive.h"
+#include "pipeline/cohort_report.h"
+#include "pipeline/case_simulation.h"
 #include "pipeline/consultation_report.h"
+#include "pipeline/phantom_occlusion.h"
+#include "pipeline/plan_case.h"
 #include "pipeline/sample_case.h"
 
 namespace maxillo::cli {
@@ -55,13 +61,46 @@ int run_demo(const DemoOptions& options, const GlobalOptions& global) {
   clock.mark("import");
 
   auto case_id = archive.resolve_case(pipeline::kPhantomPatientId);
+  // Dated follow-up (the sample cohort's first patient) for the follow-up table and Wits chart;
+  // attached first so the phantom's own set stays the newest (it frames the views).
+  pipeline::CohortImportReport follow_up;
+  pipeline::attach_cohort_time_points(archive, case_id,
+                                      pipeline::sample_patient_follow_up(pipeline::sample_cohort_patients()[0], 2001), {},
+                                      "sample cohort P01 (phantoms)", follow_up);
   pipeline::attach_landmarks(archive, case_id, sample.landmarks, "phantom (analytic)");
-  auto report = pipeline::write_consultation_report(archive, case_id, options.out / "report.pdf");
+  pipeline::ConsultationOptions report_options;
+  report_options.occlusion = pipeline::phantom_occlusion_section(archive, case_id, options.skeletal_class,
+                                                                 sample.landmarks, options.out / "occlusion");
+  clock.mark("occlusion");
+  // The issue #4 must-show plan: two trans-sinusal distractors, 10 mm advancement, 6 mm widening.
+  pipeline::store_plan(archive, case_id,
+                       planning::distraction_plan({.advancement_mm = 10, .widening_mm = 6},
+                                                  "TS-MD distraction: 10 mm advancement, 6 mm widening"));
+  auto plan = pipeline::apply_case_plan(archive, case_id, options.out / "plan");
+  clock.mark("plan");
+  // The face for the planned move (issue #3): the plan's maxillary move, mass tensor model.
+  pipeline::SimulationRequest simulation;
+  simulation.plan = plan.plan.plan;
+  simulation.out = options.out / "soft-tissue";
+  simulation.uncertainty = true;
+  auto predicted = pipeline::simulate_case(archive, case_id, simulation);
+  report_options.soft_tissue = predicted.section;
+  clock.mark("soft tissue");
+  auto report = pipeline::write_consultation_report(archive, case_id, options.out / "report.pdf", report_options);
   clock.mark("volume, surfaces, views, report");
+  auto cohort = pipeline::analyse_cohort(pipeline::sample_cohort(), {}, ceph::Sex::kUnknown, "sample cohort");
+  auto cohort_pdf = options.out / "cohort-followup.pdf";
+  int cohort_pages = pipeline::write_cohort_report(
+      cohort, pipeline::consecutive_pairs(pipeline::cohort_time_point_labels(cohort)), "sample cohort (synthetic)", cohort_pdf);
+  clock.mark("cohort follow-up");
 
   Json summary{{"report", report.pdf.string()}, {"pages", report.pages}, {"archive", archive_dir.string()},
                {"case", case_id}, {"imported", imported.imported}, {"already_archived", imported.already_archived},
-               {"surfaces_reused", report.surfaces_reused}, {"timing", clock.to_json()}};
+               {"surfaces_reused", report.surfaces_reused}, {"cohort_report", cohort_pdf.string()},
+               {"cohort_pages", cohort_pages}, {"plan_result", plan.result_json.string()},
+               {"plan_feasible", plan.result.feasible},
+               {"soft_tissue_max_displacement_mm", predicted.views.max_displacement_mm},
+               {"timing", clock.to_json()}};
   if (global.json) std::cout << summary.dump(2) << "\n";
   else std::cout << "demo report: " << report.pdf.string() << " (" << report.pages << " pages, "
                  << summary["timing"]["total_seconds"].get<double>() << " s)\n";
@@ -72,7 +111,8 @@ int run_demo(const DemoOptions& options, const GlobalOptions& global) {
 
 void attach_demo(CLI::App& app, CommandContext& ctx) {
   auto options = std::make_shared<DemoOptions>();
-  app.add_option("--out", options->out, "output folder (created): sample/, archive/, report.pdf")->capture_default_str();
+  app.add_option("--out", options->out, "output folder (created): sample/, archive/, report.pdf, cohort-followup.pdf")
+      ->capture_default_str();
   std::map<std::string, SkeletalClass> classes{{"I", SkeletalClass::I}, {"II", SkeletalClass::II}, {"III", SkeletalClass::III}};
   app.add_option("--class", options->skeletal_class, "skeletal class of the phantom: I, II or III")
       ->transform(CLI::CheckedTransformer(classes, CLI::ignore_case));

@@ -1,4 +1,5 @@
-// maxillo followup CASE | --cohort FILE: cephalometric follow-up over time points. For a case,
+// maxillo followup CASE | --cohort FILE | --cohort-archive NAME | --import-cohort FILE:
+// cephalometric follow-up over time points. For a case,
 // the measurements per archived time point; for a cohort CSV (ceph/follow_up.h), the changes
 // between time points as mean ± SD with n (the source's Tables II and III) and the Wits appraisal
 // per patient and time point (the data of the source's Fig. 10).
@@ -10,11 +11,9 @@
 #include "cli/ceph_options.h"
 #include "cli/command.h"
 #include "core/error.h"
-#include "core/version.h"
 #include "pipeline/case_landmarks.h"
-#include "pipeline/cephalometry_section.h"
-#include "report/write_report.h"
-#include "report/report_template.h"
+#include "pipeline/cohort_archive.h"
+#include "pipeline/cohort_report.h"
 
 namespace maxillo::cli {
 namespace {
@@ -22,6 +21,9 @@ namespace {
 struct FollowupOptions {
   std::string case_text;
   std::filesystem::path cohort;
+  std::filesystem::path import_cohort;  // store this cohort CSV's landmark sets in the archive
+  std::string cohort_archive;           // the archived cohort of this name
+  std::string cohort_name;              // --import-cohort: default the CSV's file stem
   std::string from, to;  // cohort change between these time points; empty = every consecutive pair
   bool csv = false;
   std::filesystem::path pdf;  // cohort: also write the follow-up tables as a PDF report
@@ -31,16 +33,6 @@ struct FollowupOptions {
 // Measurements of the source's Tables II/III, then the skeletal relationship.
 const std::vector<std::string> kChangeIds = {"PNS_X", "Si_X", "ANS_X", "PNS_Y", "Si_Y", "ANS_Y",
                                              "alpha", "SNA",  "SNB",   "ANB",   "Wits"};
-
-ceph::CaseFollowUp case_follow_up(const Archive& archive, int64_t case_id, ceph::Sex sex) {
-  std::vector<ceph::TimePointAnalysis> analyses;
-  for (const auto& stored : pipeline::landmark_time_points(archive, case_id)) {
-    auto sagittal = to_sagittal(stored.landmarks, stored.frame.geometry, stored.frame.axes,
-                                "case " + std::to_string(case_id) + " time point " + stored.time_point.label);
-    analyses.push_back({stored.time_point.label, stored.time_point.date, ceph::analyse(sagittal, sex)});
-  }
-  return ceph::make_follow_up("case " + std::to_string(case_id), std::move(analyses));
-}
 
 void print_case_table(const ceph::CaseFollowUp& c) {
   std::printf("%s\n%-7s", c.name.c_str(), "");
@@ -66,31 +58,18 @@ void print_case_csv(const ceph::CaseFollowUp& c, bool header) {
                   m.unit.c_str(), m.value ? fixed(*m.value, 3).c_str() : "");
 }
 
-// Time point labels in order of first appearance over the cases (each case ordered by date).
-std::vector<std::string> ordered_labels(const std::vector<ceph::CaseFollowUp>& cohort) {
-  std::vector<std::string> labels;
-  for (const auto& c : cohort)
-    for (const auto& tp : c.time_points)
-      if (std::find(labels.begin(), labels.end(), tp.label) == labels.end()) labels.push_back(tp.label);
-  return labels;
+std::vector<ceph::CaseFollowUp> cohort_from_csv(const FollowupOptions& options) {
+  return pipeline::analyse_cohort(ceph::read_cohort_csv(options.cohort),
+                                  {options.geometry.geometry, options.geometry.axes()}, options.geometry.sex,
+                                  options.cohort.string());
 }
 
-int run_cohort(const FollowupOptions& options, const GlobalOptions& global) {
-  std::vector<ceph::CaseFollowUp> cohort;
-  for (const auto& c : ceph::read_cohort_csv(options.cohort)) {
-    std::vector<ceph::TimePointAnalysis> analyses;
-    for (const auto& tp : c.time_points) {
-      auto sagittal = to_sagittal(tp.landmarks, options.geometry.geometry, options.geometry.axes(),
-                                  options.cohort.string() + " " + c.name + "/" + tp.label);
-      analyses.push_back({tp.label, tp.date, ceph::analyse(sagittal, options.geometry.sex)});
-    }
-    cohort.push_back(ceph::make_follow_up(c.name, std::move(analyses)));
-  }
-  auto labels = ordered_labels(cohort);
+int run_cohort(const std::vector<ceph::CaseFollowUp>& cohort, const std::string& cohort_label,
+               const FollowupOptions& options, const GlobalOptions& global) {
+  auto labels = pipeline::cohort_time_point_labels(cohort);
   std::vector<std::pair<std::string, std::string>> pairs;
   if (!options.from.empty()) pairs.push_back({options.from, options.to});
-  else
-    for (size_t i = 1; i < labels.size(); ++i) pairs.push_back({labels[i - 1], labels[i]});
+  else pairs = pipeline::consecutive_pairs(labels);
 
   Json json_changes = Json::array();
   if (options.csv) std::printf("from,to,measurement,unit,n,mean,sd\n");
@@ -110,11 +89,7 @@ int run_cohort(const FollowupOptions& options, const GlobalOptions& global) {
     }
   }
   if (!options.pdf.empty()) {
-    report::ReportModel model;
-    model.case_label = "cohort " + options.cohort.filename().string();
-    model.program_version = kVersion;
-    model.sections.push_back(pipeline::cohort_follow_up_section(cohort, pairs));
-    int pages = report::write_report(model, report::load_report_template(), options.pdf);
+    int pages = pipeline::write_cohort_report(cohort, pairs, cohort_label, options.pdf);
     if (!global.json && !options.csv) std::printf("report: %s (%d pages)\n", options.pdf.string().c_str(), pages);
   }
   Json wits = Json::array();
@@ -142,12 +117,36 @@ int run_cohort(const FollowupOptions& options, const GlobalOptions& global) {
   return 0;
 }
 
+int run_import_cohort(const FollowupOptions& options, const GlobalOptions& global) {
+  const std::string name = options.cohort_name.empty() ? options.import_cohort.stem().string() : options.cohort_name;
+  auto archive = Archive::open(resolve_archive_dir(global));
+  const auto cohort = ceph::read_cohort_csv(options.import_cohort);
+  pipeline::LandmarkFrame frame{options.geometry.geometry, options.geometry.axes()};
+  const auto imported = pipeline::import_cohort(archive, cohort, name, frame, options.import_cohort.filename().string());
+  if (global.json)
+    std::cout << Json{{"cohort", name}, {"cases", imported.cases}, {"sets_stored", imported.sets_stored},
+                      {"sets_unchanged", imported.sets_unchanged}}.dump(2)
+              << "\n";
+  else
+    std::printf("cohort %s: %d cases, %d landmark sets stored, %d already archived\n", name.c_str(), imported.cases,
+                imported.sets_stored, imported.sets_unchanged);
+  return 0;
+}
+
 int run_followup(const FollowupOptions& options, const GlobalOptions& global) {
-  if (!options.cohort.empty()) return run_cohort(options, global);
-  if (options.case_text.empty()) throw Error(ErrorCode::kUsage, "followup", "give a CASE or --cohort FILE");
+  if (!options.import_cohort.empty()) return run_import_cohort(options, global);
+  if (!options.cohort.empty())
+    return run_cohort(cohort_from_csv(options), "cohort " + options.cohort.filename().string(), options, global);
+  if (!options.cohort_archive.empty()) {
+    auto archive = Archive::open(resolve_archive_dir(global));
+    return run_cohort(pipeline::archived_cohort_follow_up(archive, options.cohort_archive, options.geometry.sex),
+                      "cohort " + options.cohort_archive, options, global);
+  }
+  if (options.case_text.empty())
+    throw Error(ErrorCode::kUsage, "followup", "give a CASE, --cohort FILE, --cohort-archive NAME or --import-cohort FILE");
   auto archive = Archive::open(resolve_archive_dir(global));
   auto case_id = archive.resolve_case(options.case_text);
-  auto follow_up = case_follow_up(archive, case_id, options.geometry.sex);
+  auto follow_up = pipeline::archived_case_follow_up(archive, case_id, "case " + std::to_string(case_id), options.geometry.sex);
   if (follow_up.time_points.empty())
     throw Error(ErrorCode::kNotFound, "case " + std::to_string(case_id),
                 "no landmark set with a time point (maxillo ceph add CASE --time-point LABEL ...)");
@@ -173,13 +172,23 @@ int run_followup(const FollowupOptions& options, const GlobalOptions& global) {
 void attach_followup(CLI::App& app, CommandContext& ctx) {
   auto options = std::make_shared<FollowupOptions>();
   app.add_option("CASE", options->case_text, "case id, or a Patient ID (its default case)");
-  app.add_option("--cohort", options->cohort, "cohort CSV: case,time_point,date,label,x,y,z")->check(CLI::ExistingFile);
+  auto* cohort = app.add_option("--cohort", options->cohort, "cohort CSV: case,time_point,date,label,x,y,z")
+                     ->check(CLI::ExistingFile);
+  auto* cohort_archive = app.add_option("--cohort-archive", options->cohort_archive,
+                                        "the cohort of this name stored with --import-cohort");
+  auto* import = app.add_option("--import-cohort", options->import_cohort,
+                                "store a cohort CSV's landmark sets in the archive (idempotent)")
+                     ->check(CLI::ExistingFile);
+  app.add_option("--cohort-name", options->cohort_name, "--import-cohort: the cohort's name (default: the file stem)")
+      ->needs(import);
+  cohort->excludes(cohort_archive)->excludes(import);
+  cohort_archive->excludes(import);
   auto* from = app.add_option("--from", options->from, "cohort change from this time point (default: consecutive pairs)");
   auto* to = app.add_option("--to", options->to, "cohort change to this time point");
   from->needs(to);
   to->needs(from);
   app.add_flag("--csv", options->csv, "CSV output");
-  app.add_option("--pdf", options->pdf, "cohort: also write the change and Wits tables as a PDF report");
+  app.add_option("--pdf", options->pdf, "cohort: also write the change and Wits tables and the Wits chart as a PDF");
   add_geometry_options(app, options->geometry);
   app.callback([options, &ctx] { ctx.exit_code = run_followup(*options, ctx.global); });
 }

@@ -20,6 +20,8 @@ void attach_sample(CLI::App&, CommandContext&);
 void attach_occlude(CLI::App&, CommandContext&);
 void attach_ceph(CLI::App&, CommandContext&);
 void attach_followup(CLI::App&, CommandContext&);
+void attach_plan(CLI::App&, CommandContext&);
+void attach_simulate(CLI::App&, CommandContext&);
 
 std::span<const CommandSpec> command_table() {
   static const std::array kCommands = {
@@ -36,6 +38,8 @@ std::span<const CommandSpec> command_table() {
       CommandSpec{"ceph", "Cephalometry", "cephalometric measurements, time points, ISBI check", attach_ceph},
       CommandSpec{"followup", "Cephalometry", "follow-up tables of a case or a cohort CSV", attach_followup},
       CommandSpec{"sample", "General", "write the synthetic phantom: DICOM CT series and landmarks", attach_sample},
+      CommandSpec{"plan", "Planning", "surgical plan of a case: create, show, apply (distraction vectors, checks, schedule)", attach_plan},
+      CommandSpec{"simulate", "Planning", "soft-tissue prediction: the face after a plan's bone moves (mtm, fem, msm)", attach_simulate},
       CommandSpec{"occlude", "Planning", "virtual occlusion: guided alignment of the dental arches, occlusionogram", attach_occlude},
       CommandSpec{"demo", "General", "the whole pipeline on the synthetic phantom, ending in a PDF report", attach_demo},
   };

@@ -3,7 +3,9 @@
 
 #include <vtkOBJReader.h>
 #include <vtkOBJWriter.h>
+#include <vtkDoubleArray.h>
 #include <vtkLogger.h>
+#include <vtkPointData.h>
 #include <vtkOutputWindow.h>
 #include <vtkPLYReader.h>
 #include <vtkPLYWriter.h>
@@ -110,9 +112,22 @@ MeshFormat mesh_format_for(const std::filesystem::path& path) {
               "unknown mesh extension '" + extension + "' (known: .stl, .ply, .obj, .vtp)");
 }
 
-void write_mesh(const TriangleMesh& mesh, const std::filesystem::path& path) {
+void write_mesh(const TriangleMesh& mesh, const std::filesystem::path& path) { write_mesh(mesh, path, {}); }
+
+void write_mesh(const TriangleMesh& mesh, const std::filesystem::path& path, const std::vector<PointArray>& arrays) {
   const MeshFormat format = mesh_format_for(path);
   vtkSmartPointer<vtkPolyData> polydata = vtk_bridge::to_polydata(mesh);
+  for (const auto& array : arrays) {
+    if (array.values.rows() != mesh.vertex_count())
+      throw Error(ErrorCode::kBadValue, path.string(), "point array '" + array.name + "' has the wrong length");
+    vtkNew<vtkDoubleArray> data;
+    data->SetName(array.name.c_str());
+    data->SetNumberOfComponents(int(array.values.cols()));
+    data->SetNumberOfTuples(array.values.rows());
+    for (Eigen::Index v = 0; v < array.values.rows(); ++v)
+      for (Eigen::Index c = 0; c < array.values.cols(); ++c) data->SetComponent(v, int(c), array.values(v, c));
+    polydata->GetPointData()->AddArray(data);
+  }
   // The temporary keeps the extension: vtkPLYWriter appends ".ply" to names without it.
   std::filesystem::path temporary = temporary_sibling(path);
   temporary += path.extension();

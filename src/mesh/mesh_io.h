@@ -7,6 +7,8 @@
 // Coordinates are written as they are (patient LPS mm for maxillo surfaces); no unit or frame
 // is stored in STL/PLY/OBJ, so readers must know the convention.
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "core/triangle_mesh.h"
 
@@ -19,6 +21,14 @@ MeshFormat mesh_format_for(const std::filesystem::path& path);
 
 // Writes atomically (temporary file + rename). Throws Error(kWriteFailed, path, reason).
 void write_mesh(const TriangleMesh& mesh, const std::filesystem::path& path);
+
+// A per-vertex array (one row per vertex, 1 or 3 columns), e.g. "displacement" in mm.
+struct PointArray {
+  std::string name;
+  Eigen::MatrixXd values;
+};
+// As above, with point arrays; only .vtp stores them (the other formats have no place for them).
+void write_mesh(const TriangleMesh& mesh, const std::filesystem::path& path, const std::vector<PointArray>& arrays);
 
 // Throws Error(kFileNotFound | kBadValue, path, reason); polygons are triangulated.
 TriangleMesh read_mesh(const std::filesystem::path& path);

@@ -17,6 +17,8 @@ using Matrix6d = Eigen::Matrix<double, 6, 6>;
 constexpr double kTrustRegionMm = 0.5;     // largest vertex displacement per iteration
 constexpr double kStallMm = 1e-4;          // a step this small ends the iteration
 constexpr double kConstraintWeight = 1e4;  // penalty weight of an active contact, relative to one spring
+constexpr double kSettledSpringMm = 0.15;  // springs this short need no tapping (contact pairs are up to 0.1 mm apart)
+constexpr double kTapLiftsMm[] = {0.25, 0.5, 1.0};  // lifts tried, in order, when a cusp holds the arch
 
 Matrix3d skew(const Vector3d& v) {
   Matrix3d m;
@@ -122,14 +124,13 @@ Eigen::Isometry3d best_fit_transform(const std::vector<SpringPair>& pairs) {
   return t;
 }
 
-AlignmentResult align_guided(MotionEngine& engine, const std::vector<SpringPair>& pairs, Approach approach) {
-  assert(pairs.size() >= 3 && "guided alignment needs at least three point pairs");
-  AlignmentResult result;
-  if (approach == Approach::SeparateAlignClose) result.lift_mm = separate_and_align(engine, pairs);
-  result.status = AlignmentStatus::IterationLimit;
+namespace {
+
+// Gauss-Newton iterations from the engine's pose until the step stalls. Returns the iterations
+// used and whether it converged (false: the iteration budget ran out).
+std::pair<int, bool> settle(MotionEngine& engine, const std::vector<SpringPair>& pairs, int max_iterations) {
   const double tolerance = engine.options().penetration_tolerance_mm;
-  for (int iteration = 0; iteration < engine.options().max_iterations; ++iteration) {
-    result.iterations = iteration + 1;
+  for (int iteration = 0; iteration < max_iterations; ++iteration) {
     const Eigen::Isometry3d pose = engine.pose();
     Vector3d centre = Vector3d::Zero();
     for (const SpringPair& p : pairs) centre += pose * p.upper;
@@ -154,11 +155,49 @@ AlignmentResult align_guided(MotionEngine& engine, const std::vector<SpringPair>
       }
       if (accepted || stalled) break;
     }
-    if (!accepted || stalled) {
-      result.status = AlignmentStatus::Converged;
-      break;
-    }
+    if (!accepted || stalled) return {iteration + 1, true};
   }
+  return {max_iterations, false};
+}
+
+double longest_spring(const Eigen::Isometry3d& pose, const std::vector<SpringPair>& pairs) {
+  double longest = 0;
+  for (const SpringPair& p : pairs) longest = std::max(longest, (pose * p.upper - p.lower).norm());
+  return longest;
+}
+
+// A cusp can catch the arch on a slope short of the springs' rest position (a local minimum,
+// as with plaster casts). Like a user tapping the cast, lift it slightly along the line between
+// the arches and let the springs close it again; keep the result only when the springs are
+// shorter. Deterministic.
+int tap_and_resettle(MotionEngine& engine, const std::vector<SpringPair>& pairs, int iteration_budget) {
+  int used = 0;
+  for (double lift : kTapLiftsMm) {
+    if (longest_spring(engine.pose(), pairs) <= kSettledSpringMm || used >= iteration_budget) break;
+    const Eigen::Isometry3d before = engine.pose();
+    const double energy = spring_energy(before, pairs);
+    const Vector3d upper_centre = before * Vector3d(engine.upper().mesh().vertices.colwise().mean().transpose());
+    const Vector3d lower_centre = engine.lower().mesh().vertices.colwise().mean().transpose();
+    Eigen::Isometry3d raise = Eigen::Isometry3d::Identity();
+    raise.translate(lift * (upper_centre - lower_centre).normalized());
+    if (engine.move(raise).outcome != StepOutcome::Moved) continue;
+    used += settle(engine, pairs, iteration_budget - used).first;
+    if (spring_energy(engine.pose(), pairs) >= energy) engine.set_pose(before);
+  }
+  return used;
+}
+
+}  // namespace
+
+AlignmentResult align_guided(MotionEngine& engine, const std::vector<SpringPair>& pairs, Approach approach) {
+  assert(pairs.size() >= 3 && "guided alignment needs at least three point pairs");
+  AlignmentResult result;
+  if (approach == Approach::SeparateAlignClose) result.lift_mm = separate_and_align(engine, pairs);
+  const int budget = engine.options().max_iterations;
+  const auto [iterations, converged] = settle(engine, pairs, budget);
+  result.iterations = iterations;
+  result.status = converged ? AlignmentStatus::Converged : AlignmentStatus::IterationLimit;
+  if (converged) result.iterations += tap_and_resettle(engine, pairs, budget - iterations);
   result.pose = engine.pose();
   for (const SpringPair& p : pairs) result.residual_spring_mm.push_back((result.pose * p.upper - p.lower).norm());
   result.penetration_mm = engine.penetration_at(result.pose);

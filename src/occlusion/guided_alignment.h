@@ -4,7 +4,9 @@
 // Gauss-Newton step on the 6-dof pose (spring energy, with the contacts within the band
 // linearised as constraints "gap >= -allowed penetration" enforced by an active-set penalty),
 // limited to a trust region, then halves the step until the engine accepts the pose (never an
-// interpenetrating one). Stops when the step stalls. Deterministic.
+// interpenetrating one). Stops when the step stalls; if a spring is then still longer than
+// 0.15 mm (a cusp holds the arch on a slope), the arch is lifted 0.25, 0.5 or 1 mm and closed
+// again, keeping only a result with shorter springs. Deterministic.
 #include <Eigen/Geometry>
 #include <vector>
 

@@ -22,6 +22,9 @@ struct SamplePatient {
 std::vector<SamplePatient> sample_cohort_patients();
 
 std::vector<ceph::CohortCase> sample_cohort();
+// One patient's visits (pre, post, 6M, 12M, 24M), dated from January of `first_year`, as in the
+// cohort (patient i of sample_cohort() starts in 2001 + i).
+ceph::CohortCase sample_patient_follow_up(const SamplePatient& patient, int first_year);
 // The cohort as CSV text (header case,time_point,date,label,x,y,z).
 std::string format_cohort_csv(const std::vector<ceph::CohortCase>& cohort);
 

@@ -1,21 +1,23 @@
 #include "pipeline/cephalometry_section.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 
+#include "ceph/follow_up_months.h"
 #include "pipeline/case_landmarks.h"
+#include "pipeline/cohort_archive.h"
+#include "pipeline/wits_chart.h"
+
+#include "report/number_text.h"
 
 namespace maxillo::pipeline {
 namespace {
 
 using report::Align;
 
-std::string fixed(double value, int decimals) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, std::abs(value) < 0.5 * std::pow(10, -decimals) ? 0.0 : value);
-  return buffer;
-}
+using report::fixed;
 
 std::string with_unit(double value, const std::string& unit) {
   return fixed(value, 1) + (unit == "deg" ? "\u00b0" : " " + unit);
@@ -91,10 +93,56 @@ report::Table wits_table(const std::vector<ceph::CaseFollowUp>& cohort) {
   return table;
 }
 
+report::ImageGrid chart_block(const std::filesystem::path& png, const std::string& caption) {
+  return {{{png, caption}}, 1};
+}
+
+bool is_six_months_label(const std::string& label) {
+  std::string l;
+  for (char c : label)
+    if (c != ' ' && c != '-') l += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return l == "6m" || l == "6months" || l == "6mo";
+}
+
+// The end of distraction and the 6-month time point of the cohort, when it has both.
+std::optional<std::pair<std::string, std::string>> end_to_six_months(const std::vector<ceph::CaseFollowUp>& cohort) {
+  std::string end, six;
+  for (const auto& label : time_point_labels(cohort)) {
+    if (end.empty() && ceph::is_end_of_distraction_label(label)) end = label;
+    if (six.empty() && is_six_months_label(label)) six = label;
+  }
+  if (end.empty() || six.empty()) return std::nullopt;
+  return std::pair{end, six};
+}
+
+constexpr double kStableMm = 1.0;
+constexpr double kStableDeg = 1.0;
+
 }  // namespace
 
+std::string stability_summary(const std::vector<ceph::CaseFollowUp>& cohort, const std::string& from,
+                              const std::string& to) {
+  const ceph::ChangeRow* largest_mm = nullptr;
+  const ceph::ChangeRow* alpha = nullptr;
+  const auto rows = ceph::cohort_changes(cohort, from, to, {"PNS_X", "Si_X", "ANS_X", "PNS_Y", "Si_Y", "ANS_Y", "alpha"});
+  for (const auto& row : rows) {
+    if (!row.mean) continue;
+    if (row.id == "alpha") alpha = &row;
+    else if (!largest_mm || std::abs(*row.mean) > std::abs(*largest_mm->mean)) largest_mm = &row;
+  }
+  if (!largest_mm) return "No case has both " + from + " and " + to + ": stability not assessed.";
+  const bool stable = std::abs(*largest_mm->mean) <= kStableMm && (!alpha || std::abs(*alpha->mean) <= kStableDeg);
+  std::string text = "Stability from " + from + " to " + to + ": the largest mean change of a maxillary point is " +
+                     largest_mm->id + " " + ceph::format_mean_sd(*largest_mm) + " mm (n = " +
+                     std::to_string(largest_mm->n) + ")";
+  if (alpha) text += ", alpha " + ceph::format_mean_sd(*alpha) + "\u00b0";
+  return text + (stable ? ": stable (every mean change within 1 mm and 1\u00b0)."
+                        : ": not stable (a mean change exceeds 1 mm or 1\u00b0).");
+}
+
 report::Section cohort_follow_up_section(const std::vector<ceph::CaseFollowUp>& cohort,
-                                         const std::vector<std::pair<std::string, std::string>>& changes) {
+                                         const std::vector<std::pair<std::string, std::string>>& changes,
+                                         const std::optional<std::filesystem::path>& wits_chart) {
   std::vector<report::Block> blocks;
   blocks.emplace_back(report::Paragraph{"Cohort follow-up: " + std::to_string(cohort.size()) +
                                         " patients. Changes between time points in the nasion frame (mm) and of the "
@@ -102,13 +150,19 @@ report::Section cohort_follow_up_section(const std::vector<ceph::CaseFollowUp>& 
   for (const auto& [from, to] : changes) blocks.emplace_back(change_table(cohort, from, to));
   blocks.emplace_back(report::Note{"Anterior and inferior displacements positive; alpha: upward rotation positive "
                                    "(as the source's Tables II and III). SD: sample SD (n - 1)."});
+  if (auto stability = end_to_six_months(cohort))
+    blocks.emplace_back(report::Paragraph{stability_summary(cohort, stability->first, stability->second)});
   blocks.emplace_back(report::Paragraph{"Wits appraisal (mm) per patient and time point."});
   blocks.emplace_back(wits_table(cohort));
+  if (wits_chart)
+    blocks.emplace_back(chart_block(*wits_chart, "Wits appraisal over months, one line per patient (0 mm: normal; "
+                                                 "negative: Class III)"));
   return {"cephalometry", std::move(blocks)};
 }
 
 report::Section cephalometry_section(const std::optional<ceph::CephalometricAnalysis>& current,
-                                     const std::string& current_label, const ceph::CaseFollowUp& follow_up) {
+                                     const std::string& current_label, const ceph::CaseFollowUp& follow_up,
+                                     const std::optional<std::filesystem::path>& wits_chart) {
   if (!current)
     return {"cephalometry", {report::Note{"No landmarks are attached to this case: no cephalometric analysis."}}};
   std::string wits_note;
@@ -124,21 +178,19 @@ report::Section cephalometry_section(const std::optional<ceph::CephalometricAnal
     return {"cephalometry", {heading, measurement_table(*current), conventions}};
   report::Paragraph follow_up_heading{"Follow-up over " + std::to_string(follow_up.time_points.size()) +
                                       " time points (mm and degrees)."};
-  return {"cephalometry",
-          {heading, measurement_table(*current), conventions, follow_up_heading, follow_up_table(follow_up)}};
+  report::Section section{
+      "cephalometry", {heading, measurement_table(*current), conventions, follow_up_heading, follow_up_table(follow_up)}};
+  if (wits_chart)
+    section.blocks.emplace_back(chart_block(*wits_chart, "Wits appraisal over months (0 mm: normal; negative: Class III)"));
+  return section;
 }
 
-report::Section case_cephalometry_section(const Archive& archive, int64_t case_id, ceph::Sex sex) {
-  std::vector<ceph::TimePointAnalysis> analyses;
-  for (const auto& stored : landmark_time_points(archive, case_id)) {
-    auto sagittal = to_sagittal(stored.landmarks, stored.frame.geometry, stored.frame.axes, "case landmarks");
-    analyses.push_back({stored.time_point.label, stored.time_point.date, ceph::analyse(sagittal, sex)});
-  }
-  auto follow_up = ceph::make_follow_up("case " + std::to_string(case_id), std::move(analyses));
+report::Section case_cephalometry_section(Archive& archive, int64_t case_id, ceph::Sex sex) {
+  auto follow_up = archived_case_follow_up(archive, case_id, "case " + std::to_string(case_id), sex);
   if (!follow_up.time_points.empty()) {
     const auto& last = follow_up.time_points.back();
     std::string label = "time point " + last.label + (last.date.empty() ? "" : " (" + last.date + ")");
-    return cephalometry_section(last.analysis, label, follow_up);
+    return cephalometry_section(last.analysis, label, follow_up, case_wits_chart(archive, case_id, follow_up));
   }
   auto landmarks = latest_landmarks(archive, case_id);
   if (landmarks.empty()) return cephalometry_section(std::nullopt, "", follow_up);

@@ -9,6 +9,8 @@
 #include "pipeline/case_landmarks.h"
 #include "pipeline/cephalometry_section.h"
 #include "pipeline/derivation.h"
+#include "pipeline/plan_archive.h"
+#include "pipeline/planning_section.h"
 #include "report/report_template.h"
 #include "report/write_report.h"
 
@@ -125,6 +127,9 @@ ConsultationResult write_consultation_report(Archive& archive, int64_t case_id, 
   model.sections.push_back(summary_section(contents, series, surfaces, landmarks));
   model.sections.push_back(views_section(views));
   model.sections.push_back(case_cephalometry_section(archive, case_id, sex_for_norms(contents.patient.sex)));
+  if (auto plan_result = latest_plan_result(archive, case_id)) model.sections.push_back(planning_section(*plan_result));
+  if (options.occlusion) model.sections.push_back(*options.occlusion);
+  if (options.soft_tissue) model.sections.push_back(*options.soft_tissue);
   model.sections.push_back(contents_section(archive, contents));
   result.pages = report::write_report(model, report_template, out_pdf);
   result.pdf = out_pdf;

@@ -4,11 +4,13 @@
 // archive as a "report" artefact.
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "archive/archive.h"
 #include "pipeline/case_surfaces.h"
 #include "pipeline/case_views.h"
+#include "report/report_model.h"
 
 namespace maxillo::pipeline {
 
@@ -16,6 +18,8 @@ struct ConsultationOptions {
   std::string template_resource = "templates/consultation.json";
   SurfaceRecipe surfaces;
   ViewRecipe views;
+  std::optional<report::Section> occlusion;  // the "occlusion" section (occlusion_section.h), when one was made
+  std::optional<report::Section> soft_tissue;  // the "soft_tissue" section (case_simulation.h), when one was made
 };
 
 struct ConsultationResult {

@@ -20,6 +20,7 @@
 #include "core/error.h"
 #include "render/offscreen_context_impl.h"
 #include "render/vtk_scene_builder.h"
+#include "render/window_image.h"
 
 namespace maxillo::render {
 namespace {
@@ -87,33 +88,6 @@ void apply_camera(vtkRenderer& renderer, const Camera& spec) {
   renderer.ResetCameraClippingRange();
 }
 
-// VTK's images start at the bottom row; ours start at the top.
-RgbImage from_vtk_image(vtkImageData& image) {
-  int dimensions[3];
-  image.GetDimensions(dimensions);
-  const int components = image.GetNumberOfScalarComponents();
-  RgbImage out{dimensions[0], dimensions[1], {}};
-  out.pixels.resize(static_cast<std::size_t>(out.width) * out.height * 3);
-  const auto* source = static_cast<const std::uint8_t*>(image.GetScalarPointer());
-  for (int y = 0; y < out.height; ++y)
-    for (int x = 0; x < out.width; ++x) {
-      const std::uint8_t* in = source + (static_cast<std::size_t>(out.height - 1 - y) * out.width + x) * components;
-      std::uint8_t* px = &out.pixels[(static_cast<std::size_t>(y) * out.width + x) * 3];
-      for (int c = 0; c < 3; ++c) px[c] = in[std::min(c, components - 1)];
-    }
-  return out;
-}
-
-RgbImage grab(vtkRenderWindow& window) {
-  auto grabber = vtkSmartPointer<vtkWindowToImageFilter>::New();
-  grabber->SetInput(&window);
-  grabber->SetInputBufferTypeToRGB();
-  grabber->ReadFrontBufferOff();
-  grabber->ShouldRerenderOff();
-  grabber->Update();
-  return from_vtk_image(*grabber->GetOutput());
-}
-
 }  // namespace
 
 std::vector<RgbImage> render_scene(const Scene& scene, std::span<const Camera> cameras,
@@ -132,7 +106,7 @@ std::vector<RgbImage> render_scene(const Scene& scene, std::span<const Camera> c
   for (const auto& camera : cameras) {
     apply_camera(*renderer, bar_renderer ? widened_for_viewport(camera, kSceneWidthWithBar) : camera);
     window.Render();
-    images.push_back(grab(window));
+    images.push_back(grab_window(window));
     if (images.back().width != settings.size.width || images.back().height != settings.size.height)
       throw Error(ErrorCode::kRenderFailed, "OSMesa", "read back an image of the wrong size");
   }

@@ -65,7 +65,7 @@ class PdfDocument {
   void key_values(const KeyValues& pairs);      // two columns: bold keys, values
   void table(const Table& table);               // asserts each row has one cell per column
   void figure(const Figure& figure, double max_height_mm);  // centred, scaled to fit
-  void figure_grid(const std::vector<Figure>& figures, int per_row);  // per_row: 2 or 3
+  void figure_grid(const std::vector<Figure>& figures, int per_row);  // per_row: 1 (full width, e.g. a chart), 2 or 3
   void vertical_space(double mm);
   void new_page();
 

@@ -68,7 +68,7 @@ void PdfDocument::figure(const Figure& figure, double max_height_mm) {
 }
 
 void PdfDocument::figure_grid(const std::vector<Figure>& figures, int per_row) {
-  assert((per_row == 2 || per_row == 3) && "figure_grid: 2 or 3 figures per row");
+  assert(per_row >= 1 && per_row <= 3 && "figure_grid: 1, 2 or 3 figures per row");
   auto& impl = *impl_;
   const double cell_width = (impl.text_width() - (per_row - 1) * kGridGap) / per_row;
   const double max_height = 0.6 * (impl.top - impl.bottom);

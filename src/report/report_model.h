@@ -40,7 +40,7 @@ struct KeyValueBlock {
 };
 struct ImageGrid {
   std::vector<Figure> figures;
-  int per_row = 3;  // 2 or 3
+  int per_row = 3;  // 1 (full width, e.g. a chart), 2 or 3
 };
 
 using Block = std::variant<Paragraph, Note, KeyValueBlock, Table, ImageGrid>;

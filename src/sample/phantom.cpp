@@ -69,4 +69,9 @@ Phantom make_phantom(const PhantomSpec& spec) {
   return phantom;
 }
 
+LandmarkSet make_phantom_landmarks(const PhantomSpec& spec) {
+  const sample::PhantomDesign design = sample::make_design(spec);
+  return sample::phantom_landmarks(design, sample::build_phantom_parts(design));
+}
+
 }  // namespace maxillo

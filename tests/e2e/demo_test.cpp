@@ -2,6 +2,8 @@
 // real poppler and qpdf tools, and the report's images checked for content.
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include "core/json.h"
 #include "support/pdf_tools.h"
 #include "support/temporary_folder.h"
@@ -48,12 +50,18 @@ TEST_F(DemoTest, ReportHasRealRenderedViews) {
   ASSERT_TRUE(std::filesystem::exists(report()));
   EXPECT_GE(testing::pdf_page_count(report()), 1);
   auto views = testing::pdf_images(report(), folder_->path() / "images");
-  EXPECT_EQ(views.size(), 6u) << "frontal, lateral and oblique views of skin and of bone expected";
+  EXPECT_EQ(views.size(), 23u) << "frontal, lateral and oblique views of skin and of bone, the occlusionogram, the "
+                                  "splint, the Wits chart, three views of the planned skeleton, the face before, "
+                                  "predicted and its displacement map (3 views each) and the uncertainty band (2) expected";
+  int full_frame = 0;
   for (const auto& view : views) {
+    if (view.width == 1200 && view.height == 700) continue;  // the Wits chart: mostly white (checked below)
     EXPECT_GT(view.distinct_colours, 50u) << view.file << " looks flat";
     EXPECT_GT(view.foreground_fraction, 0.05) << view.file << " looks blank";
-    EXPECT_LT(view.foreground_fraction, 0.95) << view.file << " has no background";
+    full_frame += view.foreground_fraction >= 0.95;
   }
+  // Only the planned skeleton's close-ups of the midface may fill the frame (the skull behind).
+  EXPECT_LE(full_frame, 3) << "renders without background";
 }
 
 TEST_F(DemoTest, ReportIsStoredInTheArchiveAndVerifies) {
@@ -63,6 +71,42 @@ TEST_F(DemoTest, ReportIsStoredInTheArchiveAndVerifies) {
   auto show = run_command(std::string(MAXILLO_BINARY) + " --json --archive " + quote(archive) + " show case:1 2>/dev/null");
   for (const char* kind : {"\"report\"", "\"surface-skin\"", "\"render-bone-lateral\"", "\"landmarks\""})
     EXPECT_NE(show.output.find(kind), std::string::npos) << kind << " missing in " << show.output;
+}
+
+// Issue 6 item 7: the phantom's virtual occlusion in the report, its outputs in the archive.
+TEST_F(DemoTest, ReportHasTheOcclusionSectionAndItsArtefacts) {
+  ASSERT_TRUE(std::filesystem::exists(report()));
+  auto text = testing::pdf_text(report());
+  for (const char* expected : {"Occlusion", "Occlusionogram", "Guided alignment", "Contacts per tooth",
+                               "Final occlusion in the anatomical frame", "pitch", "Surgical splint",
+                               "Watertight", "yes (one closed piece)", "Thickness where no tooth is"})
+    EXPECT_NE(text.find(expected), std::string::npos) << "missing text: " << expected;
+  for (const char* file : {"occlusion.json", "occlusionogram.png", "splint.stl", "splint.png"})
+    EXPECT_TRUE(std::filesystem::exists(folder_->path() / "out" / "occlusion" / file)) << file;
+  auto archive = folder_->path() / "out" / "archive";
+  auto show = run_command(std::string(MAXILLO_BINARY) + " --json --archive " + quote(archive) + " show case:1 2>/dev/null");
+  for (const char* kind : {"\"occlusion\"", "\"occlusionogram\"", "\"splint\""})
+    EXPECT_NE(show.output.find(kind), std::string::npos) << kind << " missing in " << show.output;
+}
+
+// Issue 4: the must-show plan (10 mm advancement, 6 mm widening by two trans-sinusal
+// distractors) applied to the phantom, in the report with its analytic numbers.
+TEST_F(DemoTest, ReportHasThePlanningSectionWithTheMustShowNumbers) {
+  ASSERT_EQ(demo_.exit_code, 0) << demo_.output;
+  auto text = testing::pdf_text(report());
+  for (const char* expected : {"Surgical plan", "Planned moves", "Distraction vectors", "Distractor checks",
+                               "Activation schedule", "Forward simulation", "Vector divergence",
+                               "33.4\u00b0", "16.7\u00b0", "10.44 mm", "21.00", "All distractor checks passed",
+                               "End of consolidation", "day 100"})
+    EXPECT_NE(text.find(expected), std::string::npos) << "missing text: " << expected;
+  std::ifstream result_file(folder_->path() / "out" / "plan" / "plan-result.json");
+  auto result = Json::parse(result_file);
+  EXPECT_TRUE(result.at("feasible").get<bool>());
+  for (const auto& point : result.at("distraction").at("forward_simulation").at("points"))
+    EXPECT_LT(point.at("error_mm").get<double>(), 0.5) << point.at("label");
+  auto show = run_command(std::string(MAXILLO_BINARY) + " --json --archive " + quote(folder_->path() / "out" / "archive") +
+                          " plan show case:1 2>/dev/null");
+  EXPECT_NE(show.output.find("\"history\""), std::string::npos) << show.output;
 }
 
 // For a PACS: the report as a DICOM Encapsulated PDF filed into the patient's study.
@@ -87,6 +131,35 @@ TEST_F(DemoTest, ReportAsEncapsulatedPdfIsFiledIntoTheStudy) {
   EXPECT_EQ(reports, 1);
 }
 
+// The demo case carries the sample cohort's first patient's dated time points: the report shows
+// the follow-up table and the Wits chart (a 1200 x 700 image, wider than the 1024 px views).
+TEST_F(DemoTest, ReportHasTheFollowUpTableAndTheWitsChart) {
+  ASSERT_EQ(demo_.exit_code, 0) << demo_.output;
+  auto text = testing::pdf_text(report());
+  for (const char* expected : {"Follow-up over 5 time points", "2003-03-15", "Wits appraisal over months"})
+    EXPECT_NE(text.find(expected), std::string::npos) << "missing text: " << expected;
+  std::vector<testing::ImageContent> charts;
+  for (const auto& image : testing::pdf_images(report(), folder_->path() / "report-charts", 1100))
+    if (image.width == 1200 && image.height == 700) charts.push_back(image);  // the chart's size (others differ)
+  ASSERT_EQ(charts.size(), 1u);
+  EXPECT_GT(charts[0].foreground_fraction, 0.01);  // axes, labels and the line on white
+  EXPECT_GT(charts[0].distinct_colours, 2u);
+}
+
+TEST_F(DemoTest, WritesTheSampleCohortFollowUpReport) {
+  ASSERT_EQ(demo_.exit_code, 0) << demo_.output;
+  auto pdf = folder_->path() / "out" / "cohort-followup.pdf";
+  ASSERT_TRUE(std::filesystem::exists(pdf));
+  EXPECT_EQ(run_command("qpdf --check " + quote(pdf) + " >/dev/null 2>&1").exit_code, 0);
+  auto text = testing::pdf_text(pdf);
+  for (const char* expected : {"Cohort follow-up: 6 patients", "Change pre to post", "Change post to 6M",
+                               "Stability from post to 6M", "Wits appraisal (mm) per patient", "Wits appraisal over months"})
+    EXPECT_NE(text.find(expected), std::string::npos) << "missing text: " << expected;
+  auto images = testing::pdf_images(pdf, folder_->path() / "cohort-charts", 1100);
+  ASSERT_EQ(images.size(), 1u);  // the chart, one line per patient
+  EXPECT_GT(images[0].distinct_colours, 6u);
+}
+
 // The same phantom is the same scan (UIDs derived from it): a second demo into the same folder
 // re-imports nothing and reuses the stored surfaces.
 TEST_F(DemoTest, SecondRunIsIdempotent) {
@@ -103,6 +176,34 @@ TEST_F(DemoTest, SecondRunIsIdempotent) {
   int ct_series = 0;
   for (const auto& entry : Json::parse(series.output)) ct_series += entry.at("modality") == "CT";
   EXPECT_EQ(ct_series, 1) << series.output;
+}
+
+}  // namespace
+}  // namespace maxillo
+
+namespace maxillo {
+namespace {
+
+// Issue 3: the predicted face for the plan, in the report, with its numbers.
+TEST_F(DemoTest, ReportHasTheSoftTissuePrediction) {
+  ASSERT_TRUE(std::filesystem::exists(report()));
+  auto text = testing::pdf_text(report());
+  for (const char* expected : {"Soft-tissue prediction", "mass tensor model", "tetrahedra", "smallest dihedral angle",
+                               "joined to moved bone", "Pre-operative, right lateral", "Predicted, right lateral",
+                               "Displacement, right lateral", "Uncertainty band", "Sn", "Ls", "PogS"})
+    EXPECT_NE(text.find(expected), std::string::npos) << "missing text: " << expected;
+  for (const char* file : {"soft-tissue/predicted-skin.vtp", "soft-tissue/soft-tissue-model.vtu", "soft-tissue/simulation.json"})
+    EXPECT_TRUE(std::filesystem::exists(folder_->path() / "out" / file)) << file;
+}
+
+// Issue 4: osteotomies, the transfer model and the planned skeleton's renders.
+TEST_F(DemoTest, PlanWritesTheTransferModelAndSegments) {
+  const auto plan = folder_->path() / "out" / "plan";
+  for (const char* file : {"transfer-model.stl", "planned-maxilla.stl", "planned-cranium.stl", "plan-lateral.png"})
+    EXPECT_TRUE(std::filesystem::exists(plan / file)) << file;
+  auto text = testing::pdf_text(report());
+  for (const char* expected : {"Osteotomies: bone segments", "maxilla", "Transfer model", "Printable", "Planned skeleton"})
+    EXPECT_NE(text.find(expected), std::string::npos) << "missing text: " << expected;
 }
 
 }  // namespace

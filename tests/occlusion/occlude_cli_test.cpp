@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
+#include <cmath>
 #include <fstream>
 
 #include "core/json.h"
@@ -44,6 +45,55 @@ TEST(OccludeCommand, SpringsBringTheBlockToRestOnTheSlab) {
   EXPECT_EQ(result["upper"]["contact_vertices"], 4);  // the block's bottom corners
   for (const char* file : {"occlusionogram.png", "upper_distances.csv", "lower_distances.csv"})
     EXPECT_TRUE(std::filesystem::exists(folder / "out" / file)) << file;
+}
+
+void write_pose(const std::filesystem::path& path, const Eigen::Vector3d& translation) {
+  std::ofstream(path) << "{\"upper_transform\": [[1,0,0," << translation.x() << "],[0,1,0," << translation.y()
+                      << "],[0,0,1," << translation.z() << "],[0,0,0,1]]}";
+}
+
+TEST(OccludeCompare, APureTranslationGivesItsLengthEverywhere) {
+  maxillo::TemporaryFolder folder;
+  write_box_obj(folder / "lower.obj", {-5, -5, -2}, {5, 5, 0});
+  write_box_obj(folder / "upper.obj", {-2, -2, 0.5}, {2, 2, 2.5});
+  write_pose(folder / "a.json", {0, 0, 0});
+  write_pose(folder / "b.json", {0.6, 0, 0.8});  // 1 mm
+  const auto run = maxillo::testing::run_maxillo(
+      {"--json", "occlude", "compare", (folder / "upper.obj").string(), (folder / "lower.obj").string(),
+       (folder / "a.json").string(), (folder / "b.json").string(), "--roi-mm", "1", "--map",
+       (folder / "map.csv").string()},
+      folder.path());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const maxillo::Json result = maxillo::Json::parse(run.out);
+  EXPECT_EQ(result["region_vertices"], 4);  // the block's bottom corners
+  for (const char* key : {"median_mm", "p90_mm", "p95_mm", "max_mm"}) EXPECT_NEAR(result[key].get<double>(), 1.0, 1e-9);
+  EXPECT_TRUE(std::filesystem::exists(folder / "map.csv"));
+}
+
+TEST(OccludeAutorotate, ClosesToTheFirstContactAngle) {
+  maxillo::TemporaryFolder folder;
+  write_box_obj(folder / "lower.obj", {10, -5, -2}, {30, 5, 0});
+  write_box_obj(folder / "upper.obj", {5, -6, 1}, {45, 6, 3});
+  const auto run = maxillo::testing::run_maxillo(
+      {"--json", "occlude", "autorotate", (folder / "upper.obj").string(), (folder / "lower.obj").string(), "--hinge",
+       "0,-50,0,0,50,0", "--pogonion", "40,0,-10", "--out", (folder / "rotation.json").string()},
+      folder.path());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const maxillo::Json result = maxillo::Json::parse(run.out);
+  EXPECT_EQ(result["outcome"], "contact");
+  EXPECT_NEAR(result["angle_deg"].get<double>(), std::asin(1.0 / 30) * 180 / M_PI, 0.01);
+  EXPECT_GT(result["pogonion_mm"].get<double>(), 1.0);
+  EXPECT_TRUE(std::filesystem::exists(folder / "rotation.json"));
+}
+
+TEST(OccludeCommand, WithoutPairsOrASubcommandIsAUsageError) {
+  maxillo::TemporaryFolder folder;
+  write_box_obj(folder / "lower.obj", {-5, -5, -2}, {5, 5, 0});
+  const auto run = maxillo::testing::run_maxillo(
+      {"occlude", (folder / "lower.obj").string(), (folder / "lower.obj").string(), "--out", (folder / "o").string()},
+      folder.path());
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("--pairs"), std::string::npos) << run.err;
 }
 
 TEST(OccludeCommand, RefusesTooFewPairsNamingTheFile) {

@@ -1,0 +1,98 @@
+// maxillo simulate CASE (--plan PLAN.json | --advance MM) --out DIR: the predicted face.
+#include <iostream>
+
+#include "cli/command.h"
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "core/json.h"
+#include "pipeline/case_simulation.h"
+
+namespace maxillo::cli {
+namespace {
+
+std::string text_of(const std::filesystem::path& path) {
+  const auto bytes = read_file(path);
+  return {reinterpret_cast<const char*>(bytes.data()), bytes.size()};
+}
+
+struct SimulateOptions {
+  std::string case_text;
+  std::filesystem::path plan_file;
+  double advance_mm = 0;
+  std::string model = "mtm";
+  double poisson = 0.46;
+  int max_tets = 100000;
+  double cell_mm = 4.0;
+  bool uncertainty = false;
+  std::filesystem::path out = "simulation";
+};
+
+pipeline::SimulationRequest make_request(const SimulateOptions& o) {
+  pipeline::SimulationRequest request;
+  if (!o.plan_file.empty()) {
+    request.plan = planning::parse_plan(text_of(o.plan_file), o.plan_file.string());
+  } else if (o.advance_mm != 0) {
+    request.plan = pipeline::le_fort_advancement_plan(o.advance_mm);
+  } else {
+    throw Error(ErrorCode::kUsage, "simulate", "give a plan (--plan PLAN.json) or a Le Fort I advancement (--advance MM)");
+  }
+  request.options.model = *pipeline::parse_model(o.model);
+  request.options.poisson_ratio = o.poisson;
+  request.options.meshing.max_tets = o.max_tets;
+  request.options.meshing.cell_size_mm = o.cell_mm;
+  request.uncertainty = o.uncertainty;
+  request.out = o.out;
+  return request;
+}
+
+int run_simulate(const SimulateOptions& options, const GlobalOptions& global) {
+  auto archive = Archive::open(resolve_archive_dir(global));
+  const auto case_id = archive.resolve_case(options.case_text);
+  const auto request = make_request(options);
+  const auto result = pipeline::simulate_case(archive, case_id, request);
+  const auto& p = result.prediction;
+  if (global.json) {
+    std::cout << text_of(options.out / "simulation.json");
+    return 0;
+  }
+  std::cout << "model: " << pipeline::model_title(request.options.model) << ", " << p.mesh.tet_count()
+            << " tetrahedra (smallest dihedral angle " << p.quality.min_dihedral_deg << " deg)\n"
+            << "solve: " << p.seconds.solve << " s, " << p.iterations << " iterations; mesh " << p.seconds.meshing
+            << " s; mapping " << p.seconds.mapping << " s\n"
+            << "largest skin displacement: " << result.views.max_displacement_mm << " mm\n";
+  if (result.uncertainty)
+  {
+    std::cout << "uncertainty (" << result.uncertainty->runs.size() << " runs): P95 " << result.uncertainty->p95_mm
+              << " mm, max " << result.uncertainty->max_mm << " mm\n";
+    for (size_t r = 0; r < result.uncertainty->runs.size(); ++r)
+      std::cout << "  " << result.uncertainty->runs[r] << ": largest skin displacement " << result.uncertainty->run_max_mm[r]
+                << " mm, P95 " << result.uncertainty->run_p95_from_first_mm[r] << " mm from the first run\n";
+  }
+  for (const auto& file : result.files) std::cout << "wrote " << file.string() << "\n";
+  return 0;
+}
+
+}  // namespace
+
+void attach_simulate(CLI::App& app, CommandContext& ctx) {
+  auto options = std::make_shared<SimulateOptions>();
+  app.add_option("CASE", options->case_text, "case id, or a Patient ID (its default case)")->required();
+  app.add_option("--plan", options->plan_file, "plan JSON (maxillo plan); its osteotomies and segment moves are used");
+  app.add_option("--advance", options->advance_mm, "instead of a plan: Le Fort I advancement of the maxilla, mm");
+  app.add_option("--model", options->model,
+                 "mtm (mass tensor), fem (linear FEM), msm (mass-spring) or nfem (non-linear FEM)")
+      ->check(CLI::IsMember({"mtm", "fem", "msm", "nfem"}))
+      ->capture_default_str();
+  app.add_option("--poisson", options->poisson, "Poisson ratio of the soft tissue")
+      ->check(CLI::Range(0.3, 0.499))
+      ->capture_default_str();
+  app.add_option("--max-tets", options->max_tets, "tetrahedra budget of the face model")->capture_default_str();
+  app.add_option("--cell-mm", options->cell_mm, "target tetrahedron size, mm (grows to meet --max-tets)")->capture_default_str();
+  app.add_flag("--uncertainty", options->uncertainty,
+               "also solve with the other models and Poisson ratios 0.45 and 0.49: per-vertex spread");
+  app.add_option("--out", options->out, "output folder: predicted skin (vtp, stl, ply), model (vtu), renders, json")
+      ->capture_default_str();
+  app.callback([options, &ctx] { ctx.exit_code = run_simulate(*options, ctx.global); });
+}
+
+}  // namespace maxillo::cli

@@ -1,0 +1,54 @@
+#pragma once
+// `maxillo simulate` for a case of the archive: the CT of the case segmented and its jaws told
+// apart (planning/jaw_separation.h), the plan's osteotomies and moves applied to the bone
+// segments, the face predicted (soft_tissue_prediction.h), optionally the uncertainty across
+// models and Poisson ratios, and the results written as files and pictures.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "archive/archive.h"
+#include "pipeline/soft_tissue_prediction.h"
+#include "pipeline/soft_tissue_section.h"
+#include "planning/plan.h"
+#include "report/report_model.h"
+
+namespace maxillo::pipeline {
+
+struct SimulationRequest {
+  planning::Plan plan;
+  std::string plan_text;          // one line for the report, e.g. "maxilla 6.0 mm advancement"
+  SoftTissueOptions options;
+  bool uncertainty = false;       // also solve with every model and Poisson 0.45 and 0.49
+  std::filesystem::path out;      // folder (created) for the files and pictures
+};
+
+struct Uncertainty {
+  std::vector<std::string> runs;        // "mtm nu=0.46", ...
+  std::vector<double> run_max_mm;       // each run's largest skin displacement
+  std::vector<double> run_p95_from_first_mm;  // each run's P95 distance from the first run, moved skin
+  std::vector<double> spread_mm;        // per skin vertex: largest distance of a run from the mean
+  double p95_mm = 0, max_mm = 0;        // over the skin vertices that moved
+};
+
+struct SimulationResult {
+  SoftTissuePrediction prediction;
+  TriangleMesh skin_before;
+  std::optional<Uncertainty> uncertainty;
+  SoftTissueViewFiles views;
+  report::Section section;                          // "soft_tissue", ready for the report
+  std::vector<std::filesystem::path> files;         // predicted skin (vtp, stl, ply), model (vtu), json
+};
+
+// The uncertainty band: the same model re-solved with every other model and with Poisson
+// ratios 0.45 and 0.49 (the spread of plausible answers, not an error bound).
+Uncertainty prediction_uncertainty(const SoftTissuePrediction& base, const TriangleMesh& skin,
+                                   const SoftTissueOptions& options);
+
+SimulationResult simulate_case(Archive& archive, int64_t case_id, const SimulationRequest& request);
+
+// The plan of a Le Fort I advancement by `advancement_mm` (forward, in the planning frame).
+planning::Plan le_fort_advancement_plan(double advancement_mm);
+
+}  // namespace maxillo::pipeline

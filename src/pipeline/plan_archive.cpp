@@ -1,0 +1,78 @@
+#include "pipeline/plan_archive.h"
+
+#include <algorithm>
+
+#include "core/sha256.h"
+
+namespace maxillo::pipeline {
+namespace {
+
+constexpr const char* kPlanKind = "plan";
+constexpr const char* kPlanResultKind = "plan-result";
+
+std::string object_text(const Archive& archive, const std::string& sha256) {
+  const auto bytes = archive.read_object(sha256);
+  return std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+}
+
+std::vector<ArtefactRecord> artefacts_of_kind(const Archive& archive, int64_t case_id, const std::string& kind) {
+  auto all = archive.artefacts(case_id);
+  std::vector<ArtefactRecord> selected;
+  std::copy_if(all.begin(), all.end(), std::back_inserter(selected), [&](const auto& a) { return a.kind == kind; });
+  std::sort(selected.begin(), selected.end(), [](const auto& a, const auto& b) { return a.id < b.id; });
+  return selected;
+}
+
+}  // namespace
+
+StoredPlan store_plan(Archive& archive, int64_t case_id, const planning::Plan& plan) {
+  const std::string text = planning::serialise_plan(plan);
+  const int version = static_cast<int>(artefacts_of_kind(archive, case_id, kPlanKind).size()) + 1;
+  const std::string sha = archive.store_object(text);
+  const Json parameters{{"version", version}, {"format_version", plan.format_version}, {"description", plan.description}};
+  const std::string inputs = sha256_hex(text + "\nversion " + std::to_string(version));
+  const int64_t id = archive.add_artefact(NewArtefact{case_id, kPlanKind, sha, "application/json", inputs, parameters.dump()});
+  for (StoredPlan& stored : plan_history(archive, case_id))
+    if (stored.artefact_id == id) return stored;
+  return StoredPlan{id, version, "", "", sha, plan};
+}
+
+std::vector<StoredPlan> plan_history(const Archive& archive, int64_t case_id) {
+  std::vector<StoredPlan> history;
+  int version = 0;
+  for (const ArtefactRecord& record : artefacts_of_kind(archive, case_id, kPlanKind)) {
+    StoredPlan stored;
+    stored.artefact_id = record.id;
+    stored.version = ++version;
+    stored.created_at = record.created_at;
+    stored.program_version = record.program_version;
+    stored.sha256 = record.object_sha256;
+    stored.plan = planning::parse_plan(object_text(archive, record.object_sha256),
+                                       "plan artefact " + std::to_string(record.id));
+    history.push_back(std::move(stored));
+  }
+  return history;
+}
+
+std::optional<StoredPlan> latest_plan(const Archive& archive, int64_t case_id) {
+  auto history = plan_history(archive, case_id);
+  if (history.empty()) return std::nullopt;
+  return history.back();
+}
+
+void store_plan_result(Archive& archive, int64_t case_id, const StoredPlan& plan, const Json& result) {
+  const std::string text = result.dump(2) + "\n";
+  const std::string sha = archive.store_object(text);
+  const Json parameters{{"plan_artefact", plan.artefact_id}, {"plan_version", plan.version}};
+  archive.add_artefact(NewArtefact{case_id, kPlanResultKind, sha, "application/json", plan.sha256, parameters.dump()});
+}
+
+std::optional<Json> latest_plan_result(const Archive& archive, int64_t case_id) {
+  const auto results = artefacts_of_kind(archive, case_id, kPlanResultKind);
+  if (results.empty()) return std::nullopt;
+  auto json = Json::parse(object_text(archive, results.back().object_sha256), nullptr, /*allow_exceptions=*/false);
+  if (json.is_discarded()) return std::nullopt;
+  return json;
+}
+
+}  // namespace maxillo::pipeline

@@ -1,0 +1,38 @@
+#pragma once
+// Plans of a case in the archive, with their history: every saved plan is a new "plan"
+// artefact (the plan's JSON text as an object, media type application/json); nothing is
+// overwritten, so the newest is the current plan and the older ones its history. Applying a
+// plan stores its result (vectors, checks, schedule, forward simulation) as a "plan-result"
+// artefact made from that plan; the consultation report shows the newest result.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "archive/archive.h"
+#include "core/json.h"
+#include "planning/plan.h"
+
+namespace maxillo::pipeline {
+
+struct StoredPlan {
+  int64_t artefact_id = 0;
+  int version = 1;  // 1 = the case's first plan, 2 = the next saved one, ...
+  std::string created_at;
+  std::string program_version;
+  std::string sha256;  // of the plan's text
+  planning::Plan plan;
+};
+
+// Stores the plan as the case's newest version; returns it as stored.
+StoredPlan store_plan(Archive& archive, int64_t case_id, const planning::Plan& plan);
+// Every stored plan of the case, oldest first. A stored plan that no longer parses (written
+// by a newer program) throws Error naming the artefact.
+std::vector<StoredPlan> plan_history(const Archive& archive, int64_t case_id);
+std::optional<StoredPlan> latest_plan(const Archive& archive, int64_t case_id);
+
+void store_plan_result(Archive& archive, int64_t case_id, const StoredPlan& plan, const Json& result);
+// The newest stored plan result of the case (plan_result_json's document), if any.
+std::optional<Json> latest_plan_result(const Archive& archive, int64_t case_id);
+
+}  // namespace maxillo::pipeline

@@ -1,0 +1,56 @@
+#include "pipeline/plan_case.h"
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "core/log.h"
+#include "imaging/segmentation.h"
+#include "imaging/volume_assembly.h"
+#include "pipeline/case_landmarks.h"
+#include "pipeline/derivation.h"
+#include "planning/enclosed_air.h"
+#include "planning/jaw_separation.h"
+#include "pipeline/plan_outputs.h"
+
+#include <array>
+
+namespace maxillo::pipeline {
+
+CasePlanResult apply_case_plan(Archive& archive, int64_t case_id, const std::filesystem::path& out_dir) {
+  const std::string subject = "case:" + std::to_string(case_id);
+  CasePlanResult out;
+  const auto plan = latest_plan(archive, case_id);
+  if (!plan) throw Error(ErrorCode::kNotFound, subject, "the case has no plan: make one with `maxillo plan create`");
+  out.plan = *plan;
+  const LandmarkSet landmarks = latest_landmarks(archive, case_id);
+  if (landmarks.empty())
+    throw Error(ErrorCode::kNotFound, subject, "the case has no landmarks: attach them with `maxillo ceph add`");
+
+  log::info("segmenting the CT for the plan (sinus air, bone, teeth)");
+  const int64_t series = primary_series(archive.case_contents(case_id));
+  const Volume ct = load_series_volume(archive.series_instance_files(series));
+  // Sinus air: the CT's closed air cavities (planning/enclosed_air.h says why not the
+  // segmentation's own enclosed-air label).
+  const SegmentationOptions segmentation;
+  const LabelVolume tissues =
+      planning::with_enclosed_air(segment_tissues(ct, segmentation), ct, segmentation.skin_hu, kEnclosedAir);
+  out.result = planning::apply_plan(plan->plan, tissues, landmarks, planning::segmentation_anatomy_labels());
+
+  // The bone cut into segments, the planned segment surfaces, the transfer model and the
+  // renders of the planned skeleton (plan_outputs.h); they need the jaws told apart.
+  const auto outputs = write_plan_outputs(planning::separate_jaws(tissues, landmarks), landmarks, out.result,
+                                          std::filesystem::absolute(out_dir));
+  const std::array<std::string, 3> views{"frontal", "right lateral", "oblique"};
+  for (size_t v = 0; v < outputs.renders.size() && v < views.size(); ++v)
+    out.result.files.push_back({"Planned skeleton, " + views[v], outputs.renders[v]});
+  for (const auto& file : outputs.files) out.result.files.push_back(file);
+
+  std::filesystem::create_directories(out_dir);
+  out.result_json = out_dir / "plan-result.json";
+  Json json = planning::plan_result_json(out.result);
+  json["osteotomy"] = plan_outputs_json(outputs);
+  write_file_atomically(out.result_json, json.dump(2) + "\n");
+  store_plan_result(archive, case_id, out.plan, json);
+  return out;
+}
+
+}  // namespace maxillo::pipeline

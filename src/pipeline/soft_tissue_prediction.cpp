@@ -1,0 +1,176 @@
+#include "pipeline/soft_tissue_prediction.h"
+
+#include <array>
+#include <chrono>
+
+#include "core/error.h"
+#include "render/anatomical_views.h"
+#include "softtissue/linear_static_solve.h"
+#include "softtissue/mass_spring_model.h"
+#include "softtissue/mass_tensor_model.h"
+#include "softtissue/nonlinear_fem.h"
+#include "softtissue/shape_function_mapping.h"
+#include "softtissue/stiffness_blocks.h"
+
+namespace maxillo::pipeline {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+constexpr double kBelowMentonMm = 15;
+
+struct ModelNames {
+  SoftTissueModel model;
+  std::string_view name, title;
+};
+constexpr std::array kModels = {ModelNames{SoftTissueModel::kMassTensor, "mtm", "mass tensor model"},
+                                ModelNames{SoftTissueModel::kLinearFem, "fem", "linear FEM"},
+                                ModelNames{SoftTissueModel::kMassSpring, "msm", "mass-spring model"},
+                                ModelNames{SoftTissueModel::kNonlinearFem, "nfem", "non-linear FEM (St Venant-Kirchhoff)"}};
+
+Eigen::Vector3d required(const LandmarkSet& landmarks, const std::string& label) {
+  if (auto p = find_landmark(landmarks, label)) return *p;
+  throw Error(ErrorCode::kBadValue, "face region", "the default region needs the landmark " + label);
+}
+
+Eigen::Vector3d bilateral_mean(const LandmarkSet& landmarks, const std::string& label) {
+  auto right = find_landmark(landmarks, label + "R"), left = find_landmark(landmarks, label + "L");
+  if (right && left) return 0.5 * (*right + *left);
+  return required(landmarks, label);
+}
+
+struct Solved {
+  Eigen::MatrixX3d displacement;
+  int iterations = 0;
+};
+
+Solved solve(const softtissue::TetMesh& mesh, const softtissue::BoundaryConditions& bc, const SoftTissueOptions& o,
+             double& assembly_seconds) {
+  auto start = Clock::now();
+  const softtissue::Material material{o.young_modulus_mpa, o.poisson_ratio};
+  softtissue::LocalIterationOptions local;
+  local.gradient_threshold_mm = o.gradient_threshold_mm;
+  if (o.model == SoftTissueModel::kNonlinearFem) {
+    assembly_seconds = 0;  // the tangent is assembled inside every Newton step
+    softtissue::NewtonOptions newton;
+    newton.load_steps = 2;
+    auto result = softtissue::solve_nonlinear_static(mesh, material, bc, newton);
+    if (!result.converged)
+      throw Error(ErrorCode::kProcessing, "non-linear FEM", "Newton's method did not converge");
+    return {result.displacement, result.newton_iterations};
+  }
+  if (o.model == SoftTissueModel::kMassSpring) {
+    const auto model = softtissue::make_van_gelder_model(mesh, o.young_modulus_mpa);
+    assembly_seconds = seconds_since(start);
+    auto result = softtissue::solve_mass_spring(model, bc, local);
+    return {result.displacement, result.iterations};
+  }
+  const auto blocks = softtissue::assemble_stiffness_blocks(mesh, material);
+  if (o.model == SoftTissueModel::kLinearFem) {
+    assembly_seconds = seconds_since(start);
+    auto result = softtissue::solve_linear_static(blocks, bc);
+    if (result.status != softtissue::SolveStatus::kConverged)
+      throw Error(ErrorCode::kProcessing, "linear FEM", "the conjugate gradient did not converge");
+    return {result.displacement, result.iterations};
+  }
+  const auto model = softtissue::make_mass_tensor_model(blocks);
+  assembly_seconds = seconds_since(start);
+  auto result = softtissue::solve_mass_tensor(model, bc, local);
+  return {result.displacement, result.iterations};
+}
+
+void map_to_skin(SoftTissuePrediction& prediction, const TriangleMesh& skin, double binding_mm) {
+  auto start = Clock::now();
+  const auto mapping = softtissue::init_shape_function_mapping(prediction.mesh, skin.vertices, binding_mm);
+  prediction.skin_displacement = softtissue::map_displacement(prediction.mesh, mapping, prediction.node_displacement);
+  prediction.skin_vertices_bound = mapping.bound_count();
+  prediction.skin_after = skin;
+  prediction.skin_after.vertices += prediction.skin_displacement;
+  prediction.seconds.mapping = seconds_since(start);
+}
+
+}  // namespace
+
+std::string_view model_name(SoftTissueModel model) {
+  for (const auto& m : kModels)
+    if (m.model == model) return m.name;
+  return "?";
+}
+
+std::string_view model_title(SoftTissueModel model) {
+  for (const auto& m : kModels)
+    if (m.model == model) return m.title;
+  return "?";
+}
+
+std::optional<SoftTissueModel> parse_model(std::string_view name) {
+  for (const auto& m : kModels)
+    if (m.name == name) return m.model;
+  return std::nullopt;
+}
+
+std::vector<softtissue::RegionPlane> default_face_region_planes(const LandmarkSet& landmarks) {
+  const auto frame = render::anatomical_frame(landmarks);
+  const Eigen::Vector3d orbitale = bilateral_mean(landmarks, "Or");
+  const Eigen::Vector3d porion = bilateral_mean(landmarks, "Po");
+  const Eigen::Vector3d menton = required(landmarks, "Me");
+  return {{orbitale, -frame.superior},                               // below the orbits
+          {menton - kBelowMentonMm * frame.superior, frame.superior},  // above a plane under the chin
+          {porion, frame.anterior}};                                 // in front of the ears
+}
+
+SoftTissuePrediction predict_soft_tissue(const SoftTissueInput& input, const SoftTissueOptions& options) {
+  SoftTissuePrediction prediction;
+  auto start = Clock::now();
+  const auto planes = default_face_region_planes(input.landmarks);
+  const auto region = softtissue::face_region(*input.tissues, options.soft_labels, planes);
+  prediction.seconds.region = seconds_since(start);
+
+  start = Clock::now();
+  auto meshed = tetmesh::mesh_label(region, 1, options.meshing);
+  prediction.mesh = std::move(meshed.mesh);
+  prediction.cell_size_mm = meshed.cell_size_mm;
+  prediction.quality = softtissue::mesh_quality(prediction.mesh);
+  prediction.seconds.meshing = seconds_since(start);
+
+  start = Clock::now();
+  auto attachment = softtissue::attach_to_bone(prediction.mesh, *input.segments, input.moves, planes, options.attachment);
+  prediction.bc = std::move(attachment.bc);
+  prediction.seconds.attachment = seconds_since(start);
+  if (softtissue::count_nodes(prediction.bc, softtissue::NodeConstraint::kFixed) == 0)
+    throw Error(ErrorCode::kProcessing, "soft tissue model", "no node touches unmoved bone or a cut: the model would float");
+
+  start = Clock::now();
+  auto solved = solve(prediction.mesh, prediction.bc, options, prediction.seconds.assembly);
+  prediction.node_displacement = std::move(solved.displacement);
+  prediction.iterations = solved.iterations;
+  prediction.seconds.solve = seconds_since(start) - prediction.seconds.assembly;
+
+  map_to_skin(prediction, *input.skin, options.skin_binding_mm);
+  return prediction;
+}
+
+SoftTissuePrediction resolve_soft_tissue(const SoftTissuePrediction& base, const TriangleMesh& skin,
+                                         const SoftTissueOptions& options) {
+  SoftTissuePrediction prediction;
+  prediction.mesh = base.mesh;
+  prediction.quality = base.quality;
+  prediction.bc = base.bc;
+  prediction.cell_size_mm = base.cell_size_mm;
+  auto start = Clock::now();
+  auto solved = solve(prediction.mesh, prediction.bc, options, prediction.seconds.assembly);
+  prediction.node_displacement = std::move(solved.displacement);
+  prediction.iterations = solved.iterations;
+  prediction.seconds.solve = seconds_since(start) - prediction.seconds.assembly;
+  map_to_skin(prediction, skin, options.skin_binding_mm);
+  return prediction;
+}
+
+Eigen::MatrixX3d displacement_at(const SoftTissuePrediction& prediction, const VertexMatrix& points,
+                                 double max_distance_mm) {
+  const auto mapping = softtissue::init_shape_function_mapping(prediction.mesh, points, max_distance_mm);
+  return softtissue::map_displacement(prediction.mesh, mapping, prediction.node_displacement);
+}
+
+}  // namespace maxillo::pipeline

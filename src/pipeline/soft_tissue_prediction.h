@@ -1,0 +1,84 @@
+#pragma once
+// Soft tissue prediction for a planned bone move (thesis ch. 6), from labelled volumes to the
+// predicted skin:
+//   1. the face region: soft tissue below the orbits, above a plane under the chin, in front of
+//      the ears (softtissue/face_region.h, planes from landmarks);
+//   2. a tet mesh of it (CGAL, tetmesh/labelled_tet_mesher.h) within the tet budget;
+//   3. join points from the bone segments and their planned moves, fixed nodes on the cuts
+//      (softtissue/bone_attachment.h);
+//   4. the static solve with the chosen model (mass tensor, linear FEM or mass-spring);
+//   5. the displacement mapped onto the dense skin by the shape functions (eq. 13).
+#include <Eigen/Geometry>
+#include <map>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "ceph/landmark.h"
+#include "core/triangle_mesh.h"
+#include "core/volume.h"
+#include "softtissue/bone_attachment.h"
+#include "softtissue/element_quality.h"
+#include "softtissue/face_region.h"
+#include "tetmesh/labelled_tet_mesher.h"
+
+namespace maxillo::pipeline {
+
+enum class SoftTissueModel { kMassTensor, kLinearFem, kMassSpring, kNonlinearFem };
+std::string_view model_name(SoftTissueModel model);  // "mtm", "fem", "msm", "nfem"
+std::optional<SoftTissueModel> parse_model(std::string_view name);
+std::string_view model_title(SoftTissueModel model);  // "mass tensor model", ...
+
+struct SoftTissueOptions {
+  SoftTissueModel model = SoftTissueModel::kMassTensor;
+  double poisson_ratio = 0.46;
+  double young_modulus_mpa = 0.003;  // scales forces only: the static answer does not depend on it
+  double gradient_threshold_mm = 1e-3;  // local dynamic stop criterion (mass tensor, mass-spring)
+  tetmesh::TetMeshingOptions meshing;
+  softtissue::AttachmentOptions attachment;
+  double skin_binding_mm = 4.0;     // skin farther from the model keeps its place
+  std::vector<uint8_t> soft_labels{1};  // phantom and CT segmentation both use 1 for soft tissue
+};
+
+struct SoftTissueInput {
+  const LabelVolume* tissues = nullptr;   // tissue labels (soft tissue = options.soft_labels)
+  const LabelVolume* segments = nullptr;  // bone segments (planning/osteotomy.h), same geometry
+  const TriangleMesh* skin = nullptr;     // dense pre-operative skin surface
+  LandmarkSet landmarks;                  // for the region's planes
+  std::map<uint8_t, Eigen::Isometry3d> moves;  // segment label -> planned rigid move
+};
+
+struct SoftTissueTimings {
+  double region = 0, meshing = 0, attachment = 0, assembly = 0, solve = 0, mapping = 0;
+  double total() const { return region + meshing + attachment + assembly + solve + mapping; }
+};
+
+struct SoftTissuePrediction {
+  softtissue::TetMesh mesh;
+  softtissue::MeshQuality quality;
+  softtissue::BoundaryConditions bc;
+  Eigen::MatrixX3d node_displacement;   // n x 3, mm
+  int iterations = 0;                   // sweeps (MTM, MSM) or Krylov iterations (FEM)
+  TriangleMesh skin_after;              // the skin's vertices moved, same faces
+  Eigen::MatrixX3d skin_displacement;   // per skin vertex, mm
+  int skin_vertices_bound = 0;
+  double cell_size_mm = 0;
+  SoftTissueTimings seconds;
+};
+
+// Region planes from landmarks: below the orbitales, 15 mm below menton and in front of the
+// porions (each needs the landmark; missing ones -> Error naming them).
+std::vector<softtissue::RegionPlane> default_face_region_planes(const LandmarkSet& landmarks);
+
+SoftTissuePrediction predict_soft_tissue(const SoftTissueInput& input, const SoftTissueOptions& options = {});
+
+// Re-solves an existing model (same mesh and boundary nodes) with another model or material,
+// for the uncertainty band; fills node_displacement, skin_after and skin_displacement.
+SoftTissuePrediction resolve_soft_tissue(const SoftTissuePrediction& base, const TriangleMesh& skin,
+                                         const SoftTissueOptions& options);
+
+// The displacement at arbitrary points (e.g. soft tissue landmarks), by the shape functions.
+Eigen::MatrixX3d displacement_at(const SoftTissuePrediction& prediction, const VertexMatrix& points,
+                                 double max_distance_mm);
+
+}  // namespace maxillo::pipeline

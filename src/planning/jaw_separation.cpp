@@ -1,0 +1,98 @@
+#include "planning/jaw_separation.h"
+
+#include <Eigen/Geometry>
+#include <array>
+
+#include "core/error.h"
+#include "planning/osteotomy.h"
+#include "planning/voxel_components.h"
+#include "render/anatomical_views.h"
+
+namespace maxillo::planning {
+namespace {
+
+// Segmentation labels in (imaging/segmentation.h) and phantom labels out (sample/phantom.h).
+enum InLabel : uint8_t { kInBackground = 0, kInSoft = 1, kInAir = 2, kInBone = 3, kInTeeth = 4 };
+enum OutLabel : uint8_t { kAir = 0, kSoft = 1, kBone = 2, kUpperTooth = 3, kInnerAir = 4, kLowerTooth = 6, kMandible = 7 };
+
+Eigen::Vector3d contact(const LandmarkSet& landmarks, const std::string& upper, const std::string& lower) {
+  auto u = find_landmark(landmarks, upper), l = find_landmark(landmarks, lower);
+  if (u && l) return 0.5 * (*u + *l);
+  if (u) return *u;
+  if (l) return *l;
+  throw Error(ErrorCode::kBadValue, "jaw separation", "the occlusal plane needs " + upper + " or " + lower);
+}
+
+// Through the incisor contact and the two first molar contacts, normal pointing down.
+CutPlane occlusal_plane(const LandmarkSet& landmarks) {
+  const Eigen::Vector3d incisor = contact(landmarks, "U1", "L1");
+  const Eigen::Vector3d right = contact(landmarks, "U6R", "L6R"), left = contact(landmarks, "U6L", "L6L");
+  Eigen::Vector3d normal = (right - incisor).cross(left - incisor).normalized();
+  const auto frame = render::anatomical_frame(landmarks);
+  if (normal.dot(frame.superior) > 0) normal = -normal;
+  return {(incisor + right + left) / 3.0, normal};
+}
+
+// Coronal plane behind the second molars (normal pointing back): the rami lie behind it.
+CutPlane dental_arch_end(const LandmarkSet& landmarks, const JawSeparationOptions& o) {
+  const auto frame = render::anatomical_frame(landmarks);
+  const Eigen::Vector3d molars = 0.5 * (contact(landmarks, "U6R", "L6R") + contact(landmarks, "U6L", "L6L"));
+  return {molars - o.arch_behind_first_molar_mm * frame.anterior, -frame.anterior};
+}
+
+}  // namespace
+
+LabelVolume separate_jaws(const LabelVolume& ct_tissues, const LandmarkSet& landmarks, const JawSeparationOptions& o) {
+  const CutPlane occlusal = occlusal_plane(landmarks);
+  auto menton = find_landmark(landmarks, "Me");
+  if (!menton) throw Error(ErrorCode::kBadValue, "jaw separation", "the mandible is found from the landmark Me");
+  const auto& g = ct_tissues.geometry;
+  const size_t n = ct_tissues.labels.size();
+
+  // Bone that may belong to the mandible. Along the dental arches the occlusal plane itself
+  // divides the jaws (the alveolar bone of both touches through the teeth); behind the arches
+  // the rami rise above it, up to ramus_height_mm.
+  const CutPlane behind_arches = dental_arch_end(landmarks, o);
+  std::vector<uint8_t> candidate(n, 0);
+  for (int k = 0; k < g.size.z(); ++k)
+    for (int j = 0; j < g.size.y(); ++j)
+      for (int i = 0; i < g.size.x(); ++i) {
+        const auto v = size_t(g.index(i, j, k));
+        if (ct_tissues.labels[v] != kInBone) continue;
+        const Eigen::Vector3d p = g.world(Eigen::Vector3d(i, j, k));
+        const double reach = behind_arches.side(p) > 0 ? o.ramus_height_mm : 0.0;
+        candidate[v] = occlusal.side(p) > -reach;
+      }
+  const auto components = voxel_components(candidate, g.size);
+  // The component holding the bone voxel nearest to menton.
+  int32_t mandible = 0;
+  double best = 1e300;
+  for (size_t v = 0; v < n; ++v) {
+    if (!components.id[v]) continue;
+    const auto i = int64_t(v) % g.size.x(), j = (int64_t(v) / g.size.x()) % g.size.y(), k = int64_t(v) / (int64_t(g.size.x()) * g.size.y());
+    const double d = (g.world(Eigen::Vector3d(double(i), double(j), double(k))) - *menton).squaredNorm();
+    if (d < best) best = d, mandible = components.id[v];
+  }
+  if (!mandible) throw Error(ErrorCode::kEmptyResult, "jaw separation", "no bone near menton");
+
+  LabelVolume out;
+  out.geometry = g;
+  out.labels.assign(n, kAir);
+  for (int k = 0; k < g.size.z(); ++k)
+    for (int j = 0; j < g.size.y(); ++j)
+      for (int i = 0; i < g.size.x(); ++i) {
+        const auto v = size_t(g.index(i, j, k));
+        switch (ct_tissues.labels[v]) {
+          case kInSoft: out.labels[v] = kSoft; break;
+          case kInAir: out.labels[v] = kInnerAir; break;
+          case kInBone: out.labels[v] = components.id[v] == mandible ? kMandible : kBone; break;
+          case kInTeeth:
+            out.labels[v] = occlusal.side(g.world(Eigen::Vector3d(i, j, k))) > 0 ? kLowerTooth : kUpperTooth;
+            break;
+          default: break;
+        }
+      }
+  return out;
+}
+
+}  // namespace maxillo::planning

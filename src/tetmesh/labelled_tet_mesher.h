@@ -1,0 +1,33 @@
+#pragma once
+// A tetrahedral mesh of the voxels of one label (CGAL Mesh_3 on the labelled image): the
+// boundary facets follow the region's surface to within facet_distance_mm, the inside is
+// filled with well-shaped tets of about cell_size_mm. CGAL stays behind this header.
+#include <cstdint>
+
+#include "core/volume.h"
+#include "softtissue/tet_mesh.h"
+
+namespace maxillo::tetmesh {
+
+struct TetMeshingOptions {
+  double cell_size_mm = 4.0;       // upper bound on a tet's circumradius (and boundary facets' size)
+  double facet_distance_mm = 1.0;  // how far a boundary facet may stray from the region's surface
+  double facet_angle_deg = 25;     // lower bound on boundary facets' angles
+  double radius_edge_ratio = 3.0;  // upper bound on circumradius / shortest edge
+  int max_tets = 100000;           // the cell size grows until the mesh has at most this many
+  double optimise_seconds = 3.0;   // time limit for each of sliver perturbation and exudation
+  double sliver_bound_deg = 12;    // exudation and perturbation aim above this dihedral angle
+  int random_seed = 1;             // CGAL's refinement is randomised; fixed for reproducibility
+};
+
+struct TetMeshingResult {
+  softtissue::TetMesh mesh;   // LPS mm, positively oriented tets
+  double cell_size_mm = 0;    // the cell size that met max_tets
+  int attempts = 0;           // meshings run (a coarser one after each one over max_tets)
+  double seconds = 0;
+};
+
+// Meshes the voxels of `volume` equal to `label`. Throws Error(kEmptyResult) when there are none.
+TetMeshingResult mesh_label(const LabelVolume& volume, uint8_t label, const TetMeshingOptions& options = {});
+
+}  // namespace maxillo::tetmesh

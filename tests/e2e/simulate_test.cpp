@@ -1,0 +1,66 @@
+// maxillo simulate end to end on the phantom: sample -> import -> landmarks -> simulate.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "core/json.h"
+#include "core/temporary_folder.h"
+#include "mesh/mesh_io.h"
+#include "mesh/mesh_measures.h"
+#include "support/run_maxillo.h"
+
+namespace maxillo {
+namespace {
+
+using testing::run_maxillo;
+
+std::string text_of(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+TEST(Simulate, SixMillimetreAdvancementOfThePhantomGivesAPlausibleFace) {
+  TemporaryFolder folder("simulate-e2e");
+  const auto dir = folder.path();
+  ASSERT_EQ(run_maxillo({"sample", "--out", (dir / "sample").string(), "--spacing", "1.5"}, dir).exit_code, 0);
+  const std::string archive = "--archive=" + (dir / "archive").string();
+  ASSERT_EQ(run_maxillo({archive, "import", (dir / "sample" / "ct").string()}, dir).exit_code, 0);
+  ASSERT_EQ(run_maxillo({archive, "ceph", "add", "MAXILLO-PHANTOM-001", "--time-point", "pre", "--date", "2026-01-02",
+                         (dir / "sample" / "landmarks.mrk.json").string()},
+                        dir)
+                .exit_code,
+            0);
+  auto run = run_maxillo({archive, "--json", "simulate", "MAXILLO-PHANTOM-001", "--advance", "6", "--model", "fem",
+                          "--max-tets", "40000", "--uncertainty", "--out", (dir / "sim").string()},
+                         dir);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto summary = Json::parse(run.out);
+  EXPECT_LE(summary["tetrahedra"].get<int>(), 40000);
+  EXPECT_GT(summary["prescribed_nodes"].get<int>(), 50);
+  EXPECT_GT(summary["min_dihedral_deg"].get<double>(), 5.0);
+  // The face follows a 6 mm advancement by at most about as much, and visibly.
+  EXPECT_GT(summary["max_skin_displacement_mm"].get<double>(), 4.0);
+  EXPECT_LT(summary["max_skin_displacement_mm"].get<double>(), 7.0);
+  EXPECT_EQ(summary["uncertainty"]["runs"].size(), 4u);  // fem 0.46, mtm 0.46, fem 0.45, fem 0.49
+  EXPECT_LT(summary["uncertainty"]["p95_mm"].get<double>(), 1.0);  // plausible models agree
+  // The predicted skin: closed like the input, and the VTP carries the displacement per vertex.
+  EXPECT_TRUE(is_watertight(read_mesh(dir / "sim" / "predicted-skin.stl")));
+  EXPECT_NE(text_of(dir / "sim" / "predicted-skin.vtp").find("Name=\"displacement\""), std::string::npos);
+  for (const char* png : {"soft-tissue-before-lateral.png", "soft-tissue-after-lateral.png",
+                          "soft-tissue-displacement-frontal.png", "soft-tissue-uncertainty-lateral.png"})
+    EXPECT_TRUE(std::filesystem::exists(dir / "sim" / png)) << png;
+}
+
+TEST(Simulate, WithoutAPlanOrAMoveItSaysWhatIsMissing) {
+  TemporaryFolder folder("simulate-usage");
+  auto run = run_maxillo({"--archive=" + (folder.path() / "a").string(), "simulate", "1", "--out",
+                          (folder.path() / "sim").string()},
+                         folder.path());
+  EXPECT_NE(run.exit_code, 0);
+}
+
+}  // namespace
+}  // namespace maxillo

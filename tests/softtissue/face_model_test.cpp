@@ -1,0 +1,120 @@
+// The pieces that turn a CT into a face model: the region, the join points, and the two
+// mappings from the tet mesh to the skin.
+#include <gtest/gtest.h>
+
+#include "mesh/mesh_measures.h"
+#include "softtissue/bone_attachment.h"
+#include "softtissue/cube_mesh.h"
+#include "softtissue/face_region.h"
+#include "softtissue/gaussian_mapping.h"
+#include "softtissue/shape_function_mapping.h"
+#include "softtissue/tet_boundary.h"
+
+namespace maxillo::softtissue {
+namespace {
+
+TetMesh cube(double side, int divisions) { return make_cube_mesh({side, divisions, HexSplit::kSixTets}); }
+
+// A linear displacement field u(x) = A x + b.
+struct LinearField {
+  Eigen::Matrix3d a;
+  Eigen::Vector3d b;
+  Eigen::Vector3d at(const Eigen::Vector3d& x) const { return a * x + b; }
+  Eigen::MatrixX3d on_nodes(const TetMesh& mesh) const {
+    Eigen::MatrixX3d u(mesh.node_count(), 3);
+    for (int n = 0; n < mesh.node_count(); ++n) u.row(n) = at(mesh.nodes.row(n).transpose()).transpose();
+    return u;
+  }
+};
+const LinearField kField{(Eigen::Matrix3d() << 0.01, 0.02, 0, -0.03, 0.005, 0.01, 0.02, 0, -0.01).finished(),
+                         Eigen::Vector3d(1, -2, 0.5)};
+
+TEST(TetBoundary, IsTheClosedOutwardSurfaceOfTheCube) {
+  const auto mesh = cube(30, 4);
+  const auto boundary = tet_boundary(mesh);
+  EXPECT_EQ(boundary.surface.face_count(), 6 * 2 * 4 * 4);
+  EXPECT_TRUE(is_watertight(boundary.surface));
+  EXPECT_NEAR(maxillo::signed_volume(boundary.surface), 30.0 * 30 * 30, 1e-6);
+  EXPECT_EQ(boundary.nodes.size(), size_t(5 * 5 * 5 - 3 * 3 * 3));
+}
+
+TEST(ShapeFunctionMapping, ReproducesALinearFieldInsideAndFollowsTheSurfaceOutside) {
+  const auto mesh = cube(30, 4);
+  VertexMatrix points(4, 3);
+  points << 3, 4, 5,  // inside
+      15, 15, 15,     // centre
+      -1, 10, 10,     // 1 mm outside a face: takes the value at its projection (0, 10, 10)
+      10, 10, 45;     // 15 mm away: beyond max distance
+  auto mapping = init_shape_function_mapping(mesh, points, 2.0);
+  EXPECT_EQ(mapping.bound_count(), 3);
+  auto u = map_displacement(mesh, mapping, kField.on_nodes(mesh));
+  for (int i = 0; i < 2; ++i) EXPECT_LT((u.row(i).transpose() - kField.at(points.row(i).transpose())).norm(), 1e-9) << i;
+  EXPECT_LT((u.row(2).transpose() - kField.at(Eigen::Vector3d(0, 10, 10))).norm(), 1e-9);
+  EXPECT_EQ(u.row(3).norm(), 0.0);
+  for (size_t i = 0; i < 3; ++i) EXPECT_NEAR(mapping.weights[i].sum(), 1.0, 1e-12);  // partition of unity
+}
+
+TEST(GaussianMapping, ReproducesAConstantFieldAndIsCloseForALinearOne) {
+  const auto mesh = cube(30, 6);
+  // The skin: the cube's own surface (every skin vertex is a matched node).
+  const auto skin = tet_boundary(mesh).surface;
+  GaussianMappingOptions options;
+  options.radius_mm = 6;  // the node spacing is 5 mm
+  auto mapping = init_gaussian_mapping(mesh, skin, options);
+  const int on_surface = int(tet_boundary(mesh).nodes.size());
+  EXPECT_EQ(mapping.bound_count, on_surface);
+  Eigen::MatrixX3d constant = Eigen::MatrixX3d::Zero(mesh.node_count(), 3);
+  constant.rowwise() = Eigen::RowVector3d(1.5, -0.5, 2);
+  auto u = map_displacement(mapping, constant);
+  // Skin vertices that are tet nodes (all boundary nodes) get the constant exactly.
+  for (int n : tet_boundary(mesh).nodes) EXPECT_LT((u.row(n) - Eigen::RowVector3d(1.5, -0.5, 2)).norm(), 1e-12);
+  // A linear field: a matched vertex is dominated by its own weight (1 / 1e-6 mm).
+  auto v = map_displacement(mapping, kField.on_nodes(mesh));
+  for (int n : tet_boundary(mesh).nodes)
+    EXPECT_LT((v.row(n).transpose() - kField.at(mesh.nodes.row(n).transpose())).norm(), 1e-4);
+}
+
+TEST(FaceRegion, KeepsSoftTissueOnTheKeptSideOfEveryPlane) {
+  LabelVolume tissues;
+  tissues.geometry.size = {10, 10, 10};
+  tissues.labels.assign(1000, 1);
+  for (int i = 0; i < 100; ++i) tissues.labels[size_t(i)] = 2;  // slice k = 0 is bone
+  std::vector<RegionPlane> planes{{Eigen::Vector3d(0, 0, 6.5), -Eigen::Vector3d::UnitZ()},   // keep z < 6.5
+                                  {Eigen::Vector3d(2.5, 0, 0), Eigen::Vector3d::UnitX()}};   // keep x > 2.5
+  auto region = face_region(tissues, {1}, planes);
+  int64_t kept = 0;
+  for (auto v : region.labels) kept += v;
+  EXPECT_EQ(kept, 6 /* k = 1..6 */ * 10 * 7 /* i = 3..9 */);
+}
+
+TEST(BoneAttachment, JoinsNodesToTheBoneTheyTouchAndFixesCutPlanes) {
+  // Tet mesh: the cube [0, 20]^3. Bone: a slab of voxels at z = -1 (below the cube), split in
+  // two segments at x = 10; segment 2 moves 3 mm along y, segment 1 stays. Cut plane: x = 20.
+  const auto mesh = cube(20, 4);
+  LabelVolume segments;
+  segments.geometry.size = {23, 23, 23};
+  segments.geometry.origin = Eigen::Vector3d(-1, -1, -1);
+  segments.labels.assign(size_t(segments.geometry.voxel_count()), 0);
+  for (int j = 0; j < 23; ++j)
+    for (int i = 0; i < 23; ++i) segments.labels[size_t(segments.geometry.index(i, j, 0))] = (i - 1) < 10 ? 1 : 2;
+  const Eigen::Isometry3d move(Eigen::Translation3d(0, 3, 0));
+  std::vector<RegionPlane> cuts{{Eigen::Vector3d(20, 0, 0), -Eigen::Vector3d::UnitX()}};
+  auto attachment = attach_to_bone(mesh, segments, {{uint8_t(2), move}}, cuts, {1.2, 0.5});
+  for (int n = 0; n < mesh.node_count(); ++n) {
+    const Eigen::Vector3d p = mesh.nodes.row(n).transpose();
+    const auto c = attachment.bc.constraint[size_t(n)];
+    if (p.z() < 0.5 && p.x() > 10.5) {
+      EXPECT_EQ(c, NodeConstraint::kPrescribed) << p.transpose();
+      EXPECT_LT((attachment.bc.imposed(n) - Eigen::Vector3d(0, 3, 0)).norm(), 1e-12);
+    } else if (p.z() < 0.5 && p.x() < 9.5) {
+      EXPECT_EQ(c, NodeConstraint::kFixed) << p.transpose();
+    } else if (p.z() > 0.5 && p.x() > 19.5) {
+      EXPECT_EQ(c, NodeConstraint::kFixed) << "cut plane " << p.transpose();
+    } else if (p.z() > 0.5) {
+      EXPECT_EQ(c, NodeConstraint::kFree) << p.transpose();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace maxillo::softtissue
