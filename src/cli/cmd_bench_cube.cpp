@@ -34,7 +34,7 @@ struct CubeBenchArguments {
   int tets = 105000;
   CubeModel model = CubeModel::kFem;
   HexSplit split = HexSplit::kSixTets;
-  Preconditioner preconditioner = Preconditioner::kJacobi;
+  Preconditioner preconditioner = Preconditioner::kBlockJacobi;
   CholeskyBackend cholesky = cholmod_available() ? CholeskyBackend::kCholmodSupernodal : CholeskyBackend::kEigenSimplicial;
   double tolerance = 1e-6;
   LocalIterationOptions local{1e-3, 1.0, 1000000};
@@ -254,7 +254,8 @@ void attach_bench_cube(CLI::App& bench, CommandContext& ctx) {
   std::map<std::string, CubeModel> models{
       {"fem", CubeModel::kFem}, {"mtm", CubeModel::kMtm}, {"msm", CubeModel::kMsm}, {"nfem", CubeModel::kNfem}};
   std::map<std::string, HexSplit> splits{{"5", HexSplit::kFiveTets}, {"6", HexSplit::kSixTets}};
-  std::map<std::string, Preconditioner> preconditioners{{"jacobi", Preconditioner::kJacobi},
+  std::map<std::string, Preconditioner> preconditioners{{"block-jacobi", Preconditioner::kBlockJacobi},
+                                                        {"jacobi", Preconditioner::kJacobi},
                                                         {"ic", Preconditioner::kIncompleteCholesky}};
   std::map<std::string, CholeskyBackend> backends{{"eigen", CholeskyBackend::kEigenSimplicial},
                                                   {"cholmod", CholeskyBackend::kCholmodSupernodal}};
@@ -263,7 +264,7 @@ void attach_bench_cube(CLI::App& bench, CommandContext& ctx) {
       ->required()
       ->transform(CLI::CheckedTransformer(models, CLI::ignore_case));
   cube->add_option("--split", args->split, "tets per hexahedron: 5 or 6")->transform(CLI::CheckedTransformer(splits));
-  cube->add_option("--preconditioner", args->preconditioner, "fem: jacobi or ic (incomplete Cholesky)")
+  cube->add_option("--preconditioner", args->preconditioner, "fem: block-jacobi (matrix-free, default), jacobi or ic (incomplete Cholesky)")
       ->transform(CLI::CheckedTransformer(preconditioners, CLI::ignore_case));
   cube->add_option("--cholesky", args->cholesky, "fem re-solve factorisation: eigen or cholmod (default when built in)")
       ->transform(CLI::CheckedTransformer(backends, CLI::ignore_case));

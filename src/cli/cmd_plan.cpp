@@ -12,6 +12,7 @@
 #include "cli/command.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "pipeline/case_simulation.h"
 #include "pipeline/plan_archive.h"
 #include "pipeline/plan_case.h"
 
@@ -123,10 +124,21 @@ void print_result(const planning::PlanResult& r) {
     std::printf("forward simulation %-4s error %.3f mm\n", p.label.c_str(), p.error_mm);
 }
 
-int run_apply(const std::string& case_text, const std::filesystem::path& out, const GlobalOptions& global) {
+int run_apply(const std::string& case_text, const std::filesystem::path& out, bool predict_face,
+              const GlobalOptions& global) {
   auto archive = Archive::open(resolve_archive_dir(global));
   const int64_t case_id = archive.resolve_case(case_text);
   const pipeline::CasePlanResult applied = pipeline::apply_case_plan(archive, case_id, out);
+  if (predict_face && !applied.result.moves.empty()) {
+    // The face for the planned moves (soft tissue engine, pipeline/case_simulation.h).
+    pipeline::SimulationRequest simulation;
+    simulation.plan = applied.plan.plan;
+    simulation.out = out / "soft-tissue";
+    const auto predicted = pipeline::simulate_case(archive, case_id, simulation);
+    if (!global.json)
+      std::printf("predicted face: largest skin displacement %.1f mm (%s)\n", predicted.views.max_displacement_mm,
+                  simulation.out.string().c_str());
+  }
   if (global.json)
     std::cout << planning::plan_result_json(applied.result).dump(2) << "\n";
   else {
@@ -193,9 +205,14 @@ void attach_plan(CLI::App& app, CommandContext& ctx) {
   apply->fallthrough();
   auto apply_case = std::make_shared<std::string>();
   auto out = std::make_shared<std::filesystem::path>();
+  auto no_face = std::make_shared<bool>(false);
   apply->add_option("CASE", *apply_case, "case id, or a Patient ID")->required();
-  apply->add_option("--out", *out, "output folder (created): plan-result.json")->required();
-  apply->callback([apply_case, out, &ctx] { ctx.exit_code = run_apply(*apply_case, *out, ctx.global); });
+  apply->add_option("--out", *out,
+                    "output folder (created): plan-result.json, transfer-model.stl, planned segments, renders, "
+                    "soft-tissue/ (the predicted face)")
+      ->required();
+  apply->add_flag("--no-face", *no_face, "skip the soft-tissue prediction of the planned face");
+  apply->callback([apply_case, out, no_face, &ctx] { ctx.exit_code = run_apply(*apply_case, *out, !*no_face, ctx.global); });
 }
 
 }  // namespace maxillo::cli

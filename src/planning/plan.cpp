@@ -105,9 +105,19 @@ CutSpec read_cut(Reader& parent, const std::string& key, const std::string& sour
     }
     parent.fail(name, "\"" + text + "\" is not a cut: use \"default\"" +
                           std::string(key == "le_fort_i" ? ", \"default-high\", \"default-low\"" : "") +
-                          " or {\"point\": [x, y, z], \"normal\": [x, y, z]}");
+                          ", {\"point\": [x, y, z], \"normal\": [x, y, z]} or {\"points\": [three points]}");
   }
   Reader r(v, name, source);
+  if (r.has("points")) {
+    const Json& points = r.at("points");
+    if (!points.is_array() || points.size() != 3) r.fail(name + ".points", "must be three points [[x, y, z], ...]");
+    cut.kind = CutSpec::Kind::Points;
+    for (size_t i = 0; i < 3; ++i) cut.points[i] = r.point_of(points[i], name + ".points[" + std::to_string(i) + "]");
+    if ((cut.points[1] - cut.points[0]).cross(cut.points[2] - cut.points[0]).norm() < 1.0)
+      r.fail(name + ".points", "the three points lie (nearly) on one line: they do not define a plane");
+    r.refuse_unknown_keys();
+    return cut;
+  }
   cut.kind = CutSpec::Kind::Plane;
   const auto point = r.point("point");
   const auto normal = r.point("normal");
@@ -129,9 +139,8 @@ PlanOsteotomies read_osteotomies(const Json& json, const std::string& source) {
   for (const auto& [key, slot] : cuts)
     if (r.has(key)) *slot = read_cut(r, key, source);
   r.refuse_unknown_keys();
-  if ((o.bsso_right && o.bsso_right->kind == CutSpec::Kind::Default) ||
-      (o.bsso_left && o.bsso_left->kind == CutSpec::Kind::Default))
-    r.fail("osteotomies.bsso_right/bsso_left", "a BSSO needs explicit planes (no landmark default yet)");
+  if (bool(o.bsso_right) != bool(o.bsso_left))
+    r.fail("osteotomies.bsso_right/bsso_left", "a bilateral sagittal split needs both sides");
   return o;
 }
 
@@ -229,6 +238,8 @@ OcclusionReference read_occlusion(const Json& json, const std::string& source) {
 Json point_json(const Vector3d& p) { return Json::array({p.x(), p.y(), p.z()}); }
 
 Json cut_json(const CutSpec& cut, bool le_fort) {
+  if (cut.kind == CutSpec::Kind::Points)
+    return Json{{"points", Json::array({point_json(cut.points[0]), point_json(cut.points[1]), point_json(cut.points[2])})}};
   if (cut.kind == CutSpec::Kind::Default) {
     if (!le_fort) return "default";
     return cut.variant == LeFortVariant::Low ? "default-low" : "default-high";

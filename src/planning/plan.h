@@ -33,6 +33,7 @@
 // With both a maxilla move and a distraction, their advancement, vertical change and pitch
 // must agree (the distraction is how the move is made).
 #include <Eigen/Core>
+#include <array>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -50,10 +51,14 @@ namespace maxillo::planning {
 inline constexpr int kPlanFormatVersion = 1;
 
 struct CutSpec {
-  enum class Kind { Default, Plane };
+  // Default: from the landmarks (osteotomy.h). Plane: a point and the normal towards the part
+  // that is cut off. Points: three points on the cut (e.g. picked on the bone surface); the
+  // side that moves is the one holding the segment's reference landmark (resolve_osteotomies).
+  enum class Kind { Default, Plane, Points };
   Kind kind = Kind::Default;
   LeFortVariant variant = LeFortVariant::High;  // for a default Le Fort I
   CutPlane plane;                               // for Kind::Plane (normal unit)
+  std::array<Eigen::Vector3d, 3> points{};      // for Kind::Points, not collinear
 };
 
 struct PlanOsteotomies {

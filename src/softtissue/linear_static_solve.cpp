@@ -2,6 +2,7 @@
 
 #include <Eigen/IterativeLinearSolvers>
 
+#include "softtissue/block_pcg.h"
 #include "softtissue/free_system.h"
 
 namespace maxillo::softtissue {
@@ -31,6 +32,7 @@ StaticSolution run(Solver& solver, const Eigen::SparseMatrix<double>& k, const E
 
 StaticSolution solve_linear_static(const StiffnessBlocks& stiffness, const BoundaryConditions& bc,
                                    const KrylovOptions& options) {
+  if (options.preconditioner == Preconditioner::kBlockJacobi) return solve_block_pcg(stiffness, bc, options);
   const FreeNodeNumbering numbering = number_free_nodes(bc.constraint);
   const Eigen::SparseMatrix<double> k = free_free_matrix(stiffness, numbering);
   const Eigen::VectorXd load = free_load(stiffness, numbering, bc);

@@ -7,11 +7,13 @@
 
 namespace maxillo::softtissue {
 
-enum class Preconditioner { kJacobi, kIncompleteCholesky };
+// kBlockJacobi: the matrix-free block solver of block_pcg.h (the default, fastest here);
+// kJacobi and kIncompleteCholesky: Eigen's conjugate gradient on the assembled K_ff.
+enum class Preconditioner { kJacobi, kIncompleteCholesky, kBlockJacobi };
 enum class SolveStatus { kConverged, kNotConverged, kFactorisationFailed };
 
 struct KrylovOptions {
-  Preconditioner preconditioner = Preconditioner::kJacobi;
+  Preconditioner preconditioner = Preconditioner::kBlockJacobi;
   double relative_tolerance = 1e-8;  // on |K_ff u_f - b| / |b|
   int max_iterations = 20000;
 };

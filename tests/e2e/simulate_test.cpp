@@ -52,6 +52,16 @@ TEST(Simulate, SixMillimetreAdvancementOfThePhantomGivesAPlausibleFace) {
   for (const char* png : {"soft-tissue-before-lateral.png", "soft-tissue-after-lateral.png",
                           "soft-tissue-displacement-frontal.png", "soft-tissue-uncertainty-lateral.png"})
     EXPECT_TRUE(std::filesystem::exists(dir / "sim" / png)) << png;
+
+  // Issue 4: `plan apply` writes the transfer model and, with the soft tissue engine in, the face.
+  ASSERT_EQ(run_maxillo({archive, "plan", "create", "MAXILLO-PHANTOM-001", "--advance", "8", "--widen", "4"}, dir).exit_code, 0);
+  auto apply = run_maxillo({archive, "plan", "apply", "MAXILLO-PHANTOM-001", "--out", (dir / "plan").string()}, dir);
+  ASSERT_EQ(apply.exit_code, 0) << apply.err;
+  const auto transfer = read_mesh(dir / "plan" / "transfer-model.stl");
+  EXPECT_TRUE(is_watertight(transfer));
+  EXPECT_GT(signed_volume(transfer), 1000.0);  // mm^3
+  for (const char* file : {"plan-result.json", "planned-maxilla.stl", "plan-oblique.png", "soft-tissue/simulation.json"})
+    EXPECT_TRUE(std::filesystem::exists(dir / "plan" / file)) << file;
 }
 
 TEST(Simulate, WithoutAPlanOrAMoveItSaysWhatIsMissing) {

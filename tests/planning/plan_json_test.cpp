@@ -103,5 +103,33 @@ TEST(PlanOsteotomies, DefaultsResolveFromTheLandmarksAndPlanesPassThrough) {
   EXPECT_FALSE(cuts.bsso_right.has_value());
 }
 
+TEST(PlanOsteotomies, ACutGivenByThreePointsFacesTheMovingSegment) {
+  const LandmarkSet landmarks = make_phantom({.spacing_mm = 4.0, .noise_sigma_hu = 0}).landmarks;
+  const std::string text = R"({"format_version": 1, "osteotomies": {
+      "le_fort_i": {"points": [[-20, -60, -18], [20, -60, -18], [0, -20, -18]]},
+      "bsso_right": "default", "bsso_left": "default"}})";
+  const Plan plan = parse_plan(text, "plan.json");
+  ASSERT_EQ(plan.osteotomies.le_fort_i->kind, CutSpec::Kind::Points);
+  const Osteotomies cuts = resolve_osteotomies(plan.osteotomies, landmarks);
+  // The plane z = -18, its normal pointing down to the teeth (U1 is on the side that moves).
+  EXPECT_NEAR(cuts.le_fort_i->point.z(), -18, 1e-9);
+  EXPECT_TRUE(cuts.le_fort_i->normal.isApprox(Eigen::Vector3d(0, 0, -1)));
+  EXPECT_GT(cuts.le_fort_i->side(*find_landmark(landmarks, "U1")), 0);
+  // The BSSO defaults: coronal planes, the distal mandible (L1) in front of both.
+  ASSERT_TRUE(cuts.bsso_right && cuts.bsso_left);
+  EXPECT_GT(cuts.bsso_right->side(*find_landmark(landmarks, "L1")), 0);
+  EXPECT_GT(cuts.bsso_left->side(*find_landmark(landmarks, "L1")), 0);
+  // Round trip keeps the points.
+  const Plan again = parse_plan(serialise_plan(plan), "again.json");
+  EXPECT_TRUE(again.osteotomies.le_fort_i->points[2].isApprox(Eigen::Vector3d(0, -20, -18)));
+}
+
+TEST(PlanOsteotomies, CollinearPointsAndOneSidedSplitsAreRefused) {
+  EXPECT_THROW(parse_plan(R"({"format_version": 1, "osteotomies": {"le_fort_i": {"points": [[0, 0, 0], [1, 0, 0], [2, 0, 0]]}}})",
+                          "plan.json"),
+               Error);
+  EXPECT_THROW(parse_plan(R"({"format_version": 1, "osteotomies": {"bsso_right": "default"}})", "plan.json"), Error);
+}
+
 }  // namespace
 }  // namespace maxillo::planning

@@ -35,7 +35,9 @@ TEST_P(PatchTest, KrylovReproducesUniformStrain) {
 INSTANTIATE_TEST_SUITE_P(Solvers, PatchTest,
                          ::testing::Values(SolverCase{HexSplit::kFiveTets, Preconditioner::kJacobi},
                                            SolverCase{HexSplit::kSixTets, Preconditioner::kJacobi},
-                                           SolverCase{HexSplit::kSixTets, Preconditioner::kIncompleteCholesky}));
+                                           SolverCase{HexSplit::kSixTets, Preconditioner::kIncompleteCholesky},
+                                           SolverCase{HexSplit::kFiveTets, Preconditioner::kBlockJacobi},
+                                           SolverCase{HexSplit::kSixTets, Preconditioner::kBlockJacobi}));
 
 TEST(FactorisedElasticity, PatchTestAndFiniteRigidMotionAreExact) {
   TetMesh mesh = make_cube_mesh({40.0, 5, HexSplit::kFiveTets});
