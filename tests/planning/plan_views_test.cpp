@@ -30,7 +30,13 @@ TEST(PlanViews, ShowTheMovedMaxillaAndTheScrews) {
   const auto cut = cut_skeleton(phantom.labels, default_osteotomies(phantom.landmarks, {}));
   const auto surfaces = segment_surfaces(cut, 20000);
   ASSERT_EQ(surfaces.size(), 3u);  // cranium, maxilla, mandible
-  for (const auto& s : surfaces) EXPECT_GT(s.mesh.face_count(), 100) << segment_name(s.segment);
+  for (const auto& s : surfaces) {
+    EXPECT_GT(s.mesh.face_count(), 100) << segment_name(s.segment);
+    const auto edges = count_edges(s.mesh);  // closed surfaces: no border edge, consistent orientation
+    EXPECT_EQ(edges.boundary, 0) << segment_name(s.segment);
+    EXPECT_EQ(edges.inconsistent, 0) << segment_name(s.segment);
+    EXPECT_GT(signed_volume(s.mesh), 0) << segment_name(s.segment);
+  }
 
   std::vector<SegmentTransform> moves{{Segment::kMaxilla, Eigen::Isometry3d(Eigen::Translation3d(0, -10, 0))}};
   std::vector<ScrewAxis> screws{{"right", {-22, -58, -18}, {0, 1, 0}, 26}, {"left", {22, -58, -18}, {0, 1, 0}, 26}};
