@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 #include <array>
+#include <optional>
 
 #include "core/error.h"
 #include "planning/osteotomy.h"
@@ -40,6 +41,14 @@ CutPlane dental_arch_end(const LandmarkSet& landmarks, const JawSeparationOption
   return {molars - o.arch_behind_first_molar_mm * frame.anterior, -frame.anterior};
 }
 
+// Coronal plane a little in front of the porions (normal anterior), if they are known.
+std::optional<CutPlane> in_front_of_ears(const LandmarkSet& landmarks, const JawSeparationOptions& o) {
+  auto right = find_landmark(landmarks, "PoR"), left = find_landmark(landmarks, "PoL");
+  if (!right || !left) return std::nullopt;
+  const auto frame = render::anatomical_frame(landmarks);
+  return CutPlane{0.5 * (*right + *left) + o.condyle_in_front_of_porion_mm * frame.anterior, frame.anterior};
+}
+
 }  // namespace
 
 LabelVolume separate_jaws(const LabelVolume& ct_tissues, const LandmarkSet& landmarks, const JawSeparationOptions& o) {
@@ -53,6 +62,9 @@ LabelVolume separate_jaws(const LabelVolume& ct_tissues, const LandmarkSet& land
   // divides the jaws (the alveolar bone of both touches through the teeth); behind the arches
   // the rami rise above it, up to ramus_height_mm.
   const CutPlane behind_arches = dental_arch_end(landmarks, o);
+  // The condyles sit in front of the ear canals: bone behind them (mastoid, occiput, spine)
+  // never belongs to the mandible, and may touch it on a CT.
+  const std::optional<CutPlane> ears = in_front_of_ears(landmarks, o);
   std::vector<uint8_t> candidate(n, 0);
   for (int k = 0; k < g.size.z(); ++k)
     for (int j = 0; j < g.size.y(); ++j)
@@ -61,19 +73,27 @@ LabelVolume separate_jaws(const LabelVolume& ct_tissues, const LandmarkSet& land
         if (ct_tissues.labels[v] != kInBone) continue;
         const Eigen::Vector3d p = g.world(Eigen::Vector3d(i, j, k));
         const double reach = behind_arches.side(p) > 0 ? o.ramus_height_mm : 0.0;
-        candidate[v] = occlusal.side(p) > -reach;
+        candidate[v] = occlusal.side(p) > -reach && (!ears || ears->side(p) > 0);
       }
   const auto components = voxel_components(candidate, g.size);
-  // The component holding the bone voxel nearest to menton.
-  int32_t mandible = 0;
+  // Mandibular: the component holding the bone voxel nearest to menton, and every component
+  // with bone below the occlusal plane in front of the arches' end. On a real CT the mandible
+  // is often in pieces (thin cortex, metal streaks at the teeth); no maxillary bone lies there.
+  std::vector<char> mandibular(size_t(components.count) + 1, 0);
+  int32_t nearest = 0;
   double best = 1e300;
-  for (size_t v = 0; v < n; ++v) {
-    if (!components.id[v]) continue;
-    const auto i = int64_t(v) % g.size.x(), j = (int64_t(v) / g.size.x()) % g.size.y(), k = int64_t(v) / (int64_t(g.size.x()) * g.size.y());
-    const double d = (g.world(Eigen::Vector3d(double(i), double(j), double(k))) - *menton).squaredNorm();
-    if (d < best) best = d, mandible = components.id[v];
-  }
-  if (!mandible) throw Error(ErrorCode::kEmptyResult, "jaw separation", "no bone near menton");
+  for (int k = 0; k < g.size.z(); ++k)
+    for (int j = 0; j < g.size.y(); ++j)
+      for (int i = 0; i < g.size.x(); ++i) {
+        const auto v = size_t(g.index(i, j, k));
+        if (!components.id[v]) continue;
+        const Eigen::Vector3d p = g.world(Eigen::Vector3d(i, j, k));
+        if (behind_arches.side(p) <= 0 && occlusal.side(p) > o.below_occlusal_mm) mandibular[size_t(components.id[v])] = 1;
+        const double d = (p - *menton).squaredNorm();
+        if (d < best) best = d, nearest = components.id[v];
+      }
+  if (!nearest) throw Error(ErrorCode::kEmptyResult, "jaw separation", "no bone near menton");
+  mandibular[size_t(nearest)] = 1;
 
   LabelVolume out;
   out.geometry = g;
@@ -85,7 +105,7 @@ LabelVolume separate_jaws(const LabelVolume& ct_tissues, const LandmarkSet& land
         switch (ct_tissues.labels[v]) {
           case kInSoft: out.labels[v] = kSoft; break;
           case kInAir: out.labels[v] = kInnerAir; break;
-          case kInBone: out.labels[v] = components.id[v] == mandible ? kMandible : kBone; break;
+          case kInBone: out.labels[v] = mandibular[size_t(components.id[v])] ? kMandible : kBone; break;
           case kInTeeth:
             out.labels[v] = occlusal.side(g.world(Eigen::Vector3d(i, j, k))) > 0 ? kLowerTooth : kUpperTooth;
             break;

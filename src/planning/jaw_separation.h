@@ -5,7 +5,8 @@
 //   teeth above the occlusal plane are upper teeth, below it lower teeth (the plane through the
 //   incisor and first molar contacts; an overbite of a few voxels is misassigned, which the
 //   soft tissue model does not notice);
-//   the mandible is the bone connected to menton once the teeth are set aside, searched below
+//   the mandible is the bone connected to menton once the teeth are set aside, with every
+//   piece of bone more than 3 mm below the occlusal plane along the arches; searched below
 //   the occlusal plane along the dental arches (where upper and lower alveolar bone touch
 //   through the teeth) and below the occlusal plane + `ramus_height_mm` behind them (the rami),
 //   so that neither the teeth nor a condyle touching its fossa join the skull to it.
@@ -17,6 +18,8 @@ namespace maxillo::planning {
 struct JawSeparationOptions {
   double ramus_height_mm = 25;  // how far above the occlusal plane the rami may reach (more: the coronoid and the condyle touch the skull on a CT)
   double arch_behind_first_molar_mm = 18;  // where the dental arches end (behind the second molars)
+  double condyle_in_front_of_porion_mm = 3;  // the mandible lies in front of this (with PoR, PoL)
+  double below_occlusal_mm = 3;  // bone this far below the occlusal plane, along the arches, is mandible
 };
 
 // Input labels: 0 background, 1 soft tissue, 2 enclosed air, 3 bone, 4 teeth. Output: phantom

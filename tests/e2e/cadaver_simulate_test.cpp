@@ -1,0 +1,70 @@
+// The soft tissue prediction on the real cadaver head CT (../shared/data/cthead-stanford): a
+// 6 mm Le Fort I advancement gives a face model within the budget, joined to the moved maxilla,
+// moving the skin by about the advancement.
+// Skipped where the data is absent.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "core/json.h"
+#include "support/run_command.h"
+#include "support/temporary_folder.h"
+
+namespace maxillo {
+namespace {
+using testing::quote;
+using testing::run_command;
+
+const std::filesystem::path kCthead = std::filesystem::path(MAXILLO_SHARED_DATA) / "cthead-stanford";
+
+// Landmarks placed by hand on mid-sagittal and axial slices of the scan as wrapped by
+// scripts/cthead-to-dicom (LPS mm; the head's midline is at x = -21.5). Within a few mm: enough
+// for the frame, the region's cut planes, the occlusal plane and the Le Fort I cut.
+constexpr const char* kLandmarks = R"(label,x,y,z
+S,-21.5,-20.5,124
+N,-21.5,-77.5,141
+ANS,-21.5,-94.5,94
+PNS,-21.5,-39.5,97
+U1,-21.5,-100.5,69
+L1,-21.5,-92.5,65
+B,-21.5,-91.5,51
+Pog,-21.5,-90.5,37
+Me,-21.5,-82.5,24
+U6R,-46.5,-75,70
+U6L,3.5,-75,70
+L6R,-46.5,-75,66
+L6L,3.5,-75,66
+OrR,-54.5,-70,116
+OrL,11.5,-70,116
+PoR,-83.5,20,110
+PoL,40.5,20,110
+)";
+
+TEST(CadaverSimulate, LeFortAdvancementOnTheRealHead) {
+  if (!std::filesystem::exists(kCthead / "slices" / "CThead.1"))
+    GTEST_SKIP() << "real data absent: " << kCthead << " (see ../shared/data/README.md)";
+  testing::TemporaryFolder folder("maxillo-cadaver-simulate");
+  const std::string maxillo = std::string(MAXILLO_BINARY) + " --archive " + quote(folder / "archive");
+  auto wrap = run_command(std::string("bash ") + MAXILLO_SOURCE_DIR + "/scripts/cthead-to-dicom " + quote(folder / "ct") +
+                          " --data " + quote(kCthead / "slices") + " --maxillo " + MAXILLO_BINARY + " 2>&1");
+  ASSERT_EQ(wrap.exit_code, 0) << wrap.output;
+  ASSERT_EQ(run_command(maxillo + " import " + quote(folder / "ct") + " 2>&1").exit_code, 0);
+  std::ofstream(folder / "landmarks.csv") << kLandmarks;
+  auto add = run_command(maxillo + " ceph add CTHEAD-UNC --time-point pre --date 1989-01-01 " +
+                         quote(folder / "landmarks.csv") + " 2>&1");
+  ASSERT_EQ(add.exit_code, 0) << add.output;
+
+  auto run = run_command(maxillo + " --json simulate CTHEAD-UNC --advance 6 --out " + quote(folder / "sim") + " 2>/dev/null");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto summary = Json::parse(run.output);
+  EXPECT_LE(summary["tetrahedra"].get<int>(), 100000);
+  EXPECT_GT(summary["min_dihedral_deg"].get<double>(), 3.0);
+  EXPECT_GT(summary["prescribed_nodes"].get<int>(), 50);
+  const double largest = summary["max_skin_displacement_mm"].get<double>();
+  EXPECT_GT(largest, 4.0);
+  EXPECT_LT(largest, 9.0);
+  EXPECT_TRUE(std::filesystem::exists(folder / "sim" / "soft-tissue-displacement-lateral.png"));
+}
+
+}  // namespace
+}  // namespace maxillo
