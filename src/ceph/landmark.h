@@ -24,4 +24,12 @@ using LandmarkSet = std::vector<Landmark>;
 // The position of the landmark with this label, if present.
 std::optional<Eigen::Vector3d> find_landmark(const LandmarkSet& set, const std::string& label);
 
+// The position of a landmark a computation cannot do without; Error(kBadValue, subject,
+// "needs the landmark <label>") when it is missing.
+Eigen::Vector3d require_landmark(const LandmarkSet& set, const std::string& label, const std::string& subject);
+
+// A bilateral point as one: the mean of its R and L versions when both exist, else the
+// unsuffixed label (a 2D cephalogram), else whichever side exists.
+std::optional<Eigen::Vector3d> bilateral_mean(const LandmarkSet& set, const std::string& label);
+
 }  // namespace maxillo

@@ -83,7 +83,7 @@ int run_demo(const DemoOptions& options, const GlobalOptions& global) {
   simulation.plan = plan.plan.plan;
   simulation.out = options.out / "soft-tissue";
   simulation.uncertainty = true;
-  auto predicted = pipeline::simulate_case(archive, case_id, simulation);
+  auto predicted = pipeline::simulate_case(archive, case_id, simulation, &plan.tissues);
   report_options.soft_tissue = predicted.section;
   clock.mark("soft tissue");
   auto report = pipeline::write_consultation_report(archive, case_id, options.out / "report.pdf", report_options);

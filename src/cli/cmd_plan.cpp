@@ -134,7 +134,7 @@ int run_apply(const std::string& case_text, const std::filesystem::path& out, bo
     pipeline::SimulationRequest simulation;
     simulation.plan = applied.plan.plan;
     simulation.out = out / "soft-tissue";
-    const auto predicted = pipeline::simulate_case(archive, case_id, simulation);
+    const auto predicted = pipeline::simulate_case(archive, case_id, simulation, &applied.tissues);
     if (!global.json)
       std::printf("predicted face: largest skin displacement %.1f mm (%s)\n", predicted.views.max_displacement_mm,
                   simulation.out.string().c_str());

@@ -7,14 +7,10 @@
 #include "core/error.h"
 #include "core/json.h"
 #include "core/log.h"
-#include "imaging/segmentation.h"
-#include "imaging/volume_assembly.h"
 #include "mesh/mesh_io.h"
 #include "pipeline/case_landmarks.h"
 #include "pipeline/case_surfaces.h"
 #include "pipeline/derivation.h"
-#include "planning/enclosed_air.h"
-#include "planning/jaw_separation.h"
 #include "planning/osteotomy.h"
 #include "planning/plan_application.h"
 #include "softtissue/vtu_writer.h"
@@ -44,15 +40,16 @@ double percentile(std::vector<double> values, double p) {
   return values[k];
 }
 
-std::vector<std::filesystem::path> write_outputs(const SimulationResult& result, const std::filesystem::path& out,
-                                                 const SoftTissueOptions& options) {
+// Writes the files and returns what simulation.json holds.
+Json write_outputs(SimulationResult& result, const std::filesystem::path& out, const SoftTissueOptions& options) {
   const auto& p = result.prediction;
   Eigen::MatrixXd magnitude = p.skin_displacement.rowwise().norm();
   std::vector<PointArray> arrays{{"displacement", p.skin_displacement}, {"displacement_magnitude", magnitude}};
   if (result.uncertainty)
     arrays.push_back({"uncertainty", Eigen::Map<const Eigen::VectorXd>(result.uncertainty->spread_mm.data(),
                                                                         Eigen::Index(result.uncertainty->spread_mm.size()))});
-  std::vector<std::filesystem::path> files{out / "predicted-skin.vtp", out / "predicted-skin.stl",
+  std::vector<std::filesystem::path>& files = result.files;
+  files = {out / "predicted-skin.vtp", out / "predicted-skin.stl",
                                            out / "predicted-skin.ply", out / "soft-tissue-model.vtu",
                                            out / "simulation.json"};
   write_mesh(p.skin_after, files[0], arrays);
@@ -78,7 +75,7 @@ std::vector<std::filesystem::path> write_outputs(const SimulationResult& result,
     summary["uncertainty"] = {{"runs", result.uncertainty->runs}, {"p95_mm", result.uncertainty->p95_mm},
                               {"max_mm", result.uncertainty->max_mm}};
   write_file_atomically(files[4], summary.dump(2) + "\n");
-  return files;
+  return summary;
 }
 
 }  // namespace
@@ -144,7 +141,8 @@ Uncertainty prediction_uncertainty(const SoftTissuePrediction& base, const Trian
   return band;
 }
 
-SimulationResult simulate_case(Archive& archive, int64_t case_id, const SimulationRequest& request) {
+SimulationResult simulate_case(Archive& archive, int64_t case_id, const SimulationRequest& request,
+                               const CaseTissues* given) {
   auto contents = archive.case_contents(case_id);
   const int64_t series = primary_series(contents);
   const LandmarkSet landmarks = latest_landmarks(archive, case_id);
@@ -153,13 +151,11 @@ SimulationResult simulate_case(Archive& archive, int64_t case_id, const Simulati
                 "the case has no landmarks: attach them first (maxillo ceph add)");
   planning::validate_plan(request.plan, "plan");
 
-  const Volume ct = load_series_volume(archive.series_instance_files(series));
-  // As `plan apply` (plan_case.cpp): sinus air from the CT's closed cavities, then the jaws apart.
-  const SegmentationOptions segmentation;
-  const LabelVolume ct_tissues =
-      planning::with_enclosed_air(segment_tissues(ct, segmentation), ct, segmentation.skin_hu, kEnclosedAir);
-  const auto applied = planning::apply_plan(request.plan, ct_tissues, landmarks, planning::segmentation_anatomy_labels());
-  const LabelVolume tissues = planning::separate_jaws(ct_tissues, landmarks);
+  const CaseTissues loaded = given ? CaseTissues{} : load_case_tissues(archive, case_id, landmarks);
+  const CaseTissues& case_tissues = given ? *given : loaded;
+  const auto applied =
+      planning::apply_plan(request.plan, case_tissues.segmentation, landmarks, planning::segmentation_anatomy_labels());
+  const LabelVolume& tissues = case_tissues.jaws;
   const auto cut = planning::cut_skeleton(tissues, planning::resolve_osteotomies(request.plan.osteotomies, landmarks));
   for (const auto& s : cut.stats) log::info("bone segment ", planning::segment_name(s.segment), ": ", s.volume_ml, " ml");
 
@@ -186,7 +182,7 @@ SimulationResult simulate_case(Archive& archive, int64_t case_id, const Simulati
         std::to_string(result.uncertainty->max_mm).substr(0, 4) + " mm (95th percentile " +
         std::to_string(result.uncertainty->p95_mm).substr(0, 4) + " mm) from their mean."});
   }
-  result.files = write_outputs(result, request.out, request.options);
+  result.summary = write_outputs(result, request.out, request.options);
   return result;
 }
 

@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "archive/archive.h"
+#include "core/json.h"
+#include "pipeline/case_tissues.h"
 #include "pipeline/soft_tissue_prediction.h"
 #include "pipeline/soft_tissue_section.h"
 #include "planning/plan.h"
@@ -39,6 +41,7 @@ struct SimulationResult {
   SoftTissueViewFiles views;
   report::Section section;                          // "soft_tissue", ready for the report
   std::vector<std::filesystem::path> files;         // predicted skin (vtp, stl, ply), model (vtu), json
+  Json summary;                                     // what simulation.json holds
 };
 
 // The uncertainty band: the same model re-solved with every other model and with Poisson
@@ -46,7 +49,10 @@ struct SimulationResult {
 Uncertainty prediction_uncertainty(const SoftTissuePrediction& base, const TriangleMesh& skin,
                                    const SoftTissueOptions& options);
 
-SimulationResult simulate_case(Archive& archive, int64_t case_id, const SimulationRequest& request);
+// `tissues`: the case's segmented CT when the caller has it already (e.g. from `plan apply`);
+// null loads and segments it.
+SimulationResult simulate_case(Archive& archive, int64_t case_id, const SimulationRequest& request,
+                               const CaseTissues* tissues = nullptr);
 
 // The plan of a Le Fort I advancement by `advancement_mm` (forward, in the planning frame).
 planning::Plan le_fort_advancement_plan(double advancement_mm);

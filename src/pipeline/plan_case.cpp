@@ -3,12 +3,9 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/log.h"
-#include "imaging/segmentation.h"
-#include "imaging/volume_assembly.h"
 #include "pipeline/case_landmarks.h"
 #include "pipeline/derivation.h"
-#include "planning/enclosed_air.h"
-#include "planning/jaw_separation.h"
+#include "pipeline/case_tissues.h"
 #include "pipeline/plan_outputs.h"
 
 #include <array>
@@ -25,20 +22,13 @@ CasePlanResult apply_case_plan(Archive& archive, int64_t case_id, const std::fil
   if (landmarks.empty())
     throw Error(ErrorCode::kNotFound, subject, "the case has no landmarks: attach them with `maxillo ceph add`");
 
-  log::info("segmenting the CT for the plan (sinus air, bone, teeth)");
-  const int64_t series = primary_series(archive.case_contents(case_id));
-  const Volume ct = load_series_volume(archive.series_instance_files(series));
-  // Sinus air: the CT's closed air cavities (planning/enclosed_air.h says why not the
-  // segmentation's own enclosed-air label).
-  const SegmentationOptions segmentation;
-  const LabelVolume tissues =
-      planning::with_enclosed_air(segment_tissues(ct, segmentation), ct, segmentation.skin_hu, kEnclosedAir);
-  out.result = planning::apply_plan(plan->plan, tissues, landmarks, planning::segmentation_anatomy_labels());
+  out.tissues = load_case_tissues(archive, case_id, landmarks);
+  out.result =
+      planning::apply_plan(plan->plan, out.tissues.segmentation, landmarks, planning::segmentation_anatomy_labels());
 
   // The bone cut into segments, the planned segment surfaces, the transfer model and the
   // renders of the planned skeleton (plan_outputs.h); they need the jaws told apart.
-  const auto outputs = write_plan_outputs(planning::separate_jaws(tissues, landmarks), landmarks, out.result,
-                                          std::filesystem::absolute(out_dir));
+  const auto outputs = write_plan_outputs(out.tissues.jaws, landmarks, out.result, std::filesystem::absolute(out_dir));
   const std::array<std::string, 3> views{"frontal", "right lateral", "oblique"};
   for (size_t v = 0; v < outputs.renders.size() && v < views.size(); ++v)
     out.result.files.push_back({"Planned skeleton, " + views[v], outputs.renders[v]});

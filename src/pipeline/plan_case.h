@@ -8,6 +8,7 @@
 
 #include "archive/archive.h"
 #include "planning/plan_application.h"
+#include "pipeline/case_tissues.h"
 #include "pipeline/plan_archive.h"
 
 namespace maxillo::pipeline {
@@ -16,6 +17,7 @@ struct CasePlanResult {
   StoredPlan plan;
   planning::PlanResult result;
   std::filesystem::path result_json;  // DIR/plan-result.json
+  CaseTissues tissues;                // the segmented CT the plan was applied to (for simulate_case)
 };
 
 // Error(kNotFound) when the case has no plan or no landmarks; what volume loading, segmentation

@@ -29,17 +29,6 @@ constexpr std::array kModels = {ModelNames{SoftTissueModel::kMassTensor, "mtm", 
                                 ModelNames{SoftTissueModel::kMassSpring, "msm", "mass-spring model"},
                                 ModelNames{SoftTissueModel::kNonlinearFem, "nfem", "non-linear FEM (St Venant-Kirchhoff)"}};
 
-Eigen::Vector3d required(const LandmarkSet& landmarks, const std::string& label) {
-  if (auto p = find_landmark(landmarks, label)) return *p;
-  throw Error(ErrorCode::kBadValue, "face region", "the default region needs the landmark " + label);
-}
-
-Eigen::Vector3d bilateral_mean(const LandmarkSet& landmarks, const std::string& label) {
-  auto right = find_landmark(landmarks, label + "R"), left = find_landmark(landmarks, label + "L");
-  if (right && left) return 0.5 * (*right + *left);
-  return required(landmarks, label);
-}
-
 struct Solved {
   Eigen::MatrixX3d displacement;
   int iterations = 0;
@@ -112,12 +101,12 @@ std::optional<SoftTissueModel> parse_model(std::string_view name) {
 
 std::vector<softtissue::RegionPlane> default_face_region_planes(const LandmarkSet& landmarks) {
   const auto frame = render::anatomical_frame(landmarks);
-  const Eigen::Vector3d orbitale = bilateral_mean(landmarks, "Or");
-  const Eigen::Vector3d porion = bilateral_mean(landmarks, "Po");
-  const Eigen::Vector3d menton = required(landmarks, "Me");
-  return {{orbitale, -frame.superior},                               // below the orbits
+  const auto orbitale = bilateral_mean(landmarks, "Or"), porion = bilateral_mean(landmarks, "Po");
+  if (!orbitale || !porion) throw Error(ErrorCode::kBadValue, "face region", "needs the landmarks Or and Po (or their R/L)");
+  const Eigen::Vector3d menton = require_landmark(landmarks, "Me", "face region");
+  return {{*orbitale, -frame.superior},                              // below the orbits
           {menton - kBelowMentonMm * frame.superior, frame.superior},  // above a plane under the chin
-          {porion, frame.anterior}};                                 // in front of the ears
+          {*porion, frame.anterior}};                                // in front of the ears
 }
 
 SoftTissuePrediction predict_soft_tissue(const SoftTissueInput& input, const SoftTissueOptions& options) {

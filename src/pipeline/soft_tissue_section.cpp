@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "render/render_views.h"
+#include "render/view_files.h"
 
 #include "report/number_text.h"
 
@@ -20,19 +21,15 @@ using report::fixed;
 
 render::Bounds union_bounds(const TriangleMesh& a, const TriangleMesh& b) {
   render::Scene both;
-  both.meshes.push_back({&a});
-  both.meshes.push_back({&b});
+  both.meshes.push_back({&a, render::kSkinTone, 1.0, {}});
+  both.meshes.push_back({&b, render::kSkinTone, 1.0, {}});
   return render::scene_bounds(both);
 }
 
-std::vector<std::filesystem::path> write_all(const std::vector<render::RgbImage>& images,
-                                             const std::filesystem::path& folder, const std::string& stem) {
-  std::vector<std::filesystem::path> files;
-  for (size_t v = 0; v < images.size(); ++v) {
-    files.push_back(folder / (stem + std::string(render::name_of(kViews[v])) + ".png"));
-    render::write_png(images[v], files.back());
-  }
-  return files;
+std::vector<std::filesystem::path> pngs(const std::vector<render::ViewFile>& files) {
+  std::vector<std::filesystem::path> paths;
+  for (const auto& f : files) paths.push_back(f.png);
+  return paths;
 }
 
 std::string count_text(const softtissue::BoundaryConditions& bc) {
@@ -71,9 +68,7 @@ const std::vector<std::string>& soft_tissue_landmark_labels() {
 SoftTissueViewFiles render_soft_tissue_views(const TriangleMesh& skin_before, const SoftTissuePrediction& prediction,
                                              const render::AnatomicalFrame& frame, const std::filesystem::path& folder) {
   std::filesystem::create_directories(folder);
-  const auto bounds = union_bounds(skin_before, prediction.skin_after);
-  std::vector<render::Camera> cameras;
-  for (auto view : kViews) cameras.push_back(render::standard_camera(view, frame, bounds, 1.0));
+  const auto bounds = union_bounds(skin_before, prediction.skin_after);  // the same cameras for all
   render::RenderSettings settings;
   settings.size = {kImagePixels, kImagePixels};
 
@@ -95,23 +90,19 @@ SoftTissueViewFiles render_soft_tissue_views(const TriangleMesh& skin_before, co
   magnitude.title = "displacement (mm)";
 
   render::Scene before, after, displacement;
-  before.meshes.push_back({&skin_before, render::kSkinTone});
-  after.meshes.push_back({&prediction.skin_after, render::kSkinTone});
+  before.meshes.push_back({&skin_before, render::kSkinTone, 1.0, {}});
+  after.meshes.push_back({&prediction.skin_after, render::kSkinTone, 1.0, {}});
   displacement.meshes.push_back({&prediction.skin_after, render::kSkinTone, 1.0, magnitude});
-  files.before = write_all(render::render_scene(before, cameras, settings), folder, "soft-tissue-before-");
-  files.after = write_all(render::render_scene(after, cameras, settings), folder, "soft-tissue-after-");
-  files.displacement = write_all(render::render_scene(displacement, cameras, settings), folder, "soft-tissue-displacement-");
+  files.before = pngs(render::render_view_files(before, frame, kViews, folder, "soft-tissue-before-", settings, bounds));
+  files.after = pngs(render::render_view_files(after, frame, kViews, folder, "soft-tissue-after-", settings, bounds));
+  files.displacement =
+      pngs(render::render_view_files(displacement, frame, kViews, folder, "soft-tissue-displacement-", settings, bounds));
   return files;
 }
 
 report::ImageGrid render_uncertainty_views(const TriangleMesh& skin_after, const std::vector<double>& spread_mm,
                                            const render::AnatomicalFrame& frame, const std::filesystem::path& folder) {
   const std::array views{render::StandardView::Frontal, render::StandardView::Lateral};
-  render::Scene bounds_scene;
-  bounds_scene.meshes.push_back({&skin_after});
-  const auto bounds = render::scene_bounds(bounds_scene);
-  std::vector<render::Camera> cameras;
-  for (auto view : views) cameras.push_back(render::standard_camera(view, frame, bounds, 1.0));
   render::VertexScalars spread;
   spread.values = spread_mm;
   spread.range_min = 0;
@@ -122,15 +113,11 @@ report::ImageGrid render_uncertainty_views(const TriangleMesh& skin_after, const
   scene.meshes.push_back({&skin_after, render::kSkinTone, 1.0, spread});
   render::RenderSettings settings;
   settings.size = {kImagePixels, kImagePixels};
-  const auto images = render::render_scene(scene, cameras, settings);
+  const auto files = render::render_view_files(scene, frame, views, folder, "soft-tissue-uncertainty-", settings);
   report::ImageGrid grid;
   grid.per_row = 2;
   const std::array<std::string, 2> names{"frontal", "right lateral"};
-  for (size_t v = 0; v < images.size(); ++v) {
-    const auto file = folder / ("soft-tissue-uncertainty-" + std::string(render::name_of(views[v])) + ".png");
-    render::write_png(images[v], file);
-    grid.figures.push_back({file, "Uncertainty band, " + names[v]});
-  }
+  for (size_t v = 0; v < files.size(); ++v) grid.figures.push_back({files[v].png, "Uncertainty band, " + names[v]});
   return grid;
 }
 

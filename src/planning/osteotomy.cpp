@@ -26,19 +26,6 @@ constexpr double kBssoBehindFirstMolar = 22;      // behind the second/third mol
 constexpr double kGenioplastyFractionAboveMe = 0.35;  // of the Me-B height, at the midline
 constexpr double kGenioplastyTiltDeg = 15;        // the cut descends posteriorly
 
-Eigen::Vector3d required(const LandmarkSet& landmarks, const std::string& label, std::string_view cut) {
-  if (auto p = find_landmark(landmarks, label)) return *p;
-  throw Error(ErrorCode::kBadValue, std::string(cut), "the default cut needs the landmark " + label);
-}
-
-// A bilateral landmark: the mean of its R and L versions, or the unsuffixed one.
-std::optional<Eigen::Vector3d> bilateral_mean(const LandmarkSet& landmarks, const std::string& label) {
-  auto right = find_landmark(landmarks, label + "R"), left = find_landmark(landmarks, label + "L");
-  if (right && left) return 0.5 * (*right + *left);
-  if (auto single = find_landmark(landmarks, label)) return single;
-  return right ? right : left;
-}
-
 bool has_label(const std::vector<uint8_t>& set, uint8_t label) {
   return std::find(set.begin(), set.end(), label) != set.end();
 }
@@ -154,7 +141,7 @@ std::optional<Segment> parse_segment(std::string_view name) {
 }
 
 CutPlane default_le_fort_i(const LandmarkSet& landmarks, LeFortVariant variant) {
-  const auto ans = required(landmarks, "ANS", "Le Fort I"), pns = required(landmarks, "PNS", "Le Fort I");
+  const auto ans = require_landmark(landmarks, "ANS", "Le Fort I"), pns = require_landmark(landmarks, "PNS", "Le Fort I");
   const auto frame = render::anatomical_frame(landmarks);
   // Parallel to the palatal plane: its anterior direction, tilted about the transverse axis only.
   Eigen::Vector3d palatal = ans - pns;
@@ -172,7 +159,7 @@ CutPlane default_le_fort_i(const LandmarkSet& landmarks, LeFortVariant variant) 
 }
 
 CutPlane default_pterygomaxillary(const LandmarkSet& landmarks) {
-  const auto pns = required(landmarks, "PNS", "pterygomaxillary junction");
+  const auto pns = require_landmark(landmarks, "PNS", "pterygomaxillary junction");
   const auto frame = render::anatomical_frame(landmarks);
   return {pns - kPterygomaxillaryBehindPns * frame.anterior, frame.anterior};
 }
@@ -181,7 +168,7 @@ std::pair<CutPlane, CutPlane> default_bsso(const LandmarkSet& landmarks) {
   const auto frame = render::anatomical_frame(landmarks);
   auto side_cut = [&](const char* side) {
     const std::string molar = std::string("L6") + side;
-    return CutPlane{required(landmarks, molar, "BSSO") - kBssoBehindFirstMolar * frame.anterior, frame.anterior};
+    return CutPlane{require_landmark(landmarks, molar, "BSSO") - kBssoBehindFirstMolar * frame.anterior, frame.anterior};
   };
   return {side_cut("R"), side_cut("L")};
 }
@@ -198,8 +185,8 @@ Osteotomies default_osteotomies(const LandmarkSet& landmarks, const OsteotomyCho
 }
 
 CutPlane default_genioplasty(const LandmarkSet& landmarks) {
-  const auto b = required(landmarks, "B", "genioplasty"), me = required(landmarks, "Me", "genioplasty");
-  const auto pog = required(landmarks, "Pog", "genioplasty");
+  const auto b = require_landmark(landmarks, "B", "genioplasty"), me = require_landmark(landmarks, "Me", "genioplasty");
+  const auto pog = require_landmark(landmarks, "Pog", "genioplasty");
   const auto frame = render::anatomical_frame(landmarks);
   const double height = frame.superior.dot(b - me);
   // On the chin's front at the cut height, descending posteriorly by the tilt.

@@ -7,22 +7,16 @@ namespace {
 
 using Eigen::Vector3d;
 
-Vector3d required_landmark(const LandmarkSet& landmarks, const std::string& label, const std::string& field) {
-  const auto p = find_landmark(landmarks, label);
-  if (!p) throw Error(ErrorCode::kBadValue, field, "the case has no landmark \"" + label + "\"");
-  return *p;
-}
-
 Vector3d pivot_of(const Pivot& pivot, const LandmarkSet& landmarks, const std::string& field) {
-  return pivot.point ? *pivot.point : required_landmark(landmarks, pivot.landmark, field);
+  return pivot.point ? *pivot.point : require_landmark(landmarks, pivot.landmark, field);
 }
 
 DistractionResult plan_distraction(const DistractionSpec& spec, const PlanningFrame& frame, const LabelVolume& labels,
                                    const LandmarkSet& landmarks, const AnatomyLabels& anatomy) {
   DistractionResult result;
   result.target = spec.target;
-  result.reference.pivot = required_landmark(landmarks, "PNS", "distraction");
-  result.reference.incisor = required_landmark(landmarks, "U1", "distraction");
+  result.reference.pivot = require_landmark(landmarks, "PNS", "distraction");
+  result.reference.incisor = require_landmark(landmarks, "U1", "distraction");
   EntryPoints entries = find_entry_points(labels, frame, anatomy, landmarks);
   if (spec.entry_right) entries.right = *spec.entry_right;
   if (spec.entry_left) entries.left = *spec.entry_left;

@@ -69,16 +69,7 @@ std::vector<render::ViewFile> render_planned_skeleton(const std::vector<SegmentS
   render::Bounds bounds = render::scene_bounds(focus.meshes.empty() ? scene : focus);
   bounds.min.array() -= kFocusMarginMm;
   bounds.max.array() += kFocusMarginMm;
-  const double aspect = double(settings.size.width) / settings.size.height;
-  std::vector<render::Camera> cameras;
-  for (auto view : views) cameras.push_back(render::standard_camera(view, frame, bounds, aspect));
-  const auto images = render::render_scene(scene, cameras, settings);
-  std::vector<render::ViewFile> files;
-  for (size_t v = 0; v < views.size(); ++v) {
-    files.push_back({views[v], folder / (std::string(prefix) + std::string(render::name_of(views[v])) + ".png")});
-    render::write_png(images[v], files.back().png);
-  }
-  return files;
+  return render::render_view_files(scene, frame, views, folder, prefix, settings, bounds);
 }
 
 }  // namespace maxillo::planning

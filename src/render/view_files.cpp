@@ -9,7 +9,12 @@ namespace maxillo::render {
 std::vector<ViewFile> render_view_files(const Scene& scene, const AnatomicalFrame& frame,
                                         std::span<const StandardView> views, const std::filesystem::path& folder,
                                         std::string_view prefix, const RenderSettings& settings) {
-  const Bounds bounds = scene_bounds(scene);
+  return render_view_files(scene, frame, views, folder, prefix, settings, scene_bounds(scene));
+}
+
+std::vector<ViewFile> render_view_files(const Scene& scene, const AnatomicalFrame& frame,
+                                        std::span<const StandardView> views, const std::filesystem::path& folder,
+                                        std::string_view prefix, const RenderSettings& settings, const Bounds& bounds) {
   if (bounds.empty()) throw Error(ErrorCode::kEmptyResult, "scene", "nothing to render: no vertices");
   const double aspect = double(settings.size.width) / settings.size.height;
   std::vector<Camera> cameras;

@@ -23,5 +23,10 @@ struct ViewFile {
 std::vector<ViewFile> render_view_files(const Scene& scene, const AnatomicalFrame& frame,
                                         std::span<const StandardView> views, const std::filesystem::path& folder,
                                         std::string_view prefix = "", const RenderSettings& settings = {});
+// As above, with the cameras framing `framing` instead of the scene's bounds: a close-up of
+// part of the scene, or the same cameras for several scenes (before and after pictures).
+std::vector<ViewFile> render_view_files(const Scene& scene, const AnatomicalFrame& frame,
+                                        std::span<const StandardView> views, const std::filesystem::path& folder,
+                                        std::string_view prefix, const RenderSettings& settings, const Bounds& framing);
 
 }  // namespace maxillo::render

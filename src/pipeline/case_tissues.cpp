@@ -1,0 +1,24 @@
+#include "pipeline/case_tissues.h"
+
+#include "core/log.h"
+#include "imaging/segmentation.h"
+#include "imaging/volume_assembly.h"
+#include "pipeline/derivation.h"
+#include "planning/enclosed_air.h"
+#include "planning/jaw_separation.h"
+
+namespace maxillo::pipeline {
+
+CaseTissues load_case_tissues(Archive& archive, int64_t case_id, const LandmarkSet& landmarks) {
+  log::info("segmenting the CT (soft tissue, sinus air, bone, teeth, jaws)");
+  const int64_t series = primary_series(archive.case_contents(case_id));
+  const Volume ct = load_series_volume(archive.series_instance_files(series));
+  const SegmentationOptions segmentation;
+  CaseTissues tissues;
+  tissues.segmentation =
+      planning::with_enclosed_air(segment_tissues(ct, segmentation), ct, segmentation.skin_hu, kEnclosedAir);
+  tissues.jaws = planning::separate_jaws(tissues.segmentation, landmarks);
+  return tissues;
+}
+
+}  // namespace maxillo::pipeline
