@@ -8,7 +8,8 @@ find_package(DCMTK REQUIRED)
 find_package(ITK 5.2 REQUIRED COMPONENTS
   ITKCommon ITKIOImageBase ITKIOMeta ITKIONRRD ITKThresholding ITKConnectedComponents
   ITKBinaryMathematicalMorphology ITKMathematicalMorphology ITKLabelMap ITKImageFilterBase
-  ITKSmoothing ITKImageGrid)
+  ITKSmoothing ITKImageGrid
+  ITKRegistrationMethodsv4 ITKOptimizersv4 ITKMetricsv4 ITKOptimizers ITKSpatialObjects ITKTransform ITKStatistics)
 find_package(VTK 9.1 REQUIRED COMPONENTS
   CommonCore CommonDataModel CommonTransforms CommonExecutionModel
   FiltersCore FiltersGeneral FiltersModeling FiltersSources FiltersGeometry

@@ -109,6 +109,7 @@ void run_bench(const BenchArguments& args, CommandContext& ctx) {
 void attach_bench_cube(CLI::App& bench, CommandContext& ctx);  // cmd_bench_cube.cpp
 void attach_bench_occlusion(CLI::App& bench, CommandContext& ctx);  // cmd_bench_occlusion.cpp
 void attach_bench_face(CLI::App& bench, CommandContext& ctx);       // cmd_bench_face.cpp
+void attach_bench_register(CLI::App& bench, CommandContext& ctx);   // cmd_bench_register.cpp
 
 void attach_bench(CLI::App& app, CommandContext& ctx) {
   app.require_subcommand(1);
@@ -121,6 +122,7 @@ void attach_bench(CLI::App& app, CommandContext& ctx) {
   attach_bench_cube(app, ctx);
   attach_bench_occlusion(app, ctx);
   attach_bench_face(app, ctx);
+  attach_bench_register(app, ctx);
 }
 
 }  // namespace maxillo::cli

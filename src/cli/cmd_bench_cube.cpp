@@ -171,6 +171,7 @@ Json bench_msm(const CubeProblem& cube, const CubeBenchArguments& args, Eigen::M
           {"solve_seconds", median(times)},
           {"iterations", result.iterations},
           {"point_updates", result.point_updates},
+          {"load_steps", result.load_steps},
           {"converged", result.status == IterationStatus::kConverged},
           {"difference_from_fem_worst_mm", difference.worst_mm},
           {"difference_from_fem_mean_mm", difference.mean_mm}};

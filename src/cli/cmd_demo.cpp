@@ -13,7 +13,11 @@
 #include "pipeline/case_simulation.h"
 #include "pipeline/consultation_report.h"
 #include "pipeline/phantom_occlusion.h"
+#include "pipeline/nightly.h"
 #include "pipeline/plan_case.h"
+#include "pipeline/planned_case.h"
+#include "pipeline/synthetic_postop_case.h"
+#include "pipeline/validation_archive.h"
 #include "pipeline/sample_case.h"
 
 namespace maxillo::cli {
@@ -86,6 +90,18 @@ int run_demo(const DemoOptions& options, const GlobalOptions& global) {
   auto predicted = pipeline::simulate_case(archive, case_id, simulation, &plan.tissues);
   report_options.soft_tissue = predicted.section;
   clock.mark("soft tissue");
+  // Validation (issue #7): a synthetic post-operative CT with a known error, registered, the
+  // bone moves found by ICP, the face predicted for them and compared; then the nightly summary.
+  const auto planned = pipeline::load_planned_case(archive, case_id, &plan.tissues);
+  auto postop = pipeline::make_synthetic_postop_case(archive, case_id, {}, options.out / "postop", true, "", &planned);
+  clock.mark("synthetic post-operative CT");
+  auto validation = pipeline::validate_case(archive, case_id, {}, options.out / "validation", &planned);
+  pipeline::store_validation(archive, validation);
+  clock.mark("validation");
+  pipeline::NightlyOptions nightly_options;
+  nightly_options.out = options.out / "nightly";
+  auto nightly = pipeline::run_nightly(archive, nightly_options);
+  clock.mark("nightly summary");
   auto report = pipeline::write_consultation_report(archive, case_id, options.out / "report.pdf", report_options);
   clock.mark("volume, surfaces, views, report");
   auto cohort = pipeline::analyse_cohort(pipeline::sample_cohort(), {}, ceph::Sex::kUnknown, "sample cohort");
@@ -100,6 +116,8 @@ int run_demo(const DemoOptions& options, const GlobalOptions& global) {
                {"cohort_pages", cohort_pages}, {"plan_result", plan.result_json.string()},
                {"plan_feasible", plan.result.feasible},
                {"soft_tissue_max_displacement_mm", predicted.views.max_displacement_mm},
+               {"validation", validation.summary}, {"validation_truth", postop.truth},
+               {"nightly_summary", nightly.summary_pdf.string()}, {"nightly_pages", nightly.summary_pages},
                {"timing", clock.to_json()}};
   if (global.json) std::cout << summary.dump(2) << "\n";
   else std::cout << "demo report: " << report.pdf.string() << " (" << report.pages << " pages, "
@@ -111,7 +129,7 @@ int run_demo(const DemoOptions& options, const GlobalOptions& global) {
 
 void attach_demo(CLI::App& app, CommandContext& ctx) {
   auto options = std::make_shared<DemoOptions>();
-  app.add_option("--out", options->out, "output folder (created): sample/, archive/, report.pdf, cohort-followup.pdf")
+  app.add_option("--out", options->out, "output folder (created): sample/, archive/, report.pdf, nightly/, cohort-followup.pdf")
       ->capture_default_str();
   std::map<std::string, SkeletalClass> classes{{"I", SkeletalClass::I}, {"II", SkeletalClass::II}, {"III", SkeletalClass::III}};
   app.add_option("--class", options->skeletal_class, "skeletal class of the phantom: I, II or III")

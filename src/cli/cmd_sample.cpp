@@ -1,4 +1,4 @@
-// maxillo sample --out DIR [--spacing MM] [--class I|II|III]: writes the synthetic craniofacial
+// maxillo sample --out DIR [--spacing MM] [--class I|II|III] [--patient-id ID]: writes the synthetic craniofacial
 // phantom as a DICOM CT series (DIR/ct/) with its analytic landmarks (DIR/landmarks.mrk.json,
 // DIR/landmarks.csv; LPS mm). The repository ships no DICOM: this regenerates it in seconds.
 // The work is pipeline::write_sample_case (shared with `maxillo demo`).
@@ -16,10 +16,12 @@ struct SampleOptions {
   std::filesystem::path out;
   double spacing_mm = 1.0;
   SkeletalClass skeletal_class = SkeletalClass::I;
+  std::string patient_id = pipeline::kPhantomPatientId;
 };
 
 void run_sample(const SampleOptions& options, CommandContext& ctx) {
-  const pipeline::SampleCase sample = pipeline::write_sample_case(options.skeletal_class, options.spacing_mm, options.out);
+  const pipeline::SampleCase sample =
+      pipeline::write_sample_case(options.skeletal_class, options.spacing_mm, options.out, options.patient_id);
   const PhantomSpec spec = phantom_spec_for_class(options.skeletal_class);
   const VolumeGeometry& g = sample.geometry;
   const std::string class_name(pipeline::name_of(options.skeletal_class));
@@ -60,6 +62,8 @@ void attach_sample(CLI::App& app, CommandContext& ctx) {
          "--class", [options](const std::string& name) { options->skeletal_class = classes.at(name); },
          "skeletal class: I (ANB 2 deg, default), II (ANB ~5) or III (ANB ~-3)")
       ->check(CLI::IsMember({"I", "II", "III"}));
+  app.add_option("--patient-id", options->patient_id, "Patient ID of the phantom (another ID: another patient)")
+      ->capture_default_str();
   app.callback([options, &ctx] { run_sample(*options, ctx); });
 }
 

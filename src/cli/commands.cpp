@@ -22,6 +22,11 @@ void attach_ceph(CLI::App&, CommandContext&);
 void attach_followup(CLI::App&, CommandContext&);
 void attach_plan(CLI::App&, CommandContext&);
 void attach_simulate(CLI::App&, CommandContext&);
+void attach_register(CLI::App&, CommandContext&);
+void attach_validate(CLI::App&, CommandContext&);
+void attach_nightly(CLI::App&, CommandContext&);
+void attach_sample_postop(CLI::App&, CommandContext&);
+void attach_role(CLI::App&, CommandContext&);
 
 std::span<const CommandSpec> command_table() {
   static const std::array kCommands = {
@@ -30,16 +35,21 @@ std::span<const CommandSpec> command_table() {
       CommandSpec{"list", "Archive", "list patients, studies, series, cases or identity flags", attach_list},
       CommandSpec{"show", "Archive", "show a patient, study, series, instance or case by ID or UID", attach_show},
       CommandSpec{"verify", "Archive", "re-hash every archived object; --repair removes orphans", attach_verify},
+      CommandSpec{"role", "Archive", "set a series' role in its case (preop, postop, follow-up, unassigned)", attach_role},
       CommandSpec{"export", "Archive", "write a series' original files into a folder", attach_export},
       CommandSpec{"bench", "Archive", "benchmarks (bench import, bench cube, bench occlusion)", attach_bench},
       CommandSpec{"surfaces", "Imaging", "skin and bone surfaces from a DICOM series", attach_surfaces},
       CommandSpec{"convert", "Imaging", "wrap a MetaImage/NRRD volume as a DICOM CT series", attach_convert},
+      CommandSpec{"register", "Imaging", "rigid registration of a post-operative CT to the pre-operative CT (mutual information)", attach_register},
       CommandSpec{"report", "Reports", "consultation report of a case as PDF", attach_report},
       CommandSpec{"ceph", "Cephalometry", "cephalometric measurements, time points, ISBI check", attach_ceph},
       CommandSpec{"followup", "Cephalometry", "follow-up tables of a case or a cohort CSV", attach_followup},
       CommandSpec{"sample", "General", "write the synthetic phantom: DICOM CT series and landmarks", attach_sample},
       CommandSpec{"plan", "Planning", "surgical plan of a case: create, show, apply (distraction vectors, checks, schedule)", attach_plan},
       CommandSpec{"simulate", "Planning", "soft-tissue prediction: the face after a plan's bone moves (mtm, fem, msm)", attach_simulate},
+      CommandSpec{"validate", "Validation", "a case's prediction against its post-operative CT: distances, error map, profiles", attach_validate},
+      CommandSpec{"nightly", "Validation", "validate every case with a post-operative CT and a plan; summary PDF (--shard i/n)", attach_nightly},
+      CommandSpec{"sample-postop", "Validation", "synthetic post-operative CT of a planned case, with the known answer", attach_sample_postop},
       CommandSpec{"occlude", "Planning", "virtual occlusion: guided alignment of the dental arches, occlusionogram", attach_occlude},
       CommandSpec{"demo", "General", "the whole pipeline on the synthetic phantom, ending in a PDF report", attach_demo},
   };

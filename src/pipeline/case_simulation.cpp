@@ -11,6 +11,7 @@
 #include "pipeline/case_landmarks.h"
 #include "pipeline/case_surfaces.h"
 #include "pipeline/derivation.h"
+#include "pipeline/planned_case.h"
 #include "planning/osteotomy.h"
 #include "planning/plan_application.h"
 #include "softtissue/vtu_writer.h"
@@ -19,12 +20,6 @@ namespace maxillo::pipeline {
 namespace {
 
 constexpr double kMovedSkinMm = 0.1;  // skin vertices that move less are left out of the band's statistics
-
-std::map<uint8_t, Eigen::Isometry3d> moves_by_segment(const planning::PlanResult& applied) {
-  std::map<uint8_t, Eigen::Isometry3d> moves;
-  for (const auto& m : applied.moves) moves[uint8_t(m.segment)] = m.transform;
-  return moves;
-}
 
 LandmarkSet soft_landmarks_of(const LandmarkSet& landmarks) {
   LandmarkSet found;

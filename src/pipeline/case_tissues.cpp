@@ -10,9 +10,12 @@
 namespace maxillo::pipeline {
 
 CaseTissues load_case_tissues(Archive& archive, int64_t case_id, const LandmarkSet& landmarks) {
-  log::info("segmenting the CT (soft tissue, sinus air, bone, teeth, jaws)");
   const int64_t series = primary_series(archive.case_contents(case_id));
-  const Volume ct = load_series_volume(archive.series_instance_files(series));
+  return segment_case_tissues(load_series_volume(archive.series_instance_files(series)), landmarks);
+}
+
+CaseTissues segment_case_tissues(const Volume& ct, const LandmarkSet& landmarks) {
+  log::info("segmenting the CT (soft tissue, sinus air, bone, teeth, jaws)");
   const SegmentationOptions segmentation;
   CaseTissues tissues;
   tissues.segmentation =

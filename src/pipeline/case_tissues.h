@@ -18,5 +18,7 @@ struct CaseTissues {
 
 // The case's primary CT series, segmented. Throws what volume loading and jaw separation throw.
 CaseTissues load_case_tissues(Archive& archive, int64_t case_id, const LandmarkSet& landmarks);
+// The same for a CT already in memory.
+CaseTissues segment_case_tissues(const Volume& ct, const LandmarkSet& landmarks);
 
 }  // namespace maxillo::pipeline

@@ -11,6 +11,7 @@
 #include "pipeline/derivation.h"
 #include "pipeline/plan_archive.h"
 #include "pipeline/planning_section.h"
+#include "pipeline/validation_section.h"
 #include "report/report_template.h"
 #include "report/write_report.h"
 
@@ -130,6 +131,7 @@ ConsultationResult write_consultation_report(Archive& archive, int64_t case_id, 
   if (auto plan_result = latest_plan_result(archive, case_id)) model.sections.push_back(planning_section(*plan_result));
   if (options.occlusion) model.sections.push_back(*options.occlusion);
   if (options.soft_tissue) model.sections.push_back(*options.soft_tissue);
+  if (auto validation = latest_validation(archive, case_id)) model.sections.push_back(validation_section(*validation));
   model.sections.push_back(contents_section(archive, contents));
   result.pages = report::write_report(model, report_template, out_pdf);
   result.pdf = out_pdf;

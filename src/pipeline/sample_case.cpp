@@ -44,10 +44,11 @@ std::string_view name_of(SkeletalClass skeletal_class) {
   return "?";
 }
 
-SeriesMetadata phantom_series_metadata(const PhantomSpec& spec, SkeletalClass skeletal_class) {
+SeriesMetadata phantom_series_metadata(const PhantomSpec& spec, SkeletalClass skeletal_class,
+                                       const std::string& patient_id) {
   SeriesMetadata metadata;
   metadata.patient_name = "Phantom^Maxillo";
-  metadata.patient_id = kPhantomPatientId;
+  metadata.patient_id = patient_id;
   metadata.patient_sex = "O";
   metadata.study_date = "20240521";
   metadata.study_description = "Synthetic craniofacial phantom";
@@ -57,12 +58,14 @@ SeriesMetadata phantom_series_metadata(const PhantomSpec& spec, SkeletalClass sk
   metadata.series_description = description;
   // UIDs derived from the description: the same phantom is the same scan, so regenerating it
   // re-imports as "already archived" instead of piling up copies.
-  metadata.study_instance_uid = derived_uid("maxillo phantom study");
-  metadata.series_instance_uid = derived_uid(std::string("maxillo phantom series: ") + description);
+  const std::string patient = patient_id == kPhantomPatientId ? "" : " of " + patient_id;
+  metadata.study_instance_uid = derived_uid("maxillo phantom study" + patient);
+  metadata.series_instance_uid = derived_uid(std::string("maxillo phantom series: ") + description + patient);
   return metadata;
 }
 
-SampleCase write_sample_case(SkeletalClass skeletal_class, double spacing_mm, const fs::path& out_dir) {
+SampleCase write_sample_case(SkeletalClass skeletal_class, double spacing_mm, const fs::path& out_dir,
+                             const std::string& patient_id) {
   PhantomSpec spec = phantom_spec_for_class(skeletal_class);
   spec.spacing_mm = spacing_mm;
   std::error_code error;
@@ -72,7 +75,7 @@ SampleCase write_sample_case(SkeletalClass skeletal_class, double spacing_mm, co
   Progress progress("sample", 3);
   const Phantom phantom = make_phantom(spec);
   progress.advance();
-  const SeriesMetadata metadata = phantom_series_metadata(spec, skeletal_class);
+  const SeriesMetadata metadata = phantom_series_metadata(spec, skeletal_class, patient_id);
   log::debug("sample: patient '", metadata.patient_name, "' id '", metadata.patient_id, "'");
   SampleCase sample;
   sample.ct_folder = out_dir / "ct";

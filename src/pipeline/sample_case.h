@@ -22,13 +22,16 @@ struct SampleCase {
 inline constexpr const char* kPhantomPatientId = "MAXILLO-PHANTOM-001";
 
 // Patient, study and series attributes of the phantom's DICOM series.
-SeriesMetadata phantom_series_metadata(const PhantomSpec& spec, SkeletalClass skeletal_class);
+// Another Patient ID makes another patient (and other UIDs), e.g. several cases for `maxillo nightly`.
+SeriesMetadata phantom_series_metadata(const PhantomSpec& spec, SkeletalClass skeletal_class,
+                                       const std::string& patient_id = kPhantomPatientId);
 
 std::string_view name_of(SkeletalClass skeletal_class);  // "I", "II", "III"
 
 // Generates the phantom and writes it under out_dir (created): ct/ replaced as a whole (never
 // a mix of two runs' slices), landmarks.mrk.json and landmarks.csv. Deterministic: the same
 // class and spacing give byte-identical files, UIDs included.
-SampleCase write_sample_case(SkeletalClass skeletal_class, double spacing_mm, const std::filesystem::path& out_dir);
+SampleCase write_sample_case(SkeletalClass skeletal_class, double spacing_mm, const std::filesystem::path& out_dir,
+                             const std::string& patient_id = kPhantomPatientId);
 
 }  // namespace maxillo::pipeline

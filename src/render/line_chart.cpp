@@ -17,6 +17,7 @@
 #include "core/error.h"
 #include "render/chart.h"
 #include "render/chart_canvas.h"
+#include "render/chart_plots.h"
 
 namespace maxillo::render {
 namespace {
@@ -25,30 +26,7 @@ constexpr float kLineWidthPx = 2.5f;
 constexpr float kMarkerSizePx = 7.0f;
 constexpr ColourRGB kReferenceGrey{0.55, 0.55, 0.55};
 
-void check(const LineChart& chart) {
-  if (chart.series.empty()) throw Error(ErrorCode::kBadValue, "line chart", "no series to draw");
-  for (const auto& s : chart.series) {
-    if (s.xs.size() != s.ys.size())
-      throw Error(ErrorCode::kBadValue, "line chart series " + s.name, "xs and ys differ in length");
-    if (s.xs.empty()) throw Error(ErrorCode::kBadValue, "line chart series " + s.name, "no points");
-  }
-}
-
-vtkSmartPointer<vtkTable> table_of(const std::vector<double>& xs, const std::vector<double>& ys) {
-  auto x = vtkSmartPointer<vtkDoubleArray>::New();
-  x->SetName("x");
-  auto y = vtkSmartPointer<vtkDoubleArray>::New();
-  y->SetName("y");
-  auto table = vtkSmartPointer<vtkTable>::New();
-  table->AddColumn(x);
-  table->AddColumn(y);
-  table->SetNumberOfRows(static_cast<vtkIdType>(xs.size()));
-  for (std::size_t i = 0; i < xs.size(); ++i) {
-    table->SetValue(static_cast<vtkIdType>(i), 0, xs[i]);
-    table->SetValue(static_cast<vtkIdType>(i), 1, ys[i]);
-  }
-  return table;
-}
+void check(const LineChart& chart) { check_series(chart.series, "line chart"); }
 
 // Keeps the tables alive as long as the chart that plots them.
 struct Plotted {
@@ -58,7 +36,7 @@ struct Plotted {
 
 vtkPlot* add_line(Plotted& plotted, const std::vector<double>& xs, const std::vector<double>& ys, ColourRGB colour,
                   float width) {
-  plotted.tables.push_back(table_of(xs, ys));
+  plotted.tables.push_back(xy_table(xs, ys));
   vtkPlot* plot = plotted.chart->AddPlot(vtkChart::LINE);
   plot->SetInputData(plotted.tables.back(), 0, 1);
   plot->SetColor(colour.r, colour.g, colour.b);

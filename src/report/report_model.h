@@ -35,6 +35,10 @@ struct Paragraph {
 struct Note {  // small grey text: provenance, frames of reference, caveats
   std::string text;
 };
+struct Subheading {  // a heading inside a section (e.g. one case of a summary)
+  std::string text;
+};
+struct PageBreak {};  // the next block starts a new page (e.g. a page per case)
 struct KeyValueBlock {
   KeyValues pairs;
 };
@@ -43,7 +47,7 @@ struct ImageGrid {
   int per_row = 3;  // 1 (full width, e.g. a chart), 2 or 3
 };
 
-using Block = std::variant<Paragraph, Note, KeyValueBlock, Table, ImageGrid>;
+using Block = std::variant<Paragraph, Note, KeyValueBlock, Table, ImageGrid, Subheading, PageBreak>;
 
 struct Section {
   std::string id;  // one of known_section_ids() (report_template.h)

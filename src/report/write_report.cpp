@@ -64,6 +64,8 @@ void draw_block(PdfDocument& pdf, const Block& block) {
         if constexpr (std::is_same_v<T, KeyValueBlock>) pdf.key_values(b.pairs);
         if constexpr (std::is_same_v<T, Table>) pdf.table(b);
         if constexpr (std::is_same_v<T, ImageGrid>) pdf.figure_grid(b.figures, b.per_row);
+        if constexpr (std::is_same_v<T, Subheading>) pdf.heading(b.text, HeadingLevel::Subsection);
+        if constexpr (std::is_same_v<T, PageBreak>) pdf.new_page();
       },
       block);
 }

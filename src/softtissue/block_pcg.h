@@ -4,6 +4,8 @@
 // product K_ff p runs block row by block row (3 x 3 blocks, threads over the rows), and the
 // preconditioner is block Jacobi (the inverse of each free node's 3 x 3 diagonal block), which
 // on tetrahedral elasticity needs fewer iterations than point Jacobi.
+#include <vector>
+
 #include "softtissue/boundary_conditions.h"
 #include "softtissue/linear_static_solve.h"
 #include "softtissue/stiffness_blocks.h"
@@ -14,5 +16,18 @@ namespace maxillo::softtissue {
 // constrained nodes; stops when |r| / |b| <= options.relative_tolerance.
 StaticSolution solve_block_pcg(const StiffnessBlocks& stiffness, const BoundaryConditions& bc,
                                const KrylovOptions& options = {});
+
+// The same conjugate gradient for any right-hand side: K_ff x = b on the nodes with
+// is_free[i] != 0. Vectors are node-major (entries 3 i .. 3 i + 2 belong to node i, length
+// 3 n); b's entries on constrained nodes are ignored and x is 0 there. Used by the non-linear
+// FEM for its Newton steps, with the tangent stiffness in `stiffness`.
+struct BlockPcgResult {
+  Eigen::VectorXd x;
+  bool converged = false;
+  int iterations = 0;
+  double relative_residual = 0;  // |b - K_ff x| / |b| over the free nodes
+};
+BlockPcgResult solve_free_block_pcg(const StiffnessBlocks& stiffness, const std::vector<char>& is_free,
+                                    const Eigen::VectorXd& b, double relative_tolerance, int max_iterations);
 
 }  // namespace maxillo::softtissue

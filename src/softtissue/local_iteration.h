@@ -28,6 +28,7 @@ struct LocalIterationResult {
   int iterations = 0;             // sweeps over the active points
   long point_updates = 0;         // local solves performed (the work)
   double last_max_move_mm = 0;    // largest point move in the last sweep (G_max)
+  int load_steps = 1;             // imposed moves applied in this many steps (mass-spring)
 };
 
 // The local dynamic stop criterion, shared by the point-wise solvers. Sweeps over the active

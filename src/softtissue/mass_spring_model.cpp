@@ -2,7 +2,9 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <cassert>
+#include <cmath>
 
 namespace maxillo::softtissue {
 namespace {
@@ -23,6 +25,9 @@ void local_force(const MassSpringModel& model, const std::vector<Eigen::Vector3d
     hessian += k * axial + k * std::max(0.0, 1.0 - rest / length) * (Eigen::Matrix3d::Identity() - axial);
   }
 }
+
+constexpr double kMaxStepOverRestLength = 0.5;  // a load step moves a constrained node by at most half a spring
+constexpr int kMaxLoadSteps = 32;
 
 }  // namespace
 
@@ -67,14 +72,24 @@ Eigen::MatrixX3d spring_forces(const MassSpringModel& model, const Eigen::Matrix
   return forces;
 }
 
+int mass_spring_load_steps(const MassSpringModel& model, const BoundaryConditions& bc) {
+  double worst = 0;  // largest imposed move over the rest length of a spring to a free node
+  for (int i = 0; i < model.node_count(); ++i) {
+    if (bc.is_free(i)) continue;
+    const double move = bc.imposed(i).norm();
+    for (int s = model.offsets[size_t(i)]; s < model.offsets[size_t(i) + 1]; ++s)
+      if (bc.is_free(model.other_end[size_t(s)])) worst = std::max(worst, move / model.rest_length[size_t(s)]);
+  }
+  return std::clamp(int(std::ceil(worst / kMaxStepOverRestLength)), 1, kMaxLoadSteps);
+}
+
 LocalIterationResult solve_mass_spring(const MassSpringModel& model, const BoundaryConditions& bc,
                                        const LocalIterationOptions& options) {
   const int n = model.node_count();
   assert(bc.node_count() == n && "solve_mass_spring: conditions and model differ in node count");
   LocalIterationResult result;
-  const Eigen::MatrixX3d start = initial_displacement(bc);
   std::vector<Eigen::Vector3d> x(static_cast<size_t>(n));
-  for (int i = 0; i < n; ++i) x[size_t(i)] = (model.rest_positions.row(i) + start.row(i)).transpose();
+  for (int i = 0; i < n; ++i) x[size_t(i)] = model.rest_positions.row(i).transpose();
   Eigen::Vector3d force;
   Eigen::Matrix3d hessian;
   // A local Newton step of point i towards zero net spring force, its neighbours held.
@@ -84,7 +99,20 @@ LocalIterationResult solve_mass_spring(const MassSpringModel& model, const Bound
     x[size_t(i)] += step;
     return step;
   };
-  sweep_until_rest(model.offsets, model.other_end, bc, options, update_point, result);
+  // The imposed moves in load steps (see mass_spring_model.h), each from the previous rest.
+  result.load_steps = mass_spring_load_steps(model, bc);
+  for (int step = 1; step <= result.load_steps; ++step) {
+    const double fraction = double(step) / result.load_steps;
+    for (int i = 0; i < n; ++i)
+      if (!bc.is_free(i)) x[size_t(i)] = model.rest_positions.row(i).transpose() + fraction * bc.imposed(i);
+    LocalIterationResult step_result;
+    sweep_until_rest(model.offsets, model.other_end, bc, options, update_point, step_result);
+    result.iterations += step_result.iterations;
+    result.point_updates += step_result.point_updates;
+    result.last_max_move_mm = step_result.last_max_move_mm;
+    result.status = step_result.status;
+    if (result.status != IterationStatus::kConverged) break;
+  }
   result.displacement.resize(n, 3);
   for (int i = 0; i < n; ++i) result.displacement.row(i) = x[size_t(i)].transpose() - model.rest_positions.row(i);
   return result;

@@ -1,21 +1,25 @@
 #include "softtissue/nonlinear_fem.h"
 
-#include <Eigen/IterativeLinearSolvers>
-#include <Eigen/SparseCore>
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
-#include "softtissue/free_system.h"
+#include "softtissue/block_pcg.h"
 
 namespace maxillo::softtissue {
 namespace {
 
 using Matrix43 = Eigen::Matrix<double, 4, 3>;
 
-// Reference geometry of every tet, computed once: shape gradients and volume.
+// Reference geometry of every tet, computed once: shape gradients, volumes, and where each of
+// the tet's 16 node-pair blocks lives in the node graph (so assembling the tangent at every
+// Newton step needs no graph search).
 struct Reference {
   std::vector<Matrix43> gradients;
   std::vector<double> volumes;
+  NodeGraph graph;
+  std::vector<std::array<int, 16>> block_entries;  // entry of block (a, b) at 4 a + b
 };
 
 Reference reference_of(const TetMesh& mesh) {
@@ -29,6 +33,14 @@ Reference reference_of(const TetMesh& mesh) {
   return r;
 }
 
+void add_block_entries(const TetMesh& mesh, Reference& r) {
+  r.graph = build_node_graph(mesh);
+  r.block_entries.resize(size_t(mesh.tet_count()));
+  for (int t = 0; t < mesh.tet_count(); ++t)
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b) r.block_entries[size_t(t)][size_t(4 * a + b)] = r.graph.find(mesh.tets(t, a), mesh.tets(t, b));
+}
+
 Eigen::Matrix3d deformation_gradient(const TetMesh& mesh, int t, const Matrix43& g, const Eigen::MatrixX3d& u) {
   Eigen::Matrix3d f = Eigen::Matrix3d::Identity();
   for (int a = 0; a < 4; ++a) f += u.row(mesh.tets(t, a)).transpose() * g.row(a);
@@ -39,57 +51,59 @@ Eigen::Matrix3d svk_stress(const Eigen::Matrix3d& e, const LameParameters& lame)
   return lame.lambda * e.trace() * Eigen::Matrix3d::Identity() + 2 * lame.mu * e;
 }
 
+Eigen::Matrix3d green_lagrange(const Eigen::Matrix3d& f) {
+  return 0.5 * (f.transpose() * f - Eigen::Matrix3d::Identity());
+}
+
 Eigen::MatrixX3d forces(const TetMesh& mesh, const Reference& ref, const LameParameters& lame, const Eigen::MatrixX3d& u) {
   Eigen::MatrixX3d f = Eigen::MatrixX3d::Zero(mesh.node_count(), 3);
   for (int t = 0; t < mesh.tet_count(); ++t) {
     const auto& g = ref.gradients[size_t(t)];
     const Eigen::Matrix3d F = deformation_gradient(mesh, t, g, u);
-    const Eigen::Matrix3d E = 0.5 * (F.transpose() * F - Eigen::Matrix3d::Identity());
-    const Eigen::Matrix3d P = F * svk_stress(E, lame);
+    const Eigen::Matrix3d P = F * svk_stress(green_lagrange(F), lame);
     for (int a = 0; a < 4; ++a) f.row(mesh.tets(t, a)) += ref.volumes[size_t(t)] * (P * g.row(a).transpose()).transpose();
   }
   return f;
 }
 
-// Tangent stiffness on the free dofs: d f_a / d u_b for free nodes a, b.
-Eigen::SparseMatrix<double> tangent(const TetMesh& mesh, const Reference& ref, const LameParameters& lame,
-                                    const Eigen::MatrixX3d& u, const FreeNodeNumbering& numbering) {
-  std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(size_t(mesh.tet_count()) * 144);
+// The tangent d f / d u as node blocks (the closed form is derived in nonlinear_fem.h).
+// Rows and columns of constrained nodes are assembled too; the solver skips them.
+void assemble_tangent(const TetMesh& mesh, const Reference& ref, const LameParameters& lame, const Eigen::MatrixX3d& u,
+                      StiffnessBlocks& k) {
+  std::fill(k.blocks.begin(), k.blocks.end(), Eigen::Matrix3d::Zero());
   for (int t = 0; t < mesh.tet_count(); ++t) {
     const auto& g = ref.gradients[size_t(t)];
     const double v = ref.volumes[size_t(t)];
     const Eigen::Matrix3d F = deformation_gradient(mesh, t, g, u);
-    const Eigen::Matrix3d S = svk_stress(0.5 * (F.transpose() * F - Eigen::Matrix3d::Identity()), lame);
-    for (int b = 0; b < 4; ++b) {
-      const int fb = numbering.free_index[size_t(mesh.tets(t, b))];
-      if (fb < 0) continue;
-      for (int k = 0; k < 3; ++k) {
-        // Directional derivative of P for a unit move of node b along axis k.
-        Eigen::Matrix3d dF = Eigen::Matrix3d::Zero();
-        dF.row(k) = g.row(b);
-        const Eigen::Matrix3d dE = 0.5 * (F.transpose() * dF + dF.transpose() * F);
-        const Eigen::Matrix3d dP = dF * S + F * svk_stress(dE, lame);
-        for (int a = 0; a < 4; ++a) {
-          const int fa = numbering.free_index[size_t(mesh.tets(t, a))];
-          if (fa < 0) continue;
-          const Eigen::Vector3d column = v * dP * g.row(a).transpose();
-          for (int i = 0; i < 3; ++i) entries.emplace_back(3 * fa + i, 3 * fb + k, column[i]);
-        }
+    const Eigen::Matrix3d S = svk_stress(green_lagrange(F), lame);
+    const Eigen::Matrix3d B = F * F.transpose();
+    const Eigen::Matrix<double, 3, 4> Fg = F * g.transpose();  // column a: F g_a
+    const Eigen::Matrix<double, 4, 4> gSg = g * S * g.transpose();
+    const Eigen::Matrix<double, 4, 4> gg = g * g.transpose();
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b) {
+        Eigen::Matrix3d block = (gSg(a, b) * Eigen::Matrix3d::Identity() + lame.mu * gg(a, b) * B);
+        block.noalias() += lame.lambda * Fg.col(a) * Fg.col(b).transpose();
+        block.noalias() += lame.mu * Fg.col(b) * Fg.col(a).transpose();
+        k.blocks[size_t(ref.block_entries[size_t(t)][size_t(4 * a + b)])] += v * block;
       }
-    }
   }
-  const int n = 3 * numbering.free_count();
-  Eigen::SparseMatrix<double> k(n, n);
-  k.setFromTriplets(entries.begin(), entries.end());
-  return k;
 }
 
-Eigen::VectorXd free_residual(const Eigen::MatrixX3d& f, const FreeNodeNumbering& numbering) {
-  Eigen::VectorXd r(3 * numbering.free_count());
-  for (int i = 0; i < numbering.free_count(); ++i) r.segment<3>(3 * i) = f.row(numbering.free_nodes[size_t(i)]).transpose();
+// Node-major 3 n vector of the forces on free nodes (zero on constrained ones).
+Eigen::VectorXd free_residual(const Eigen::MatrixX3d& f, const std::vector<char>& is_free) {
+  Eigen::VectorXd r = Eigen::VectorXd::Zero(3 * f.rows());
+  for (Eigen::Index i = 0; i < f.rows(); ++i)
+    if (is_free[size_t(i)]) r.segment<3>(3 * i) = f.row(i).transpose();
   return r;
 }
+
+void add_free_step(Eigen::MatrixX3d& u, const Eigen::VectorXd& du, double alpha, const std::vector<char>& is_free) {
+  for (Eigen::Index i = 0; i < u.rows(); ++i)
+    if (is_free[size_t(i)]) u.row(i) += alpha * du.segment<3>(3 * i).transpose();
+}
+
+constexpr int kMaxLinearIterations = 20000;
 
 }  // namespace
 
@@ -97,11 +111,33 @@ Eigen::MatrixX3d internal_forces(const TetMesh& mesh, const Material& material, 
   return forces(mesh, reference_of(mesh), lame_parameters(material), u);
 }
 
+StiffnessBlocks tangent_stiffness(const TetMesh& mesh, const Material& material, const Eigen::MatrixX3d& u) {
+  Reference ref = reference_of(mesh);
+  add_block_entries(mesh, ref);
+  StiffnessBlocks k;
+  k.graph = ref.graph;
+  k.blocks.assign(k.graph.neighbours.size(), Eigen::Matrix3d::Zero());
+  assemble_tangent(mesh, ref, lame_parameters(material), u, k);
+  return k;
+}
+
 NonlinearSolution solve_nonlinear_static(const TetMesh& mesh, const Material& material, const BoundaryConditions& bc,
                                          const NewtonOptions& options) {
-  const Reference ref = reference_of(mesh);
+  Reference ref = reference_of(mesh);
+  add_block_entries(mesh, ref);
   const LameParameters lame = lame_parameters(material);
-  const FreeNodeNumbering numbering = number_free_nodes(bc.constraint);
+  std::vector<char> is_free(size_t(mesh.node_count()), 0);
+  for (int i = 0; i < mesh.node_count(); ++i) is_free[size_t(i)] = bc.is_free(i);
+  StiffnessBlocks k;  // the tangent, re-assembled in place at every Newton step
+  k.graph = ref.graph;
+  k.blocks.assign(k.graph.neighbours.size(), Eigen::Matrix3d::Zero());
+  auto newton_direction = [&](const Eigen::MatrixX3d& u, const Eigen::VectorXd& rhs, NonlinearSolution& solution) {
+    assemble_tangent(mesh, ref, lame, u, k);
+    BlockPcgResult pcg = solve_free_block_pcg(k, is_free, rhs, options.linear_tolerance, kMaxLinearIterations);
+    solution.linear_iterations += pcg.iterations;
+    return pcg.x;
+  };
+
   NonlinearSolution solution;
   solution.displacement = Eigen::MatrixX3d::Zero(mesh.node_count(), 3);
   double reference_norm = 0;
@@ -115,22 +151,15 @@ NonlinearSolution solve_nonlinear_static(const TetMesh& mesh, const Material& ma
     const Eigen::MatrixX3d f0 = forces(mesh, ref, lame, solution.displacement);
     constexpr double kEpsilon = 1e-4;
     const Eigen::VectorXd coupling =
-        (free_residual(forces(mesh, ref, lame, solution.displacement + kEpsilon * increment), numbering) -
-         free_residual(f0, numbering)) / kEpsilon;
-    const Eigen::VectorXd r0 = free_residual(f0, numbering);
+        (free_residual(forces(mesh, ref, lame, solution.displacement + kEpsilon * increment), is_free) -
+         free_residual(f0, is_free)) / kEpsilon;
+    const Eigen::VectorXd r0 = free_residual(f0, is_free);
     if (reference_norm == 0) reference_norm = std::max((r0 + coupling).norm(), 1e-300);
-    {
-      const Eigen::SparseMatrix<double> k = tangent(mesh, ref, lame, solution.displacement, numbering);
-      Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper> cg;
-      cg.setTolerance(options.linear_tolerance);
-      cg.compute(k);
-      const Eigen::VectorXd du = cg.solve(-(r0 + coupling));
-      solution.linear_iterations += int(cg.iterations());
-      solution.displacement += increment;
-      for (int i = 0; i < numbering.free_count(); ++i)
-        solution.displacement.row(numbering.free_nodes[size_t(i)]) += du.segment<3>(3 * i).transpose();
-    }
-    Eigen::VectorXd r = free_residual(forces(mesh, ref, lame, solution.displacement), numbering);
+    const Eigen::VectorXd predictor = newton_direction(solution.displacement, -(r0 + coupling), solution);
+    solution.displacement += increment;
+    add_free_step(solution.displacement, predictor, 1.0, is_free);
+
+    Eigen::VectorXd r = free_residual(forces(mesh, ref, lame, solution.displacement), is_free);
     solution.converged = false;
     for (int it = 0; it < options.max_iterations_per_step; ++it) {
       solution.relative_residual = r.norm() / reference_norm;
@@ -138,13 +167,7 @@ NonlinearSolution solve_nonlinear_static(const TetMesh& mesh, const Material& ma
         solution.converged = true;
         break;
       }
-      // The solver keeps a reference to the matrix: it must outlive solve().
-      const Eigen::SparseMatrix<double> k = tangent(mesh, ref, lame, solution.displacement, numbering);
-      Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper> cg;
-      cg.setTolerance(options.linear_tolerance);
-      cg.compute(k);
-      const Eigen::VectorXd du = cg.solve(-r);
-      solution.linear_iterations += int(cg.iterations());
+      const Eigen::VectorXd du = newton_direction(solution.displacement, -r, solution);
       ++solution.newton_iterations;
       // Backtracking: halve the step until the residual decreases (Newton may overshoot).
       double alpha = 1;
@@ -152,9 +175,8 @@ NonlinearSolution solve_nonlinear_static(const TetMesh& mesh, const Material& ma
       Eigen::VectorXd trial_r;
       for (int halving = 0; halving < 8; ++halving, alpha /= 2) {
         trial = solution.displacement;
-        for (int i = 0; i < numbering.free_count(); ++i)
-          trial.row(numbering.free_nodes[size_t(i)]) += alpha * du.segment<3>(3 * i).transpose();
-        trial_r = free_residual(forces(mesh, ref, lame, trial), numbering);
+        add_free_step(trial, du, alpha, is_free);
+        trial_r = free_residual(forces(mesh, ref, lame, trial), is_free);
         if (trial_r.norm() < r.norm()) break;
       }
       solution.displacement = trial;

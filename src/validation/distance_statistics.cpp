@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 #include "occlusion/signed_distance.h"
@@ -47,14 +48,26 @@ DistanceStatistics distance_statistics(std::span<const double> signed_mm, double
 
 std::vector<double> signed_surface_distances(const TriangleMesh& predicted, const TriangleMesh& actual,
                                              const std::vector<bool>& include, double max_distance_mm) {
+  return defined_values(signed_distance_map(predicted, actual, include, max_distance_mm));
+}
+
+std::vector<double> signed_distance_map(const TriangleMesh& predicted, const TriangleMesh& actual,
+                                        const std::vector<bool>& include, double max_distance_mm) {
   const occlusion::DistanceField field(actual);
-  std::vector<double> distances;
+  std::vector<double> map(size_t(predicted.vertex_count()), std::numeric_limits<double>::quiet_NaN());
   for (Eigen::Index v = 0; v < predicted.vertex_count(); ++v) {
     if (!include.empty() && !include[size_t(v)]) continue;
     const auto d = field.signed_distance(predicted.vertices.row(v).transpose(), max_distance_mm);
-    if (d.found) distances.push_back(d.distance);
+    if (d.found) map[size_t(v)] = d.distance;
   }
-  return distances;
+  return map;
+}
+
+std::vector<double> defined_values(const std::vector<double>& map, const std::vector<bool>& include) {
+  std::vector<double> values;
+  for (size_t i = 0; i < map.size(); ++i)
+    if (!std::isnan(map[i]) && (include.empty() || include[i])) values.push_back(map[i]);
+  return values;
 }
 
 }  // namespace maxillo::validation

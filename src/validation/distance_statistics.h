@@ -30,4 +30,11 @@ DistanceStatistics distance_statistics(std::span<const double> signed_mm, double
 std::vector<double> signed_surface_distances(const TriangleMesh& predicted, const TriangleMesh& actual,
                                              const std::vector<bool>& include = {}, double max_distance_mm = 20.0);
 
+// The same as a map over every vertex of `predicted`: NaN where a vertex is not included or has
+// no actual surface within reach (for colour maps and per-region statistics).
+std::vector<double> signed_distance_map(const TriangleMesh& predicted, const TriangleMesh& actual,
+                                        const std::vector<bool>& include = {}, double max_distance_mm = 20.0);
+// The values of a map where it is defined (not NaN) and `include` holds (all when empty).
+std::vector<double> defined_values(const std::vector<double>& map, const std::vector<bool>& include = {});
+
 }  // namespace maxillo::validation

@@ -50,12 +50,13 @@ TEST_F(DemoTest, ReportHasRealRenderedViews) {
   ASSERT_TRUE(std::filesystem::exists(report()));
   EXPECT_GE(testing::pdf_page_count(report()), 1);
   auto views = testing::pdf_images(report(), folder_->path() / "images");
-  EXPECT_EQ(views.size(), 23u) << "frontal, lateral and oblique views of skin and of bone, the occlusionogram, the "
+  EXPECT_EQ(views.size(), 27u) << "frontal, lateral and oblique views of skin and of bone, the occlusionogram, the "
                                   "splint, the Wits chart, three views of the planned skeleton, the face before, "
-                                  "predicted and its displacement map (3 views each) and the uncertainty band (2) expected";
+                                  "predicted and its displacement map (3 views each), the uncertainty band (2), the "
+                                  "validation's error maps (3) and profiles expected";
   int full_frame = 0;
   for (const auto& view : views) {
-    if (view.width == 1200 && view.height == 700) continue;  // the Wits chart: mostly white (checked below)
+    if (view.width == 1200 && (view.height == 700 || view.height == 750)) continue;  // charts: mostly white
     EXPECT_GT(view.distinct_colours, 50u) << view.file << " looks flat";
     EXPECT_GT(view.foreground_fraction, 0.05) << view.file << " looks blank";
     full_frame += view.foreground_fraction >= 0.95;
@@ -175,7 +176,7 @@ TEST_F(DemoTest, SecondRunIsIdempotent) {
                             " list series 2>/dev/null");
   int ct_series = 0;
   for (const auto& entry : Json::parse(series.output)) ct_series += entry.at("modality") == "CT";
-  EXPECT_EQ(ct_series, 1) << series.output;
+  EXPECT_EQ(ct_series, 2) << series.output;  // the phantom and its synthetic post-operative CT, once each
 }
 
 }  // namespace
@@ -204,6 +205,29 @@ TEST_F(DemoTest, PlanWritesTheTransferModelAndSegments) {
   auto text = testing::pdf_text(report());
   for (const char* expected : {"Osteotomies: bone segments", "maxilla", "Transfer model", "Printable", "Planned skeleton"})
     EXPECT_NE(text.find(expected), std::string::npos) << "missing text: " << expected;
+}
+
+}  // namespace
+}  // namespace maxillo
+
+namespace maxillo {
+namespace {
+
+// Issue 7: the prediction validated against a synthetic post-operative CT, in the report and in
+// the nightly summary.
+TEST_F(DemoTest, ReportHasTheValidationAndTheNightlySummary) {
+  ASSERT_TRUE(std::filesystem::exists(report()));
+  auto text = testing::pdf_text(report());
+  for (const char* expected : {"Validation", "mutual information", "Closest-point distance", "Corresponding-point",
+                               "lower lip", "upper lip", "cheeks", "Error map, frontal", "Mid-sagittal profiles"})
+    EXPECT_NE(text.find(expected), std::string::npos) << "missing text: " << expected;
+  const auto out = folder_->path() / "out";
+  for (const char* file : {"validation/error-map-frontal.png", "validation/profile.png", "validation/validation.json",
+                           "postop/truth.json", "nightly/validation-summary.pdf"})
+    EXPECT_TRUE(std::filesystem::exists(out / file)) << file;
+  const auto summary = out / "nightly" / "validation-summary.pdf";
+  EXPECT_GE(testing::pdf_page_count(summary), 2);
+  EXPECT_NE(testing::pdf_text(summary).find("Validation summary"), std::string::npos);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <cmath>
 
 #include "softtissue/cube_mesh.h"
 #include "softtissue/linear_static_solve.h"
@@ -98,6 +99,28 @@ TEST(NonlinearFem, SmallMovesAgreeWithLinearFem) {
   ASSERT_TRUE(nonlinear.converged);
   // Geometric non-linearity is second order in the displacement: ~1e-3 relative at 0.01 mm / 3 mm elements.
   EXPECT_LT((nonlinear.displacement - linear.displacement).cwiseAbs().maxCoeff(), 1e-3 * 0.01);
+}
+
+// The closed-form tangent: at rest it is the linear stiffness, and at a large deformation it
+// is the derivative of the internal forces (central differences, second-order accurate).
+TEST(NonlinearFem, TangentIsTheLinearStiffnessAtRestAndTheForceDerivativeAway) {
+  const auto mesh = make_cube_mesh({20.0, 2, HexSplit::kFiveTets});
+  const StiffnessBlocks linear = assemble_stiffness_blocks(mesh, {});
+  const StiffnessBlocks at_rest = tangent_stiffness(mesh, {}, Eigen::MatrixX3d::Zero(mesh.node_count(), 3));
+  ASSERT_EQ(at_rest.blocks.size(), linear.blocks.size());
+  for (size_t e = 0; e < linear.blocks.size(); ++e) EXPECT_LT((at_rest.blocks[e] - linear.blocks[e]).norm(), 1e-12);
+
+  Eigen::MatrixX3d u(mesh.node_count(), 3), v(mesh.node_count(), 3);
+  for (int i = 0; i < mesh.node_count(); ++i) {
+    const Eigen::Vector3d p = mesh.nodes.row(i).transpose();
+    u.row(i) << 0.1 * p.y() + 0.002 * p.x() * p.z(), -0.05 * p.z(), 0.15 * p.x() - 0.003 * p.y() * p.y();  // ~25 % strain
+    v.row(i) << std::sin(0.3 * p.x()), std::cos(0.2 * p.y()), 0.1 * p.z() - 1;                            // any direction
+  }
+  const double h = 1e-5;
+  const Eigen::MatrixX3d difference =
+      (internal_forces(mesh, {}, u + h * v) - internal_forces(mesh, {}, u - h * v)) / (2 * h);
+  const Eigen::MatrixX3d product = multiply(tangent_stiffness(mesh, {}, u), v);
+  EXPECT_LT((product - difference).cwiseAbs().maxCoeff(), 1e-6 * product.cwiseAbs().maxCoeff());
 }
 
 }  // namespace

@@ -4,31 +4,11 @@
 
 #include <cmath>
 
-#include "mesh/surface_extraction.h"
+#include "test_surfaces.h"
 #include "validation/distance_statistics.h"
 
 namespace maxillo::validation {
 namespace {
-
-// A closed sphere surface of radius r about the origin (iso-surface of a fine distance volume,
-// no smoothing or decimation, so its vertices lie on the sphere to within a few hundredths of a mm).
-TriangleMesh sphere(double radius) {
-  Volume v;
-  const double spacing = 0.5;
-  const int n = int(std::ceil(2 * (radius + 3) / spacing));
-  v.geometry.size = Eigen::Vector3i::Constant(n);
-  v.geometry.spacing = Eigen::Vector3d::Constant(spacing);
-  v.geometry.origin = Eigen::Vector3d::Constant(-(n - 1) * spacing / 2);
-  v.hu.resize(size_t(v.geometry.voxel_count()));
-  for (int k = 0; k < n; ++k)
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i)  // HU falls linearly through 0 at the radius: exact linear iso-surface
-        v.hu[size_t(v.geometry.index(i, j, k))] =
-            int16_t(std::lround(100.0 * (radius - v.geometry.world(Eigen::Vector3d(i, j, k)).norm())));
-  SurfaceOptions options;
-  options.smoothing_iterations = 0;
-  return extract_surface(v, 0, options);
-}
 
 TEST(DistanceStatistics, HandComputedSample) {
   const std::vector<double> d{-3, -1, 0, 1, 2, 5};
@@ -54,7 +34,7 @@ TEST(DistanceStatistics, EmptySampleIsAllZero) {
 }
 
 TEST(SignedSurfaceDistances, SphereInsideASphereIsMinusTheGapEverywhere) {
-  const auto inner = sphere(38), outer = sphere(40);
+  const auto inner = test::sphere_surface(38, 0.5), outer = test::sphere_surface(40, 0.5);
   auto d = signed_surface_distances(inner, outer);
   ASSERT_EQ(d.size(), size_t(inner.vertex_count()));
   auto s = distance_statistics(d);
@@ -69,7 +49,7 @@ TEST(SignedSurfaceDistances, SphereInsideASphereIsMinusTheGapEverywhere) {
 }
 
 TEST(SignedSurfaceDistances, OnlyTheIncludedVerticesCount) {
-  const auto inner = sphere(38), outer = sphere(40);
+  const auto inner = test::sphere_surface(38, 0.5), outer = test::sphere_surface(40, 0.5);
   std::vector<bool> upper(size_t(inner.vertex_count()));
   for (Eigen::Index v = 0; v < inner.vertex_count(); ++v) upper[size_t(v)] = inner.vertices(v, 2) > 0;
   auto d = signed_surface_distances(inner, outer, upper);

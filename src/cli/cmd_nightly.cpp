@@ -1,0 +1,57 @@
+// maxillo nightly --out DIR [--shard i/n] [--summary-only]: validate every case with a post-operative CT and a plan,
+// skipping those up to date, and write the summary PDF.
+#include <iostream>
+
+#include "cli/command.h"
+#include "core/error.h"
+#include "pipeline/nightly.h"
+
+namespace maxillo::cli {
+namespace {
+
+struct NightlyArguments {
+  std::filesystem::path out;
+  std::string shard = "1/1";
+  bool summary_only = false;
+  bool no_correspondence = false;
+};
+
+int run(const NightlyArguments& a, const GlobalOptions& global) {
+  auto archive = Archive::open(resolve_archive_dir(global));
+  pipeline::NightlyOptions options;
+  options.out = a.out;
+  options.shard = pipeline::parse_shard(a.shard);
+  options.summary_only = a.summary_only;
+  options.validation.corresponding_points = !a.no_correspondence;
+  const auto report = pipeline::run_nightly(archive, options);
+  for (const auto& c : report.cases) {
+    std::cout << "case " << c.case_id << ": " << pipeline::to_string(c.outcome);
+    if (c.outcome == pipeline::NightlyOutcome::kValidated) std::cout << " (" << c.seconds << " s)";
+    if (!c.reason.empty()) std::cout << ": " << c.reason;
+    std::cout << "\n";
+  }
+  std::cout << report.count(pipeline::NightlyOutcome::kValidated) << " validated, "
+            << report.count(pipeline::NightlyOutcome::kUpToDate) << " up to date, "
+            << report.count(pipeline::NightlyOutcome::kFailed) << " failed\n";
+  if (report.summary_written)
+    std::cout << "wrote " << report.summary_pdf.string() << " (" << report.summary_pages << " pages)\n";
+  else if (std::filesystem::exists(report.summary_pdf))
+    std::cout << "summary up to date: " << report.summary_pdf.string() << "\n";
+  else
+    std::cout << "no validated case: no summary\n";
+  return report.count(pipeline::NightlyOutcome::kFailed) ? exit_code_for(ErrorCode::kBatchPartlyFailed) : 0;
+}
+
+}  // namespace
+
+void attach_nightly(CLI::App& app, CommandContext& ctx) {
+  auto a = std::make_shared<NightlyArguments>();
+  app.add_option("--out", a->out, "output folder: case-<id>/ folders and validation-summary.pdf")->required();
+  app.add_option("--shard", a->shard, "run slice i of n (e.g. $SLURM_ARRAY_TASK_ID/$SLURM_ARRAY_TASK_COUNT)")
+      ->capture_default_str();
+  app.add_flag("--summary-only", a->summary_only, "validate nothing; summarise what the archive holds");
+  app.add_flag("--no-correspondence", a->no_correspondence, "skip the corresponding-point distances");
+  app.callback([a, &ctx] { ctx.exit_code = run(*a, ctx.global); });
+}
+
+}  // namespace maxillo::cli

@@ -1,0 +1,165 @@
+#include "pipeline/nightly.h"
+
+#include <charconv>
+#include <chrono>
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "core/log.h"
+#include "core/sha256.h"
+#include "core/version.h"
+#include "pipeline/nightly_summary.h"
+#include "pipeline/validation_archive.h"
+
+namespace maxillo::pipeline {
+namespace {
+
+std::string text_of(const std::vector<std::byte>& bytes) {
+  return std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+}
+
+struct EligibleCase {
+  int64_t case_id = 0;
+  std::string key;  // validation inputs hash
+};
+
+std::optional<std::string> inputs_hash_or_none(const Archive& archive, int64_t case_id,
+                                               const ValidationOptions& options) {
+  try {
+    return validation_inputs_hash(archive, case_id, options);
+  } catch (const Error& e) {
+    if (e.code() == ErrorCode::kNotFound) return std::nullopt;  // e.g. a follow-up cohort's image-less case
+    throw;
+  }
+}
+
+// The cases of this shard with a post-operative CT, a plan and landmarks, by case id.
+std::vector<EligibleCase> eligible_cases(const Archive& archive, const NightlyOptions& options) {
+  std::vector<EligibleCase> cases;
+  for (const auto& c : archive.cases()) {
+    const auto patient = archive.patient(c.patient);
+    if (!patient || shard_of(patient->patient_id, c.label, options.shard.count) != options.shard.index) continue;
+    if (auto key = inputs_hash_or_none(archive, c.id, options.validation)) cases.push_back({c.id, *key});
+  }
+  std::sort(cases.begin(), cases.end(), [](const auto& a, const auto& b) { return a.case_id < b.case_id; });
+  return cases;
+}
+
+NightlyCase process_case(Archive& archive, const EligibleCase& c, const NightlyOptions& options) {
+  NightlyCase result;
+  result.case_id = c.case_id;
+  if (find_validation(archive, c.case_id, c.key)) {
+    result.outcome = NightlyOutcome::kUpToDate;
+    return result;
+  }
+  if (options.summary_only) {
+    result.reason = "not validated yet (summary only)";
+    return result;
+  }
+  const auto started = std::chrono::steady_clock::now();
+  try {
+    const auto validation =
+        validate_case(archive, c.case_id, options.validation, options.out / ("case-" + std::to_string(c.case_id)));
+    store_validation(archive, validation);
+    result.outcome = NightlyOutcome::kValidated;
+  } catch (const Error& e) {
+    result.outcome = NightlyOutcome::kFailed;
+    result.reason = e.what();
+    log::error("case ", c.case_id, ": validation failed: ", e.what());
+  }
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return result;
+}
+
+std::string summary_name(const Shard& shard) {
+  if (shard.count == 1) return "validation-summary.pdf";
+  return "validation-summary-" + std::to_string(shard.index) + "-of-" + std::to_string(shard.count) + ".pdf";
+}
+
+// What the summary states about the cases: the same whether they were validated tonight or earlier, so a run that
+// changes nothing leaves the summary as it is.
+std::vector<std::string> run_facts(const NightlyReport& report, const Shard& shard, size_t shown) {
+  std::vector<std::string> facts{"Shard " + std::to_string(shard.index) + " of " + std::to_string(shard.count) + ": " +
+                                 std::to_string(report.cases.size()) +
+                                 " cases with a pre-operative CT, a post-operative CT and a plan; " +
+                                 std::to_string(shown) + " with a validation of their current inputs, " +
+                                 std::to_string(report.count(NightlyOutcome::kFailed)) + " failed."};
+  for (const auto& c : report.cases)
+    if (c.outcome == NightlyOutcome::kFailed || c.outcome == NightlyOutcome::kNotValidated)
+      facts.push_back("case " + std::to_string(c.case_id) + ": " + c.reason);
+  return facts;
+}
+
+// The summary's own key: the validations it shows and the program. Unchanged -> not rewritten.
+std::string summary_key(const std::vector<StoredValidation>& shown, const std::vector<std::string>& facts) {
+  Sha256 hash;
+  for (const auto& v : shown) hash.update(v.summary.at("inputs_hash").get<std::string>() + "\n");
+  for (const auto& f : facts) hash.update(f + "\n");
+  hash.update(kVersion);
+  return hash.hex_digest();
+}
+
+}  // namespace
+
+Shard parse_shard(std::string_view text) {
+  Shard shard;
+  const auto slash = text.find('/');
+  auto number = [&](std::string_view part, int& value) {
+    auto [end, error] = std::from_chars(part.data(), part.data() + part.size(), value);
+    return error == std::errc{} && end == part.data() + part.size();
+  };
+  if (slash == std::string_view::npos || !number(text.substr(0, slash), shard.index) ||
+      !number(text.substr(slash + 1), shard.count) || shard.count < 1 || shard.index < 1 || shard.index > shard.count)
+    throw Error(ErrorCode::kBadValue, std::string(text), "a shard is i/n with 1 <= i <= n, e.g. 2/8");
+  return shard;
+}
+
+int shard_of(const std::string& patient_id, const std::string& case_label, int count) {
+  Sha256 hash;
+  hash.update(patient_id + "\n" + case_label);
+  const std::string digest = hash.hex_digest();
+  return int(std::stoull(digest.substr(0, 12), nullptr, 16) % uint64_t(count)) + 1;
+}
+
+std::string_view to_string(NightlyOutcome outcome) {
+  switch (outcome) {
+    case NightlyOutcome::kValidated:
+      return "validated";
+    case NightlyOutcome::kUpToDate:
+      return "up to date";
+    case NightlyOutcome::kFailed:
+      return "failed";
+    case NightlyOutcome::kNotValidated:
+      return "not validated";
+  }
+  return "?";
+}
+
+int NightlyReport::count(NightlyOutcome outcome) const {
+  return int(std::count_if(cases.begin(), cases.end(), [&](const auto& c) { return c.outcome == outcome; }));
+}
+
+NightlyReport run_nightly(Archive& archive, const NightlyOptions& options) {
+  std::filesystem::create_directories(options.out);
+  NightlyReport report;
+  std::vector<StoredValidation> shown;
+  for (const auto& c : eligible_cases(archive, options)) {
+    report.cases.push_back(process_case(archive, c, options));
+    log::info("case ", c.case_id, ": ", to_string(report.cases.back().outcome));
+    if (auto stored = find_validation(archive, c.case_id, c.key)) shown.push_back(std::move(*stored));
+  }
+  report.summary_pdf = options.out / summary_name(options.shard);
+  if (shown.empty()) return report;
+  const auto facts = run_facts(report, options.shard, shown.size());
+  const auto key = summary_key(shown, facts);
+  const auto key_file = std::filesystem::path(report.summary_pdf).concat(".key");
+  if (std::filesystem::exists(report.summary_pdf) && std::filesystem::exists(key_file) &&
+      text_of(read_file(key_file)) == key)
+    return report;
+  report.summary_pages = write_validation_summary(shown, facts, report.summary_pdf);
+  write_file_atomically(key_file, key);
+  report.summary_written = true;
+  return report;
+}
+
+}  // namespace maxillo::pipeline

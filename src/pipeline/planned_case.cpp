@@ -1,0 +1,39 @@
+#include "pipeline/planned_case.h"
+
+#include "core/error.h"
+#include "imaging/volume_assembly.h"
+#include "pipeline/case_landmarks.h"
+#include "pipeline/case_surfaces.h"
+#include "pipeline/derivation.h"
+#include "planning/distractor_checks.h"
+
+namespace maxillo::pipeline {
+
+SegmentMoves moves_by_segment(const planning::PlanResult& applied) {
+  SegmentMoves moves;
+  for (const auto& m : applied.moves) moves[uint8_t(m.segment)] = m.transform;
+  return moves;
+}
+
+PlannedCase load_planned_case(Archive& archive, int64_t case_id, const CaseTissues* tissues) {
+  const std::string subject = "case:" + std::to_string(case_id);
+  PlannedCase c;
+  c.case_id = case_id;
+  c.landmarks = latest_landmarks(archive, case_id);
+  if (c.landmarks.empty())
+    throw Error(ErrorCode::kNotFound, subject, "the case has no landmarks: attach them first (maxillo ceph add)");
+  auto plan = latest_plan(archive, case_id);
+  if (!plan) throw Error(ErrorCode::kNotFound, subject, "the case has no plan: make one first (maxillo plan create)");
+  c.plan = std::move(*plan);
+  c.preop_series = primary_series(archive.case_contents(case_id));
+  c.preop_ct = load_series_volume(archive.series_instance_files(c.preop_series));
+  c.tissues = tissues ? *tissues : segment_case_tissues(c.preop_ct, c.landmarks);
+  c.applied =
+      planning::apply_plan(c.plan.plan, c.tissues.segmentation, c.landmarks, planning::segmentation_anatomy_labels());
+  c.cut = planning::cut_skeleton(c.tissues.jaws, planning::resolve_osteotomies(c.plan.plan.osteotomies, c.landmarks));
+  c.planned_moves = moves_by_segment(c.applied);
+  c.skin = case_surfaces(archive, case_id, c.preop_series).skin;
+  return c;
+}
+
+}  // namespace maxillo::pipeline

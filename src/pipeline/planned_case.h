@@ -1,0 +1,43 @@
+#pragma once
+// A case of the archive with its surgery planned: what the face prediction, the synthetic post-operative scan and the
+// validation all start from. The pre-operative CT segmented once (case_tissues.h), the newest plan applied to it, its
+// bone cut into segments by the plan's osteotomies, each segment's planned move, and the pre-operative skin surface.
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <map>
+
+#include "archive/archive.h"
+#include "ceph/landmark.h"
+#include "core/triangle_mesh.h"
+#include "core/volume.h"
+#include "pipeline/case_tissues.h"
+#include "pipeline/plan_archive.h"
+#include "planning/osteotomy.h"
+#include "planning/plan_application.h"
+
+namespace maxillo::pipeline {
+
+using SegmentMoves = std::map<uint8_t, Eigen::Isometry3d>;  // planning::Segment value -> rigid
+                                                            // move, LPS mm
+
+struct PlannedCase {
+  int64_t case_id = 0;
+  int64_t preop_series = 0;
+  Volume preop_ct;
+  LandmarkSet landmarks;  // the newest landmark set
+  CaseTissues tissues;
+  StoredPlan plan;  // the newest plan
+  planning::PlanResult applied;
+  planning::OsteotomyResult cut;  // bone segments of tissues.jaws
+  SegmentMoves planned_moves;     // the segments the plan moves
+  TriangleMesh skin;              // pre-operative skin (case_surfaces.h)
+};
+
+// Error(kNotFound) naming the case when it has no plan, no landmarks or no CT; what loading, segmentation and
+// apply_plan throw otherwise. `tissues`: the case's segmented CT when the caller has it already (e.g. from `plan
+// apply`); null segments it.
+PlannedCase load_planned_case(Archive& archive, int64_t case_id, const CaseTissues* tissues = nullptr);
+
+SegmentMoves moves_by_segment(const planning::PlanResult& applied);
+
+}  // namespace maxillo::pipeline

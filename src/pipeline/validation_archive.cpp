@@ -1,0 +1,93 @@
+#include "pipeline/validation_archive.h"
+
+#include <cmath>
+
+#include "core/atomic_file.h"
+
+namespace maxillo::pipeline {
+namespace {
+
+constexpr const char* kSummaryKind = "validation";
+constexpr const char* kDistancesKind = "validation-distances";
+constexpr const char* kImageKind = "validation-image";
+
+void store_image(Archive& archive, int64_t case_id, const std::string& key, const std::filesystem::path& png) {
+  const auto sha = archive.store_object(read_file(png));
+  archive.add_artefact(
+      NewArtefact{case_id, kImageKind, sha, "image/png", key, Json{{"name", png.stem().string()}}.dump()});
+}
+
+Json face_distances_json(const CaseValidation& v) {
+  Json closest = Json::array(), regions = Json::array();
+  for (size_t i = 0; i < v.closest_mm.size(); ++i) {
+    if (std::isnan(v.closest_mm[i])) continue;
+    closest.push_back(std::round(v.closest_mm[i] * 1000) / 1000);  // micrometres are plenty
+    regions.push_back(validation::region_name(v.regions[i]));
+  }
+  return Json{{"closest_mm", closest}, {"region", regions}};
+}
+
+Json read_json_object(const Archive& archive, const std::string& sha) {
+  const auto bytes = archive.read_object(sha);
+  return Json::parse(std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+}
+
+// The newest artefact of `kind` with this key (and, for images, this name).
+std::optional<ArtefactRecord> newest(const std::vector<ArtefactRecord>& artefacts, const std::string& kind,
+                                     const std::string& key, const std::string& name = "") {
+  std::optional<ArtefactRecord> found;
+  for (const auto& a : artefacts) {
+    if (a.kind != kind || a.inputs_hash != key) continue;
+    if (!name.empty() && Json::parse(a.parameters_json).value("name", "") != name) continue;
+    if (!found || a.id > found->id) found = a;
+  }
+  return found;
+}
+
+std::optional<StoredValidation> load(const Archive& archive, const ArtefactRecord& summary) {
+  const auto artefacts = archive.artefacts(summary.case_id);
+  StoredValidation stored;
+  stored.case_id = summary.case_id;
+  stored.summary = read_json_object(archive, summary.object_sha256);
+  for (const char* view : {"error-map-frontal", "error-map-lateral", "error-map-oblique"}) {
+    auto image = newest(artefacts, kImageKind, summary.inputs_hash, view);
+    if (!image) return std::nullopt;
+    stored.error_maps.push_back(archive.object_path(image->object_sha256));
+  }
+  auto profile = newest(artefacts, kImageKind, summary.inputs_hash, "profile");
+  auto distances = newest(artefacts, kDistancesKind, summary.inputs_hash);
+  if (!profile || !distances) return std::nullopt;
+  stored.profile = archive.object_path(profile->object_sha256);
+  const Json face = read_json_object(archive, distances->object_sha256);
+  stored.face_closest_mm = face.at("closest_mm").get<std::vector<double>>();
+  stored.face_regions = face.at("region").get<std::vector<std::string>>();
+  return stored;
+}
+
+}  // namespace
+
+void store_validation(Archive& archive, const CaseValidation& v) {
+  for (const auto& png : v.error_maps) store_image(archive, v.case_id, v.inputs_hash, png);
+  store_image(archive, v.case_id, v.inputs_hash, v.profile_png);
+  archive.add_artefact(NewArtefact{v.case_id, kDistancesKind, archive.store_object(face_distances_json(v).dump()),
+                                   "application/json", v.inputs_hash});
+  archive.add_artefact(
+      NewArtefact{v.case_id, kSummaryKind, archive.store_object(v.summary.dump()), "application/json", v.inputs_hash});
+}
+
+std::optional<StoredValidation> find_validation(const Archive& archive, int64_t case_id,
+                                                const std::string& inputs_hash) {
+  const auto summary = archive.find_artefact(case_id, kSummaryKind, inputs_hash);
+  if (!summary) return std::nullopt;
+  return load(archive, *summary);
+}
+
+std::optional<StoredValidation> latest_validation(const Archive& archive, int64_t case_id) {
+  std::optional<ArtefactRecord> found;
+  for (const auto& a : archive.artefacts(case_id))
+    if (a.kind == kSummaryKind && (!found || a.id > found->id)) found = a;
+  if (!found) return std::nullopt;
+  return load(archive, *found);
+}
+
+}  // namespace maxillo::pipeline

@@ -1,0 +1,36 @@
+#pragma once
+// Validations in the archive, keyed by their inputs' hash (case_validation.h validation_inputs_hash): the summary
+// document ("validation", JSON), the per-vertex distances of the face ("validation-distances", JSON) and the pictures
+// ("validation-image", PNG, named in the artefact's parameters). The summary is stored last, so its presence marks a
+// complete result: a run killed half-way leaves at most pictures that the next run stores again, never a summary
+// without its pictures.
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "archive/archive.h"
+#include "core/json.h"
+#include "pipeline/case_validation.h"
+
+namespace maxillo::pipeline {
+
+struct StoredValidation {
+  int64_t case_id = 0;
+  Json summary;                                   // validation.json's document
+  std::vector<std::filesystem::path> error_maps;  // object files (PNG without extension)
+  std::filesystem::path profile;
+  std::vector<double> face_closest_mm;    // closest-point distances of the face's vertices
+  std::vector<std::string> face_regions;  // the region of each
+};
+
+void store_validation(Archive& archive, const CaseValidation& validation);
+
+// The validation of the case made from exactly these inputs, if stored.
+std::optional<StoredValidation> find_validation(const Archive& archive, int64_t case_id,
+                                                const std::string& inputs_hash);
+// The case's newest stored validation, if any (for the consultation report).
+std::optional<StoredValidation> latest_validation(const Archive& archive, int64_t case_id);
+
+}  // namespace maxillo::pipeline

@@ -1,0 +1,102 @@
+#include "pipeline/validation_json.h"
+
+#include "planning/osteotomy.h"
+
+namespace maxillo::pipeline {
+namespace {
+
+Json matrix_json(const Eigen::Isometry3d& t) {
+  Json rows = Json::array();
+  for (int r = 0; r < 4; ++r) rows.push_back({t(r, 0), t(r, 1), t(r, 2), t(r, 3)});
+  return rows;
+}
+
+Json segment_json(const SegmentOutcome& s) {
+  const Eigen::AngleAxisd turn((s.planned.rotation().transpose() * s.actual.rotation()));
+  return Json{{"segment", planning::segment_name(planning::Segment(s.segment))},
+              {"planned", matrix_json(s.planned)},
+              {"actual", matrix_json(s.actual)},
+              {"icp_rms_mm", s.icp_rms_mm},
+              {"mean_difference_mm", s.mean_difference_mm},
+              {"max_difference_mm", s.max_difference_mm},
+              {"rotation_difference_deg", turn.angle() * 180 / M_PI}};
+}
+
+std::string series_date(const CaseContents& contents, int64_t series) {
+  for (const auto& entry : contents.series)
+    if (entry.series.id == series)
+      for (const auto& study : contents.studies)
+        if (study.id == entry.series.study) return study.date;
+  return "";
+}
+
+}  // namespace
+
+Json to_json(const validation::DistanceStatistics& s) {
+  return Json{{"count", s.count},
+              {"mean_absolute", s.mean_absolute},
+              {"mean_signed", s.mean_signed},
+              {"sd", s.standard_deviation},
+              {"p5", s.p5},
+              {"p25", s.p25},
+              {"p50", s.p50},
+              {"p75", s.p75},
+              {"p90", s.p90},
+              {"p95", s.p95},
+              {"max_absolute", s.max_absolute},
+              {"within_tolerance_percent", s.within_tolerance_percent}};
+}
+
+validation::DistanceStatistics statistics_from_json(const Json& j) {
+  validation::DistanceStatistics s;
+  if (j.is_null()) return s;
+  s.count = j.at("count").get<int>();
+  s.mean_absolute = j.at("mean_absolute").get<double>();
+  s.mean_signed = j.at("mean_signed").get<double>();
+  s.standard_deviation = j.at("sd").get<double>();
+  s.p5 = j.at("p5").get<double>();
+  s.p25 = j.at("p25").get<double>();
+  s.p50 = j.at("p50").get<double>();
+  s.p75 = j.at("p75").get<double>();
+  s.p90 = j.at("p90").get<double>();
+  s.p95 = j.at("p95").get<double>();
+  s.max_absolute = j.at("max_absolute").get<double>();
+  s.within_tolerance_percent = j.at("within_tolerance_percent").get<double>();
+  return s;
+}
+
+Json validation_json(const CaseValidation& v, const CaseContents& contents) {
+  Json segments = Json::array();
+  for (const auto& s : v.segments) segments.push_back(segment_json(s));
+  Json regions = Json::array();
+  for (const auto& r : v.statistics)
+    regions.push_back({{"region", r.region},
+                       {"closest", to_json(r.closest)},
+                       {"corresponding", r.corresponding.count ? to_json(r.corresponding) : Json(nullptr)}});
+  return Json{{"case", v.case_id},
+              {"case_label", contents.record.label},
+              {"preop_series", v.preop_series},
+              {"postop_series", v.postop_series},
+              {"preop_date", series_date(contents, v.preop_series)},
+              {"postop_date", series_date(contents, v.postop_series)},
+              {"inputs_hash", v.inputs_hash},
+              {"registration",
+               {{"moving_to_fixed", matrix_json(v.registration.moving_to_fixed)},
+                {"metric", v.registration.metric},
+                {"iterations", v.registration.iterations},
+                {"seconds", v.registration.seconds},
+                {"cranium_icp_rms_mm", v.cranium_icp_rms_mm}}},
+              {"segments", segments},
+              {"regions", regions},
+              {"seconds", v.seconds}};
+}
+
+std::vector<StoredRegion> stored_regions(const Json& validation) {
+  std::vector<StoredRegion> rows;
+  for (const auto& r : validation.at("regions"))
+    rows.push_back({r.at("region").get<std::string>(), statistics_from_json(r.at("closest")),
+                    statistics_from_json(r.at("corresponding"))});
+  return rows;
+}
+
+}  // namespace maxillo::pipeline

@@ -1,0 +1,195 @@
+#include "validation/rigid_icp.h"
+
+#include <Eigen/Cholesky>
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <random>
+#include <utility>
+#include <vector>
+
+#include "core/error.h"
+#include "occlusion/aabb_tree.h"
+
+namespace maxillo::validation {
+namespace {
+
+using occlusion::TriangleFeature;
+
+// Pairs whose normals differ by more than this are not the same piece of surface.
+const double kMinNormalCosine = std::cos(60.0 * M_PI / 180.0);
+
+Eigen::Vector3d row(const VertexMatrix& v, int i) { return v.row(i).transpose(); }
+
+// Area-weighted vertex normals (unit; zero for unused vertices).
+std::vector<Eigen::Vector3d> vertex_normals(const TriangleMesh& mesh) {
+  std::vector<Eigen::Vector3d> normals(size_t(mesh.vertex_count()), Eigen::Vector3d::Zero());
+  for (Eigen::Index f = 0; f < mesh.face_count(); ++f) {
+    const auto face = mesh.faces.row(f);
+    const Eigen::Vector3d n = (row(mesh.vertices, face(1)) - row(mesh.vertices, face(0)))
+                                  .cross(row(mesh.vertices, face(2)) - row(mesh.vertices, face(0)));
+    for (int k = 0; k < 3; ++k) normals[size_t(face(k))] += n;  // |n| = twice the area: area weighting
+  }
+  for (auto& n : normals)
+    if (n.norm() > 0) n.normalize();
+  return normals;
+}
+
+// The target's open border: edges used by one face, and their vertices. A closest point there is
+// where the target simply ends, not a counterpart of the moving point.
+struct Border {
+  std::map<std::pair<int, int>, int> edge_uses;
+  std::vector<char> vertex;
+
+  explicit Border(const TriangleMesh& mesh) : vertex(size_t(mesh.vertex_count()), 0) {
+    for (Eigen::Index f = 0; f < mesh.face_count(); ++f)
+      for (int k = 0; k < 3; ++k) ++edge_uses[key(mesh.faces(f, k), mesh.faces(f, (k + 1) % 3))];
+    for (const auto& [edge, uses] : edge_uses)
+      if (uses == 1) vertex[size_t(edge.first)] = vertex[size_t(edge.second)] = 1;
+  }
+  static std::pair<int, int> key(int a, int b) { return {std::min(a, b), std::max(a, b)}; }
+  bool edge(int a, int b) const { return edge_uses.at(key(a, b)) == 1; }
+
+  bool contains(const TriangleMesh& mesh, int face, TriangleFeature feature) const {
+    const auto f = mesh.faces.row(face);
+    switch (feature) {
+      case TriangleFeature::Face: return false;
+      case TriangleFeature::EdgeAB: return edge(f(0), f(1));
+      case TriangleFeature::EdgeBC: return edge(f(1), f(2));
+      case TriangleFeature::EdgeCA: return edge(f(2), f(0));
+      case TriangleFeature::VertexA: return vertex[size_t(f(0))] != 0;
+      case TriangleFeature::VertexB: return vertex[size_t(f(1))] != 0;
+      case TriangleFeature::VertexC: return vertex[size_t(f(2))] != 0;
+    }
+    return false;
+  }
+};
+
+// Up to `count` vertex indices, a deterministic random subset in increasing order.
+std::vector<int> sample_vertices(Eigen::Index vertex_count, int count, uint32_t seed) {
+  std::vector<int> all(static_cast<size_t>(vertex_count));
+  std::iota(all.begin(), all.end(), 0);
+  if (count > 0 && vertex_count > count) {
+    std::mt19937 random(seed);
+    std::shuffle(all.begin(), all.end(), random);
+    all.resize(size_t(count));
+    std::sort(all.begin(), all.end());
+  }
+  return all;
+}
+
+struct Pair {
+  Eigen::Vector3d p;       // moving sample, placed by the current transform
+  Eigen::Vector3d q;       // its closest point on the target
+  Eigen::Vector3d normal;  // the target face's unit normal at q
+};
+
+class Matcher {
+ public:
+  Matcher(const TriangleMesh& moving, const TriangleMesh& target, const IcpOptions& options)
+      : moving_(moving), target_(target), tree_(target), border_(target), options_(options),
+        moving_normals_(vertex_normals(moving)),
+        samples_(sample_vertices(moving.vertex_count(), options.max_samples, options.seed)) {
+    face_normals_.reserve(size_t(target.face_count()));
+    for (Eigen::Index f = 0; f < target.face_count(); ++f) {
+      const auto t = tree_.triangle(int(f));
+      const Eigen::Vector3d n = (t.b - t.a).cross(t.c - t.a);
+      face_normals_.push_back(n.norm() > 0 ? Eigen::Vector3d(n.normalized()) : Eigen::Vector3d::Zero());
+    }
+  }
+
+  std::vector<Pair> pairs(const Eigen::Isometry3d& transform) const {
+    std::vector<Pair> found;
+    found.reserve(samples_.size());
+    for (int i : samples_) {
+      const Eigen::Vector3d p = transform * row(moving_.vertices, i);
+      const auto nearest = tree_.nearest(p, options_.max_pair_distance_mm);
+      if (nearest.face < 0 || border_.contains(target_, nearest.face, nearest.feature)) continue;
+      const Eigen::Vector3d& n = face_normals_[size_t(nearest.face)];
+      if ((transform.linear() * moving_normals_[size_t(i)]).dot(n) < kMinNormalCosine) continue;
+      found.push_back({p, nearest.point, n});
+    }
+    return found;
+  }
+
+ private:
+  const TriangleMesh& moving_;
+  const TriangleMesh& target_;
+  occlusion::AabbTree tree_;
+  Border border_;
+  const IcpOptions& options_;
+  std::vector<Eigen::Vector3d> moving_normals_;
+  std::vector<Eigen::Vector3d> face_normals_;
+  std::vector<int> samples_;
+};
+
+// One point-to-plane step: the small rotation w (about the pairs' centroid c) and translation t
+// minimising sum(((p + w x (p - c) + t - q) . n)^2), returned as an exact rigid increment. Also the
+// largest distance the increment moves any paired point (for the stop criterion).
+std::pair<Eigen::Isometry3d, double> point_to_plane_step(const std::vector<Pair>& pairs) {
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  for (const auto& pair : pairs) centroid += pair.p;
+  centroid /= double(pairs.size());
+
+  Eigen::Matrix<double, 6, 6> normal_matrix = Eigen::Matrix<double, 6, 6>::Zero();
+  Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
+  double radius = 0;
+  for (const auto& pair : pairs) {
+    const Eigen::Vector3d arm = pair.p - centroid;
+    radius = std::max(radius, arm.norm());
+    Eigen::Matrix<double, 6, 1> jacobian;
+    jacobian << arm.cross(pair.normal), pair.normal;  // d(residual)/d(w, t)
+    const double residual = (pair.p - pair.q).dot(pair.normal);
+    normal_matrix.selfadjointView<Eigen::Lower>().rankUpdate(jacobian);
+    rhs -= jacobian * residual;
+  }
+  // A whisper of damping keeps a rotationally symmetric pair set (a sphere, a cylinder) solvable;
+  // the free directions then simply do not move.
+  normal_matrix.diagonal().array() += 1e-12 * (normal_matrix.trace() + 1.0);
+  const Eigen::Matrix<double, 6, 1> x = normal_matrix.selfadjointView<Eigen::Lower>().ldlt().solve(rhs);
+  const Eigen::Vector3d w = x.head<3>(), t = x.tail<3>();
+
+  Eigen::Isometry3d step = Eigen::Isometry3d::Identity();
+  if (w.norm() > 0) step.linear() = Eigen::AngleAxisd(w.norm(), w.normalized()).toRotationMatrix();
+  step.translation() = centroid + t - step.linear() * centroid;  // rotate about the centroid
+  return {step, t.norm() + w.norm() * radius};
+}
+
+double rms_distance(const std::vector<Pair>& pairs) {
+  double sum = 0;
+  for (const auto& pair : pairs) sum += (pair.p - pair.q).squaredNorm();
+  return pairs.empty() ? 0.0 : std::sqrt(sum / double(pairs.size()));
+}
+
+}  // namespace
+
+IcpResult rigid_icp(const TriangleMesh& moving, const TriangleMesh& target, const Eigen::Isometry3d& initial,
+                    const IcpOptions& options) {
+  if (moving.vertex_count() == 0 || moving.face_count() == 0)
+    throw Error(ErrorCode::kBadValue, "ICP moving surface", "the mesh is empty");
+  if (target.vertex_count() == 0 || target.face_count() == 0)
+    throw Error(ErrorCode::kBadValue, "ICP target surface", "the mesh is empty");
+
+  const Matcher matcher(moving, target, options);
+  IcpResult result;
+  result.transform = initial;
+  std::vector<Pair> pairs;
+  for (result.iterations = 0; result.iterations < options.max_iterations;) {
+    pairs = matcher.pairs(result.transform);
+    if (pairs.size() < 6)
+      throw Error(ErrorCode::kProcessing, "ICP",
+                  "only " + std::to_string(pairs.size()) + " surface pairs within " +
+                      std::to_string(options.max_pair_distance_mm) + " mm: the start is too far from the target");
+    const auto [step, largest_motion] = point_to_plane_step(pairs);
+    result.transform = step * result.transform;
+    ++result.iterations;
+    if (largest_motion < options.tolerance_mm) break;
+  }
+  pairs = matcher.pairs(result.transform);
+  result.pairs = int(pairs.size());
+  result.rms_mm = rms_distance(pairs);
+  return result;
+}
+
+}  // namespace maxillo::validation
