@@ -177,7 +177,7 @@ Json bench_msm(const CubeProblem& cube, const CubeBenchArguments& args, Eigen::M
           {"difference_from_fem_mean_mm", difference.mean_mm}};
 }
 
-// Non-linear FEM (St Venant-Kirchhoff, Newton): 6 mm on a 100 mm cube is a small strain, so it
+// Non-linear FEM (neo-Hookean, Newton): 6 mm on a 100 mm cube is a small strain, so it
 // stays close to linear FEM; the difference is the geometric non-linearity.
 Json bench_nfem(const CubeProblem& cube, const CubeBenchArguments& args, Eigen::MatrixX3d& displacement) {
   NewtonOptions options;

@@ -27,7 +27,7 @@ struct ModelNames {
 constexpr std::array kModels = {ModelNames{SoftTissueModel::kMassTensor, "mtm", "mass tensor model"},
                                 ModelNames{SoftTissueModel::kLinearFem, "fem", "linear FEM"},
                                 ModelNames{SoftTissueModel::kMassSpring, "msm", "mass-spring model"},
-                                ModelNames{SoftTissueModel::kNonlinearFem, "nfem", "non-linear FEM (St Venant-Kirchhoff)"}};
+                                ModelNames{SoftTissueModel::kNonlinearFem, "nfem", "non-linear FEM (neo-Hookean)"}};
 
 struct Solved {
   Eigen::MatrixX3d displacement;

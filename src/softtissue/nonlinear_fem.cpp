@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <vector>
+
+#include <Eigen/LU>
 
 #include "softtissue/block_pcg.h"
 
@@ -55,26 +58,57 @@ Eigen::Matrix3d green_lagrange(const Eigen::Matrix3d& f) {
   return 0.5 * (f.transpose() * f - Eigen::Matrix3d::Identity());
 }
 
-Eigen::MatrixX3d forces(const TetMesh& mesh, const Reference& ref, const LameParameters& lame, const Eigen::MatrixX3d& u) {
+// First Piola-Kirchhoff stress; NaN for a neo-Hookean tet turned inside out (J <= 0), which
+// the line search then refuses.
+Eigen::Matrix3d first_piola(const Eigen::Matrix3d& F, const LameParameters& lame, HyperelasticLaw law) {
+  if (law == HyperelasticLaw::kStVenantKirchhoff) return F * svk_stress(green_lagrange(F), lame);
+  const double j = F.determinant();
+  if (!(j > 0)) return Eigen::Matrix3d::Constant(std::numeric_limits<double>::quiet_NaN());
+  return lame.mu * F + (lame.lambda * std::log(j) - lame.mu) * F.inverse().transpose();
+}
+
+Eigen::MatrixX3d forces(const TetMesh& mesh, const Reference& ref, const LameParameters& lame, const Eigen::MatrixX3d& u,
+                        HyperelasticLaw law) {
   Eigen::MatrixX3d f = Eigen::MatrixX3d::Zero(mesh.node_count(), 3);
   for (int t = 0; t < mesh.tet_count(); ++t) {
     const auto& g = ref.gradients[size_t(t)];
     const Eigen::Matrix3d F = deformation_gradient(mesh, t, g, u);
-    const Eigen::Matrix3d P = F * svk_stress(green_lagrange(F), lame);
+    const Eigen::Matrix3d P = first_piola(F, lame, law);
     for (int a = 0; a < 4; ++a) f.row(mesh.tets(t, a)) += ref.volumes[size_t(t)] * (P * g.row(a).transpose()).transpose();
   }
   return f;
 }
 
+// One tet's neo-Hookean tangent blocks (nonlinear_fem.h gives the closed form).
+void add_neo_hookean_blocks(const Matrix43& g, double v, const Eigen::Matrix3d& F, const LameParameters& lame,
+                            const std::array<int, 16>& entries, StiffnessBlocks& k) {
+  const double j = F.determinant();
+  if (!(j > 0)) return;  // never reached by an accepted state: the line search refuses inverted tets
+  const Eigen::Matrix<double, 3, 4> h = F.inverse().transpose() * g.transpose();  // column a: F^-T g_a
+  const Eigen::Matrix<double, 4, 4> gg = g * g.transpose();
+  const double c = lame.mu - lame.lambda * std::log(j);
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b) {
+      Eigen::Matrix3d block = lame.mu * gg(a, b) * Eigen::Matrix3d::Identity();
+      block.noalias() += lame.lambda * h.col(a) * h.col(b).transpose();
+      block.noalias() += c * h.col(b) * h.col(a).transpose();
+      k.blocks[size_t(entries[size_t(4 * a + b)])] += v * block;
+    }
+}
+
 // The tangent d f / d u as node blocks (the closed form is derived in nonlinear_fem.h).
 // Rows and columns of constrained nodes are assembled too; the solver skips them.
 void assemble_tangent(const TetMesh& mesh, const Reference& ref, const LameParameters& lame, const Eigen::MatrixX3d& u,
-                      StiffnessBlocks& k) {
+                      HyperelasticLaw law, StiffnessBlocks& k) {
   std::fill(k.blocks.begin(), k.blocks.end(), Eigen::Matrix3d::Zero());
   for (int t = 0; t < mesh.tet_count(); ++t) {
     const auto& g = ref.gradients[size_t(t)];
     const double v = ref.volumes[size_t(t)];
     const Eigen::Matrix3d F = deformation_gradient(mesh, t, g, u);
+    if (law == HyperelasticLaw::kNeoHookean) {
+      add_neo_hookean_blocks(g, v, F, lame, ref.block_entries[size_t(t)], k);
+      continue;
+    }
     const Eigen::Matrix3d S = svk_stress(green_lagrange(F), lame);
     const Eigen::Matrix3d B = F * F.transpose();
     const Eigen::Matrix<double, 3, 4> Fg = F * g.transpose();  // column a: F g_a
@@ -107,17 +141,19 @@ constexpr int kMaxLinearIterations = 20000;
 
 }  // namespace
 
-Eigen::MatrixX3d internal_forces(const TetMesh& mesh, const Material& material, const Eigen::MatrixX3d& u) {
-  return forces(mesh, reference_of(mesh), lame_parameters(material), u);
+Eigen::MatrixX3d internal_forces(const TetMesh& mesh, const Material& material, const Eigen::MatrixX3d& u,
+                                 HyperelasticLaw law) {
+  return forces(mesh, reference_of(mesh), lame_parameters(material), u, law);
 }
 
-StiffnessBlocks tangent_stiffness(const TetMesh& mesh, const Material& material, const Eigen::MatrixX3d& u) {
+StiffnessBlocks tangent_stiffness(const TetMesh& mesh, const Material& material, const Eigen::MatrixX3d& u,
+                                  HyperelasticLaw law) {
   Reference ref = reference_of(mesh);
   add_block_entries(mesh, ref);
   StiffnessBlocks k;
   k.graph = ref.graph;
   k.blocks.assign(k.graph.neighbours.size(), Eigen::Matrix3d::Zero());
-  assemble_tangent(mesh, ref, lame_parameters(material), u, k);
+  assemble_tangent(mesh, ref, lame_parameters(material), u, law, k);
   return k;
 }
 
@@ -132,7 +168,7 @@ NonlinearSolution solve_nonlinear_static(const TetMesh& mesh, const Material& ma
   k.graph = ref.graph;
   k.blocks.assign(k.graph.neighbours.size(), Eigen::Matrix3d::Zero());
   auto newton_direction = [&](const Eigen::MatrixX3d& u, const Eigen::VectorXd& rhs, NonlinearSolution& solution) {
-    assemble_tangent(mesh, ref, lame, u, k);
+    assemble_tangent(mesh, ref, lame, u, options.law, k);
     BlockPcgResult pcg = solve_free_block_pcg(k, is_free, rhs, options.linear_tolerance, kMaxLinearIterations);
     solution.linear_iterations += pcg.iterations;
     return pcg.x;
@@ -148,18 +184,23 @@ NonlinearSolution solve_nonlinear_static(const TetMesh& mesh, const Material& ma
     Eigen::MatrixX3d increment = Eigen::MatrixX3d::Zero(mesh.node_count(), 3);
     for (int i = 0; i < mesh.node_count(); ++i)
       if (!bc.is_free(i)) increment.row(i) = bc.imposed(i).transpose() / options.load_steps;
-    const Eigen::MatrixX3d f0 = forces(mesh, ref, lame, solution.displacement);
+    const Eigen::MatrixX3d f0 = forces(mesh, ref, lame, solution.displacement, options.law);
     constexpr double kEpsilon = 1e-4;
     const Eigen::VectorXd coupling =
-        (free_residual(forces(mesh, ref, lame, solution.displacement + kEpsilon * increment), is_free) -
+        (free_residual(forces(mesh, ref, lame, solution.displacement + kEpsilon * increment, options.law), is_free) -
          free_residual(f0, is_free)) / kEpsilon;
     const Eigen::VectorXd r0 = free_residual(f0, is_free);
     if (reference_norm == 0) reference_norm = std::max((r0 + coupling).norm(), 1e-300);
     const Eigen::VectorXd predictor = newton_direction(solution.displacement, -(r0 + coupling), solution);
-    solution.displacement += increment;
-    add_free_step(solution.displacement, predictor, 1.0, is_free);
-
-    Eigen::VectorXd r = free_residual(forces(mesh, ref, lame, solution.displacement), is_free);
+    // The predicted free move is shortened while it turns a tet inside out (neo-Hookean: NaN forces).
+    const Eigen::MatrixX3d start = solution.displacement + increment;
+    Eigen::VectorXd r;
+    for (double scale = 1; scale > 1e-3; scale /= 2) {
+      solution.displacement = start;
+      add_free_step(solution.displacement, predictor, scale, is_free);
+      r = free_residual(forces(mesh, ref, lame, solution.displacement, options.law), is_free);
+      if (r.allFinite()) break;
+    }
     solution.converged = false;
     for (int it = 0; it < options.max_iterations_per_step; ++it) {
       solution.relative_residual = r.norm() / reference_norm;
@@ -173,13 +214,15 @@ NonlinearSolution solve_nonlinear_static(const TetMesh& mesh, const Material& ma
       double alpha = 1;
       Eigen::MatrixX3d trial;
       Eigen::VectorXd trial_r;
-      for (int halving = 0; halving < 8; ++halving, alpha /= 2) {
+      bool decreased = false;
+      for (int halving = 0; halving < 8 && !decreased; ++halving, alpha /= 2) {
         trial = solution.displacement;
         add_free_step(trial, du, alpha, is_free);
-        trial_r = free_residual(forces(mesh, ref, lame, trial), is_free);
-        if (trial_r.norm() < r.norm()) break;
+        trial_r = free_residual(forces(mesh, ref, lame, trial, options.law), is_free);
+        decreased = trial_r.allFinite() && trial_r.norm() < r.norm();  // NaN: a tet turned inside out
       }
-      solution.displacement = trial;
+      if (!trial_r.allFinite()) break;  // stalled: every step along the Newton direction inverts a tet
+      solution.displacement = trial;  // (not decreased: the smallest step, as a nudge out of a plateau)
       r = trial_r;
     }
     if (!solution.converged) {

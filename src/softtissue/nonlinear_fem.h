@@ -1,7 +1,8 @@
 #pragma once
 // Non-linear FEM (thesis ch. 6, sec. 2.1: the complete Green-Lagrange strain instead of its
-// linearisation) with the St Venant-Kirchhoff material: S = lambda tr(E) I + 2 mu E,
-// E = (F^T F - I) / 2, first Piola stress P = F S. Unlike linear FEM it is frame-invariant: a
+// linearisation) with a hyperelastic law: compressible neo-Hookean (the default, see
+// HyperelasticLaw) or St Venant-Kirchhoff, S = lambda tr(E) I + 2 mu E, E = (F^T F - I) / 2,
+// first Piola stress P = F S. Unlike linear FEM it is frame-invariant: a
 // large rigid rotation of the boundary gives no stress. Static equilibrium with prescribed
 // displacements is found by Newton's method on the free dofs with a backtracking line search,
 // the imposed displacements applied in load steps (each step starts from the previous answer).
@@ -14,7 +15,14 @@
 
 namespace maxillo::softtissue {
 
+// The strain energy: St Venant-Kirchhoff (above), or compressible neo-Hookean,
+//   W = mu/2 (tr(F^T F) - 3) - mu ln J + lambda/2 (ln J)^2,  P = mu F + (lambda ln J - mu) F^-T,
+// whose energy grows without bound as a tet is crushed (J -> 0), where St Venant-Kirchhoff
+// softens and lets Newton run into inverted elements.
+enum class HyperelasticLaw { kStVenantKirchhoff, kNeoHookean };
+
 struct NewtonOptions {
+  HyperelasticLaw law = HyperelasticLaw::kNeoHookean;
   int load_steps = 4;
   int max_iterations_per_step = 30;
   double relative_tolerance = 1e-6;  // on the free-dof residual, against the first step's first residual
@@ -34,13 +42,16 @@ struct NonlinearSolution {
 };
 
 // Internal nodal forces (n x 3, N) of the SVK material at displacement u.
-Eigen::MatrixX3d internal_forces(const TetMesh& mesh, const Material& material, const Eigen::MatrixX3d& u);
+Eigen::MatrixX3d internal_forces(const TetMesh& mesh, const Material& material, const Eigen::MatrixX3d& u,
+                                 HyperelasticLaw law = HyperelasticLaw::kNeoHookean);
 
 // Tangent stiffness d f / d u at displacement u, as 3 x 3 node blocks over all nodes. Block
 // (a, b) of a tet, in closed form (F = I + grad u, S the SVK stress, g the shape gradients):
 //   V [ (g_a . S g_b) I + lambda F g_a (F g_b)^T + mu F g_b (F g_a)^T + mu (g_a . g_b) F F^T ],
 // which at u = 0 is the linear element block of linear_elasticity.h.
-StiffnessBlocks tangent_stiffness(const TetMesh& mesh, const Material& material, const Eigen::MatrixX3d& u);
+// Neo-Hookean, with h_a = F^-T g_a: V [ mu (g_a . g_b) I + lambda h_a h_b^T + (mu - lambda ln J) h_b h_a^T ].
+StiffnessBlocks tangent_stiffness(const TetMesh& mesh, const Material& material, const Eigen::MatrixX3d& u,
+                                  HyperelasticLaw law = HyperelasticLaw::kNeoHookean);
 
 NonlinearSolution solve_nonlinear_static(const TetMesh& mesh, const Material& material, const BoundaryConditions& bc,
                                          const NewtonOptions& options = {});

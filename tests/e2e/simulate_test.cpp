@@ -53,6 +53,15 @@ TEST(Simulate, SixMillimetreAdvancementOfThePhantomGivesAPlausibleFace) {
                           "soft-tissue-displacement-frontal.png", "soft-tissue-uncertainty-lateral.png"})
     EXPECT_TRUE(std::filesystem::exists(dir / "sim" / png)) << png;
 
+  // The non-linear model (neo-Hookean) converges on the same face and stays near the linear one.
+  auto nonlinear = run_maxillo({archive, "--json", "simulate", "MAXILLO-PHANTOM-001", "--advance", "6", "--model", "nfem",
+                                "--out", (dir / "sim-nfem").string()},
+                               dir);
+  ASSERT_EQ(nonlinear.exit_code, 0) << nonlinear.err;
+  const auto nfem = Json::parse(nonlinear.out);
+  EXPECT_GT(nfem["max_skin_displacement_mm"].get<double>(), 4.0);
+  EXPECT_LT(nfem["max_skin_displacement_mm"].get<double>(), 7.0);
+
   // Issue 4: `plan apply` writes the transfer model and, with the soft tissue engine in, the face.
   ASSERT_EQ(run_maxillo({archive, "plan", "create", "MAXILLO-PHANTOM-001", "--advance", "8", "--widen", "4"}, dir).exit_code, 0);
   auto apply = run_maxillo({archive, "plan", "apply", "MAXILLO-PHANTOM-001", "--out", (dir / "plan").string()}, dir);

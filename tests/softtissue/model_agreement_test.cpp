@@ -101,7 +101,7 @@ TEST(MassTensorModel, ConvergesUnderRefinement) {
   expect_converging(force, "mtm");
 }
 
-// St Venant-Kirchhoff: the lifting force converges under refinement, and its limit stays
+// Non-linear FEM (neo-Hookean): the lifting force converges under refinement, and its limit stays
 // near the linear one (6 mm on a 100 mm cube is a moderate strain).
 TEST(NonlinearFem, ConvergesUnderRefinement) {
   std::vector<double> force;

@@ -1,5 +1,6 @@
-// St Venant-Kirchhoff FEM: frame invariance (a large rigid rotation costs nothing), the patch
-// test for a large homogeneous deformation, and agreement with linear FEM for small moves.
+// Non-linear FEM (neo-Hookean by default, St Venant-Kirchhoff where named): frame invariance (a
+// large rigid rotation costs nothing), the patch test for a large homogeneous deformation, and
+// agreement with linear FEM for small moves.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -101,12 +102,15 @@ TEST(NonlinearFem, SmallMovesAgreeWithLinearFem) {
   EXPECT_LT((nonlinear.displacement - linear.displacement).cwiseAbs().maxCoeff(), 1e-3 * 0.01);
 }
 
-// The closed-form tangent: at rest it is the linear stiffness, and at a large deformation it
-// is the derivative of the internal forces (central differences, second-order accurate).
-TEST(NonlinearFem, TangentIsTheLinearStiffnessAtRestAndTheForceDerivativeAway) {
+// The closed-form tangent of each law: at rest it is the linear stiffness, and at a large
+// deformation it is the derivative of the internal forces (central differences, second-order accurate).
+class TangentOfEachLaw : public ::testing::TestWithParam<HyperelasticLaw> {};
+
+TEST_P(TangentOfEachLaw, IsTheLinearStiffnessAtRestAndTheForceDerivativeAway) {
+  const HyperelasticLaw law = GetParam();
   const auto mesh = make_cube_mesh({20.0, 2, HexSplit::kFiveTets});
   const StiffnessBlocks linear = assemble_stiffness_blocks(mesh, {});
-  const StiffnessBlocks at_rest = tangent_stiffness(mesh, {}, Eigen::MatrixX3d::Zero(mesh.node_count(), 3));
+  const StiffnessBlocks at_rest = tangent_stiffness(mesh, {}, Eigen::MatrixX3d::Zero(mesh.node_count(), 3), law);
   ASSERT_EQ(at_rest.blocks.size(), linear.blocks.size());
   for (size_t e = 0; e < linear.blocks.size(); ++e) EXPECT_LT((at_rest.blocks[e] - linear.blocks[e]).norm(), 1e-12);
 
@@ -118,9 +122,22 @@ TEST(NonlinearFem, TangentIsTheLinearStiffnessAtRestAndTheForceDerivativeAway) {
   }
   const double h = 1e-5;
   const Eigen::MatrixX3d difference =
-      (internal_forces(mesh, {}, u + h * v) - internal_forces(mesh, {}, u - h * v)) / (2 * h);
-  const Eigen::MatrixX3d product = multiply(tangent_stiffness(mesh, {}, u), v);
+      (internal_forces(mesh, {}, u + h * v, law) - internal_forces(mesh, {}, u - h * v, law)) / (2 * h);
+  const Eigen::MatrixX3d product = multiply(tangent_stiffness(mesh, {}, u, law), v);
   EXPECT_LT((product - difference).cwiseAbs().maxCoeff(), 1e-6 * product.cwiseAbs().maxCoeff());
+}
+
+INSTANTIATE_TEST_SUITE_P(NonlinearFem, TangentOfEachLaw,
+                         ::testing::Values(HyperelasticLaw::kStVenantKirchhoff, HyperelasticLaw::kNeoHookean));
+
+// A neo-Hookean tet cannot be crushed flat: its forces are refused (NaN) once it turns inside
+// out, which is how the line search keeps Newton away from inverted elements.
+TEST(NonlinearFem, NeoHookeanRefusesAnInvertedTet) {
+  const auto mesh = make_cube_mesh({20.0, 1, HexSplit::kFiveTets});
+  Eigen::MatrixX3d flip = Eigen::MatrixX3d::Zero(mesh.node_count(), 3);
+  for (int i = 0; i < mesh.node_count(); ++i) flip(i, 2) = -2 * mesh.nodes(i, 2);  // mirror z: every tet inverted
+  EXPECT_FALSE(internal_forces(mesh, {}, flip, HyperelasticLaw::kNeoHookean).allFinite());
+  EXPECT_TRUE(internal_forces(mesh, {}, flip, HyperelasticLaw::kStVenantKirchhoff).allFinite());
 }
 
 }  // namespace
