@@ -21,6 +21,7 @@
 #include "pipeline/validation_views.h"
 #include "planning/plan_views.h"
 #include "render/anatomical_views.h"
+#include "validation/skin_cavities.h"
 
 namespace maxillo::pipeline {
 namespace {
@@ -159,8 +160,14 @@ void write_skins(const CaseValidation& v, const std::filesystem::path& out) {
 
 std::vector<validation::FaceRegion> face_regions_of(const TriangleMesh& preop_skin, const LandmarkSet& landmarks,
                                                     const validation::FaceRegionOptions& options) {
-  return validation::classify_face_regions(preop_skin.vertices, face_landmarks(landmarks), face_axes(landmarks),
-                                           options);
+  auto regions =
+      validation::classify_face_regions(preop_skin.vertices, face_landmarks(landmarks), face_axes(landmarks), options);
+  // The outer face only: the skin lining the mouth's slit and the nostrils is left out.
+  const auto cavity =
+      validation::cavity_vertices(preop_skin, validation::region_mask(regions, validation::FaceRegion::kOutside));
+  for (size_t i = 0; i < regions.size(); ++i)
+    if (cavity[i]) regions[i] = validation::FaceRegion::kOutside;
+  return regions;
 }
 
 Json ValidationOptions::to_json() const {

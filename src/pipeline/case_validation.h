@@ -77,7 +77,8 @@ struct CaseValidation {
 };
 
 // The face region and subregion of each pre-operative skin vertex, cut by the case's landmarks (Sn, Ls, Li, PogS, Or,
-// Po, Me; Error naming a missing one) in its anatomical frame.
+// Po, Me; Error naming a missing one) in its anatomical frame; skin lining a cavity (validation/skin_cavities.h) is
+// left out.
 std::vector<validation::FaceRegion> face_regions_of(const TriangleMesh& preop_skin, const LandmarkSet& landmarks,
                                                     const validation::FaceRegionOptions& options = {});
 
