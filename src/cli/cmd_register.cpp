@@ -17,6 +17,7 @@
 #include "core/json.h"
 #include "imaging/rigid_registration.h"
 #include "imaging/volume_assembly.h"
+#include "occlusion/occlusion_files.h"
 #include "pipeline/case_landmarks.h"
 
 namespace maxillo::cli {
@@ -100,13 +101,6 @@ std::optional<LandmarkSet> case_landmarks_of(const Archive& archive, int64_t ser
   return std::nullopt;
 }
 
-Json matrix_rows(const Eigen::Isometry3d& transform) {
-  Json rows = Json::array();
-  const Eigen::Matrix4d m = transform.matrix();
-  for (int r = 0; r < 4; ++r) rows.push_back({m(r, 0), m(r, 1), m(r, 2), m(r, 3)});
-  return rows;
-}
-
 Json box_json(const RegistrationBox& box, const std::string& source) {
   return {{"min", {box.min.x(), box.min.y(), box.min.z()}}, {"max", {box.max.x(), box.max.y(), box.max.z()}},
           {"source", source}};
@@ -143,7 +137,7 @@ void run_register(const RegisterOptions& options, CommandContext& ctx) {
   }
 
   const RigidRegistrationResult result = register_rigid(fixed.volume, moving.volume, registration);
-  Json json = {{"moving_to_fixed", matrix_rows(result.moving_to_fixed)},
+  Json json = {{"moving_to_fixed", occlusion::transform_to_json(result.moving_to_fixed)},
                {"frame", "patient LPS, mm: p_fixed = M * p_moving"},
                {"metric", result.metric},
                {"iterations", result.iterations},

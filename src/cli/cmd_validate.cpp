@@ -33,8 +33,7 @@ void print_summary(const pipeline::CaseValidation& v) {
     std::cout << "segment " << planning::segment_name(planning::Segment(s.segment))
               << ": actual differs from planned by " << fixed(s.mean_difference_mm, 2) << " mm mean, "
               << fixed(s.max_difference_mm, 2) << " mm max\n";
-  std::cout << "closest-point distance (mm):  region  n  mean|d|  mean  SD  P5 "
-               " P50  P95  max|d|  within 2 mm\n";
+  std::cout << "closest-point distance (mm):  region  n  mean|d|  mean  SD  P5  P50  P95  max|d|  within 2 mm\n";
   for (const auto& r : v.statistics) {
     const auto& s = r.closest;
     std::cout << "  " << r.region << "  " << s.count << "  " << fixed(s.mean_absolute, 2) << "  "
@@ -55,14 +54,12 @@ int run_validate(const ValidateOptions& o, const GlobalOptions& global) {
   const int64_t case_id = archive.resolve_case(o.case_text);
   const auto options = validation_options(o);
   const auto key = pipeline::validation_inputs_hash(archive, case_id, options);
-  if (!o.force && key && pipeline::find_validation(archive, case_id, *key)) {
-    const auto stored = pipeline::find_validation(archive, case_id, *key);
+  const auto stored = o.force || !key ? std::nullopt : pipeline::find_validation(archive, case_id, *key);
+  if (stored) {
     if (global.json)
       std::cout << stored->summary.dump(2) << "\n";
     else
-      std::cout << "case " << case_id
-                << ": validation up to date (inputs unchanged); --force "
-                   "recomputes it\n";
+      std::cout << "case " << case_id << ": validation up to date (inputs unchanged); --force recomputes it\n";
     return 0;
   }
   const auto validation = pipeline::validate_case(archive, case_id, options, o.out);
@@ -79,9 +76,7 @@ int run_validate(const ValidateOptions& o, const GlobalOptions& global) {
 void attach_validate(CLI::App& app, CommandContext& ctx) {
   auto o = std::make_shared<ValidateOptions>();
   app.add_option("CASE", o->case_text, "case id, or a Patient ID (its default case)")->required();
-  app.add_option("--out", o->out,
-                 "output folder: error maps, profile, skins with distances, "
-                 "validation.json")
+  app.add_option("--out", o->out, "output folder: error maps, profile, skins with distances, validation.json")
       ->capture_default_str();
   app.add_option("--model", o->model, "soft tissue model of the prediction: mtm, fem, msm or nfem")
       ->check(CLI::IsMember({"mtm", "fem", "msm", "nfem"}))

@@ -18,6 +18,7 @@
 #include <itkImageMaskSpatialObject.h>
 #include <itkImageRegistrationMethodv4.h>
 #include <itkMattesMutualInformationImageToImageMetricv4.h>
+#include <itkMultiThreaderBase.h>
 #include <itkRegistrationParameterScalesFromPhysicalShift.h>
 #include <itkVersorRigid3DTransform.h>
 
@@ -230,9 +231,25 @@ LevelOutcome register_level(FloatImage* fixed, FloatImage* moving, MaskObject* m
   return {counter->iterations, optimizer->GetValue()};
 }
 
+// ITK's global default thread count limited for one registration (0: left as it is), restored
+// after: every ITK object made meanwhile takes its thread count from it.
+class ThreadLimit {
+ public:
+  explicit ThreadLimit(int threads) : previous_(itk::MultiThreaderBase::GetGlobalDefaultNumberOfThreads()) {
+    if (threads > 0) itk::MultiThreaderBase::SetGlobalDefaultNumberOfThreads(itk::ThreadIdType(threads));
+  }
+  ~ThreadLimit() { itk::MultiThreaderBase::SetGlobalDefaultNumberOfThreads(previous_); }
+  ThreadLimit(const ThreadLimit&) = delete;
+  ThreadLimit& operator=(const ThreadLimit&) = delete;
+
+ private:
+  itk::ThreadIdType previous_;
+};
+
 }  // namespace
 
 Outcome register_rigid(const Image& fixed, const Image& moving, const Settings& settings) {
+  const ThreadLimit limit(settings.threads);
   const int levels = std::max(1, settings.levels);
   std::vector<FloatImage::Pointer> fixed_pyramid{to_float_image(fixed)}, moving_pyramid{to_float_image(moving)};
   for (int level = 1; level < levels; ++level) {

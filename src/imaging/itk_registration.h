@@ -37,6 +37,7 @@ struct Settings {
   double coarse_convergence = 1e-3; // the same on the shrunk levels (they only need to get close)
   bool regular_sampling = true;     // samples on a jittered regular grid instead of at random
   uint32_t seed = 1;
+  int threads = 0;  // 0 = ITK's default
   const itk_filters::Mask* fixed_mask = nullptr;  // on the fixed grid; null = whole image
   RigidMap initial;                                // fixed -> moving
 };

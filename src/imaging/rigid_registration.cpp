@@ -230,6 +230,7 @@ RigidRegistrationResult register_rigid(const Volume& fixed, const Volume& moving
   settings.coarse_convergence = options.coarse_convergence;
   settings.regular_sampling = options.regular_sampling;
   settings.seed = options.seed;
+  settings.threads = options.threads;
   keep_informative_voxels(fixed, mask);
   settings.fixed_mask = &mask;
   settings.initial = to_itk_map(initial, 0.5 * (box.min + box.max));

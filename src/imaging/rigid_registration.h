@@ -39,7 +39,11 @@ struct RigidRegistrationOptions {
   int convergence_window = 6;          // the last convergence_window iterations falls below this
   double coarse_convergence = 1e-3;    // the same on the shrunk levels (they only need to get close)
   bool regular_sampling = true;        // samples on a jittered regular grid (less noisy than random)
-  uint32_t seed = 1;                   // sample jitter; the same seed gives the same answer
+  uint32_t seed = 1;                   // sample jitter
+  // Threads ITK may use; 0 = its default. ITK's Mattes metric adds the threads' partial sums in
+  // whatever order they finish, so only 1 gives the same answer to the last bit for the same
+  // seed; with more, two runs differ in rounding (and the optimiser's path with it).
+  int threads = 0;
   Eigen::Isometry3d initial = Eigen::Isometry3d::Identity();  // moving_to_fixed guess
 };
 

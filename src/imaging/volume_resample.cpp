@@ -76,6 +76,18 @@ Volume resample_rigid(const Volume& source, const Eigen::Isometry3d& source_to_r
   return result;
 }
 
+double sample_trilinear(const Volume& source, const Eigen::Vector3d& lps, double outside_hu) {
+  bool inside = false;
+  const double value = trilinear(source, source.geometry.continuous_index(lps), &inside);
+  return inside ? value : outside_hu;
+}
+
+uint8_t sample_nearest(const LabelVolume& source, const Eigen::Vector3d& lps) {
+  const Eigen::Vector3i nearest = source.geometry.continuous_index(lps).array().round().cast<int>();
+  if (!source.geometry.contains(nearest.x(), nearest.y(), nearest.z())) return 0;
+  return source.labels[size_t(source.geometry.index(nearest.x(), nearest.y(), nearest.z()))];
+}
+
 LabelVolume resample_rigid(const LabelVolume& source, const Eigen::Isometry3d& source_to_result,
                            const VolumeGeometry& result_geometry) {
   LabelVolume result;

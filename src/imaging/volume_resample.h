@@ -20,4 +20,9 @@ Volume resample_rigid(const Volume& source, const Eigen::Isometry3d& source_to_r
 LabelVolume resample_rigid(const LabelVolume& source, const Eigen::Isometry3d& source_to_result,
                            const VolumeGeometry& result_geometry);
 
+// The same interpolations at one LPS point (not rounded): for callers that build a volume from
+// several sources point by point.
+double sample_trilinear(const Volume& source, const Eigen::Vector3d& lps, double outside_hu = -1000);
+uint8_t sample_nearest(const LabelVolume& source, const Eigen::Vector3d& lps);
+
 }  // namespace maxillo

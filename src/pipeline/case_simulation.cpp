@@ -15,6 +15,7 @@
 #include "planning/osteotomy.h"
 #include "planning/plan_application.h"
 #include "softtissue/vtu_writer.h"
+#include "validation/distance_statistics.h"
 
 namespace maxillo::pipeline {
 namespace {
@@ -26,13 +27,6 @@ LandmarkSet soft_landmarks_of(const LandmarkSet& landmarks) {
   for (const auto& label : soft_tissue_landmark_labels())
     if (auto p = find_landmark(landmarks, label)) found.push_back({label, *p});
   return found;
-}
-
-double percentile(std::vector<double> values, double p) {
-  if (values.empty()) return 0;
-  const auto k = size_t(std::clamp(p / 100.0 * double(values.size() - 1), 0.0, double(values.size() - 1)));
-  std::nth_element(values.begin(), values.begin() + long(k), values.end());
-  return values[k];
 }
 
 // Writes the files and returns what simulation.json holds.
@@ -125,13 +119,13 @@ Uncertainty prediction_uncertainty(const SoftTissuePrediction& base, const Trian
     std::vector<double> off;
     for (Eigen::Index v = 0; v < a.rows(); ++v)
       if (answers[0].row(v).norm() > kMovedSkinMm) off.push_back((a.row(v) - answers[0].row(v)).norm());
-    band.run_p95_from_first_mm.push_back(percentile(off, 95));
+    band.run_p95_from_first_mm.push_back(validation::percentile(off, 95));
   }
   for (Eigen::Index v = 0; v < mean.rows(); ++v) {
     for (const auto& a : answers) band.spread_mm[size_t(v)] = std::max(band.spread_mm[size_t(v)], (a.row(v) - mean.row(v)).norm());
     if (mean.row(v).norm() > kMovedSkinMm) moved.push_back(band.spread_mm[size_t(v)]);
   }
-  band.p95_mm = percentile(moved, 95);
+  band.p95_mm = validation::percentile(moved, 95);
   band.max_mm = moved.empty() ? 0 : *std::max_element(moved.begin(), moved.end());
   return band;
 }

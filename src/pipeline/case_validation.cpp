@@ -21,6 +21,7 @@
 #include "pipeline/validation_views.h"
 #include "planning/plan_views.h"
 #include "render/anatomical_views.h"
+#include "validation/region_statistics.h"
 #include "validation/skin_cavities.h"
 
 namespace maxillo::pipeline {
@@ -73,8 +74,8 @@ std::pair<double, double> move_difference(const TriangleMesh& surface, const Eig
   return {surface.vertex_count() ? sum / double(surface.vertex_count()) : 0.0, largest};
 }
 
-// Each segment's surface at the CT's bone threshold inside the segment (and along its cuts): the same definition of
-// "bone surface" as the post-operative bone it is fitted to. Surfaces of the label mask instead sit up to half a
+// The surface of each moved segment and of the cranium at the CT's bone threshold inside the segment (and along its
+// cuts): the same definition of "bone surface" as the post-operative bone it is fitted to. Surfaces of the label mask instead sit up to half a
 // voxel off it, which biased the fitted moves by ~0.2 mm.
 std::vector<planning::SegmentSurface> segment_bone_surfaces(const PlannedCase& planned) {
   const double bone_hu = SegmentationOptions{}.bone_hu;
@@ -83,6 +84,9 @@ std::vector<planning::SegmentSurface> segment_bone_surfaces(const PlannedCase& p
   options.target_triangles = 80000;
   std::vector<planning::SegmentSurface> surfaces;
   for (const auto& stats : planned.cut.stats) {
+    const bool fitted =
+        stats.segment == planning::Segment::kCranium || planned.planned_moves.count(uint8_t(stats.segment)) > 0;
+    if (!fitted) continue;
     LabelVolume mask{planned.cut.segments.geometry, planned.cut.segments.labels};
     for (auto& label : mask.labels) label = label == uint8_t(stats.segment);
     surfaces.push_back(
@@ -132,17 +136,12 @@ std::vector<double> corresponding_map(const TriangleMesh& predicted, const Trian
 
 std::vector<RegionStatistics> region_statistics(const CaseValidation& v, double tolerance_mm) {
   std::vector<RegionStatistics> rows;
-  auto add = [&](const std::string& name, validation::FaceRegion region) {
-    const auto mask = validation::region_mask(v.regions, region);
-    RegionStatistics row{
-        name, validation::distance_statistics(validation::defined_values(v.closest_mm, mask), tolerance_mm), {}};
-    if (!v.corresponding_mm.empty())
-      row.corresponding =
-          validation::distance_statistics(validation::defined_values(v.corresponding_mm, mask), tolerance_mm);
-    rows.push_back(row);
-  };
-  add("face", validation::FaceRegion::kOutside);
-  for (auto region : validation::kFaceSubregions) add(std::string(validation::region_name(region)), region);
+  for (const auto& closest : validation::statistics_by_region(v.closest_mm, v.regions, tolerance_mm))
+    rows.push_back({closest.region, closest.statistics, {}});
+  if (!v.corresponding_mm.empty()) {
+    const auto corresponding = validation::statistics_by_region(v.corresponding_mm, v.regions, tolerance_mm);
+    for (size_t i = 0; i < rows.size(); ++i) rows[i].corresponding = corresponding[i].statistics;
+  }
   return rows;
 }
 
@@ -214,8 +213,9 @@ CaseValidation validate_case(Archive& archive, int64_t case_id, const Validation
   const std::string subject = "case:" + std::to_string(case_id);
   CaseValidation v;
   v.case_id = case_id;
+  const auto contents = archive.case_contents(case_id);
   const auto hash = validation_inputs_hash(archive, case_id, options);
-  const auto post = postop_series(archive.case_contents(case_id));
+  const auto post = postop_series(contents);
   if (!post)
     throw Error(ErrorCode::kNotFound, subject, "the case has no post-operative CT (a series with role postop)");
   if (!hash) throw Error(ErrorCode::kNotFound, subject, "the case needs a plan and landmarks to be validated");
@@ -261,7 +261,7 @@ CaseValidation validate_case(Archive& archive, int64_t case_id, const Validation
   write_profile_overlay(planned.skin, v.predicted_skin, v.actual_skin, planned.landmarks, frame, v.profile_png);
   write_skins(v, out);
   v.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  v.summary = validation_json(v, archive.case_contents(case_id));
+  v.summary = validation_json(v, contents);
   write_file_atomically(out / "validation.json", v.summary.dump(2) + "\n");
   return v;
 }

@@ -35,4 +35,12 @@ int64_t primary_series(const CaseContents& contents) {
   throw Error(ErrorCode::kNotFound, "case " + std::to_string(contents.record.id), "the case has no CT series");
 }
 
+std::string study_date_of(const CaseContents& contents, int64_t series) {
+  for (const auto& entry : contents.series)
+    if (entry.series.id == series)
+      for (const auto& study : contents.studies)
+        if (study.id == entry.series.study) return study.date;
+  return "";
+}
+
 }  // namespace maxillo::pipeline

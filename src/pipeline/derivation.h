@@ -21,4 +21,7 @@ std::string derivation_key(const std::vector<std::string>& input_hashes, const J
 // Throws Error(NotFound) naming the case when it has no CT series.
 int64_t primary_series(const CaseContents& contents);
 
+// The date (DICOM DA) of the study holding a series of the case; "" when unknown.
+std::string study_date_of(const CaseContents& contents, int64_t series);
+
 }  // namespace maxillo::pipeline

@@ -45,10 +45,13 @@ std::vector<EligibleCase> eligible_cases(const Archive& archive, const NightlyOp
   return cases;
 }
 
-NightlyCase process_case(Archive& archive, const EligibleCase& c, const NightlyOptions& options) {
+// Validates the case unless `stored` holds its up-to-date validation; fills `stored` with the
+// validation made.
+NightlyCase process_case(Archive& archive, const EligibleCase& c, const NightlyOptions& options,
+                         std::optional<StoredValidation>& stored) {
   NightlyCase result;
   result.case_id = c.case_id;
-  if (find_validation(archive, c.case_id, c.key)) {
+  if (stored) {
     result.outcome = NightlyOutcome::kUpToDate;
     return result;
   }
@@ -61,6 +64,7 @@ NightlyCase process_case(Archive& archive, const EligibleCase& c, const NightlyO
     const auto validation =
         validate_case(archive, c.case_id, options.validation, options.out / ("case-" + std::to_string(c.case_id)));
     store_validation(archive, validation);
+    stored = find_validation(archive, c.case_id, c.key);
     result.outcome = NightlyOutcome::kValidated;
   } catch (const Error& e) {
     result.outcome = NightlyOutcome::kFailed;
@@ -144,9 +148,10 @@ NightlyReport run_nightly(Archive& archive, const NightlyOptions& options) {
   NightlyReport report;
   std::vector<StoredValidation> shown;
   for (const auto& c : eligible_cases(archive, options)) {
-    report.cases.push_back(process_case(archive, c, options));
+    auto stored = find_validation(archive, c.case_id, c.key);
+    report.cases.push_back(process_case(archive, c, options, stored));
     log::info("case ", c.case_id, ": ", to_string(report.cases.back().outcome));
-    if (auto stored = find_validation(archive, c.case_id, c.key)) shown.push_back(std::move(*stored));
+    if (stored) shown.push_back(std::move(*stored));
   }
   report.summary_pdf = options.out / summary_name(options.shard);
   if (shown.empty()) return report;

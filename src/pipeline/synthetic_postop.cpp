@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "imaging/segmentation.h"
+#include "imaging/volume_resample.h"
 #include "mesh/surface_extraction.h"
 #include "mesh/vertex_normals.h"
 #include "occlusion/signed_distance.h"
@@ -18,28 +19,6 @@ constexpr double kSoftTissueHu = 40;          // what fills space the face grew 
 constexpr double kSoftTissueCeilingHu = 150;  // soft tissue sampled next to bone that left keeps below bone
 constexpr double kAirHu = -1000;
 constexpr double kMovedSkinMm = 0.02;  // skin that moves less than this keeps its pre-operative voxels
-
-// Trilinear HU at an LPS point; air outside the grid.
-double sample_hu(const Volume& v, const Eigen::Vector3d& lps) {
-  const Eigen::Vector3d c = v.geometry.continuous_index(lps);
-  const Eigen::Vector3i base = c.array().floor().cast<int>();
-  const Eigen::Vector3d t = c - base.cast<double>();
-  double value = 0;
-  for (int corner = 0; corner < 8; ++corner) {
-    const Eigen::Vector3i ijk = base + Eigen::Vector3i(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
-    const double weight = (corner & 1 ? t.x() : 1 - t.x()) * ((corner >> 1) & 1 ? t.y() : 1 - t.y()) *
-                          ((corner >> 2) & 1 ? t.z() : 1 - t.z());
-    if (weight == 0) continue;
-    value += weight * (v.geometry.contains(ijk.x(), ijk.y(), ijk.z()) ? v.at(ijk.x(), ijk.y(), ijk.z()) : kAirHu);
-  }
-  return value;
-}
-
-uint8_t nearest_label(const LabelVolume& labels, const Eigen::Vector3d& lps) {
-  const Eigen::Vector3i ijk = labels.geometry.continuous_index(lps).array().round().cast<int>();
-  if (!labels.geometry.contains(ijk.x(), ijk.y(), ijk.z())) return 0;
-  return labels.labels[size_t(labels.geometry.index(ijk.x(), ijk.y(), ijk.z()))];
-}
 
 // Whether the voxel nearest `lps` or one of its six face neighbours has `label`: the rim of partial
 // volume around a structure, whose HU belongs to it.
@@ -122,8 +101,8 @@ class PostopVoxels {
   // HU at a point of the pre-operative frame after surgery.
   double hu(const Eigen::Vector3d& y) const {
     if (auto bone = moved_bone(y)) return *bone;
-    const uint8_t segment = nearest_label(planned_.cut.segments, y);
-    if (segment != 0 && !is_moved(segment)) return sample_hu(planned_.preop_ct, y);
+    const uint8_t segment = sample_nearest(planned_.cut.segments, y);
+    if (segment != 0 && !is_moved(segment)) return sample_trilinear(planned_.preop_ct, y);
     return soft_tissue_or_air(y);
   }
 
@@ -134,7 +113,7 @@ class PostopVoxels {
   std::optional<double> moved_bone(const Eigen::Vector3d& y) const {
     for (const auto& [segment, inverse] : inverse_moves_) {
       const Eigen::Vector3d source = inverse * y;
-      if (nearest_label(planned_.cut.segments, source) == segment) return sample_hu(planned_.preop_ct, source);
+      if (sample_nearest(planned_.cut.segments, source) == segment) return sample_trilinear(planned_.preop_ct, source);
     }
     return std::nullopt;
   }
@@ -150,7 +129,7 @@ class PostopVoxels {
   }
 
   double soft_value(const Eigen::Vector3d& y) const {
-    const double value = sample_hu(planned_.preop_ct, y);
+    const double value = sample_trilinear(planned_.preop_ct, y);
     return beside_moved_bone(y) ? std::min(value, kSoftTissueCeilingHu) : value;
   }
 
@@ -161,13 +140,13 @@ class PostopVoxels {
       if (d.found && d.distance > -ramp_.inner_width_mm()) return ramp_.hu(d.distance);
       if (d.found) return interior_hu(y);
     }
-    const uint8_t tissue = nearest_label(planned_.tissues.segmentation, y);
+    const uint8_t tissue = sample_nearest(planned_.tissues.segmentation, y);
     if (tissue == kBone || tissue == kTeeth) return kSoftTissueHu;  // bone that moved away
     return soft_value(y);
   }
 
   double interior_hu(const Eigen::Vector3d& y) const {
-    const uint8_t tissue = nearest_label(planned_.tissues.segmentation, y);
+    const uint8_t tissue = sample_nearest(planned_.tissues.segmentation, y);
     if (tissue == kSoftTissue || tissue == kEnclosedAir) return std::min(soft_value(y), kSoftTissueCeilingHu);
     return kSoftTissueHu;  // where air or bone was before
   }

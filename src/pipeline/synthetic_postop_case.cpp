@@ -4,8 +4,11 @@
 #include "archive/dicom_uid.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "occlusion/occlusion_files.h"
 #include "pipeline/case_validation.h"
+#include "pipeline/derivation.h"
 #include "pipeline/validation_json.h"
+#include "validation/region_statistics.h"
 
 namespace maxillo::pipeline {
 namespace {
@@ -22,16 +25,9 @@ SeriesMetadata postop_metadata(const CaseContents& contents, int64_t preop_serie
   m.patient_id = contents.patient.patient_id;
   m.patient_birth_date = contents.patient.birth_date;
   m.patient_sex = contents.patient.sex;
-  std::string preop_date;
-  for (const auto& entry : contents.series)
-    if (entry.series.id == preop_series)
-      for (const auto& study : contents.studies)
-        if (study.id == entry.series.study) preop_date = study.date;
-  m.study_date = study_date.empty() ? one_year_later(preop_date) : study_date;
+  m.study_date = study_date.empty() ? one_year_later(study_date_of(contents, preop_series)) : study_date;
   m.study_description = "Post-operative CT (synthetic)";
-  m.series_description =
-      "post-operative CT, synthetic: planned moves, "
-      "predicted face + known error";
+  m.series_description = "post-operative CT, synthetic: planned moves, predicted face + known error";
   m.series_number = 2;
   // UIDs derived from the pre-operative series and what was asked: the same request gives the same scan, so making it
   // again re-imports as "already archived" instead of a second series.
@@ -47,22 +43,12 @@ SeriesMetadata postop_metadata(const CaseContents& contents, int64_t preop_serie
 
 // The answer: the known signed error per region, as the validation's statistics would give it.
 Json truth_json(const SyntheticPostop& postop, const PlannedCase& planned, const SyntheticPostopOptions& options) {
-  const auto regions = face_regions_of(planned.skin, planned.landmarks);
   Json by_region = Json::array();
-  auto add = [&](const std::string& name, validation::FaceRegion region) {
-    const auto mask = validation::region_mask(regions, region);
-    by_region.push_back({{"region", name},
-                         {"known_error", to_json(validation::distance_statistics(
-                                             validation::defined_values(postop.known_error_mm, mask)))}});
-  };
-  add("face", validation::FaceRegion::kOutside);
-  for (auto r : validation::kFaceSubregions) add(std::string(validation::region_name(r)), r);
-  Json matrix = Json::array();
-  for (int r = 0; r < 4; ++r)
-    matrix.push_back({postop.postop_to_preop(r, 0), postop.postop_to_preop(r, 1), postop.postop_to_preop(r, 2),
-                      postop.postop_to_preop(r, 3)});
+  const auto regions = face_regions_of(planned.skin, planned.landmarks);
+  for (const auto& r : validation::statistics_by_region(postop.known_error_mm, regions))
+    by_region.push_back({{"region", r.region}, {"known_error", to_json(r.statistics)}});
   return Json{
-      {"postop_to_preop", matrix},
+      {"postop_to_preop", occlusion::transform_to_json(postop.postop_to_preop)},
       {"error",
        {{"amplitude_mm", options.error_mm}, {"sigma_mm", options.error_sigma_mm}, {"centre", options.error_centre}}},
       {"regions", by_region}};

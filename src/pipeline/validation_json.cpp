@@ -1,33 +1,21 @@
 #include "pipeline/validation_json.h"
 
+#include "occlusion/occlusion_files.h"
+#include "pipeline/derivation.h"
 #include "planning/osteotomy.h"
 
 namespace maxillo::pipeline {
 namespace {
 
-Json matrix_json(const Eigen::Isometry3d& t) {
-  Json rows = Json::array();
-  for (int r = 0; r < 4; ++r) rows.push_back({t(r, 0), t(r, 1), t(r, 2), t(r, 3)});
-  return rows;
-}
-
 Json segment_json(const SegmentOutcome& s) {
   const Eigen::AngleAxisd turn((s.planned.rotation().transpose() * s.actual.rotation()));
   return Json{{"segment", planning::segment_name(planning::Segment(s.segment))},
-              {"planned", matrix_json(s.planned)},
-              {"actual", matrix_json(s.actual)},
+              {"planned", occlusion::transform_to_json(s.planned)},
+              {"actual", occlusion::transform_to_json(s.actual)},
               {"icp_rms_mm", s.icp_rms_mm},
               {"mean_difference_mm", s.mean_difference_mm},
               {"max_difference_mm", s.max_difference_mm},
               {"rotation_difference_deg", turn.angle() * 180 / M_PI}};
-}
-
-std::string series_date(const CaseContents& contents, int64_t series) {
-  for (const auto& entry : contents.series)
-    if (entry.series.id == series)
-      for (const auto& study : contents.studies)
-        if (study.id == entry.series.study) return study.date;
-  return "";
 }
 
 }  // namespace
@@ -77,11 +65,11 @@ Json validation_json(const CaseValidation& v, const CaseContents& contents) {
               {"case_label", contents.record.label},
               {"preop_series", v.preop_series},
               {"postop_series", v.postop_series},
-              {"preop_date", series_date(contents, v.preop_series)},
-              {"postop_date", series_date(contents, v.postop_series)},
+              {"preop_date", study_date_of(contents, v.preop_series)},
+              {"postop_date", study_date_of(contents, v.postop_series)},
               {"inputs_hash", v.inputs_hash},
               {"registration",
-               {{"moving_to_fixed", matrix_json(v.registration.moving_to_fixed)},
+               {{"moving_to_fixed", occlusion::transform_to_json(v.registration.moving_to_fixed)},
                 {"metric", v.registration.metric},
                 {"iterations", v.registration.iterations},
                 {"seconds", v.registration.seconds},

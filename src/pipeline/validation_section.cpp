@@ -65,13 +65,11 @@ std::vector<report::Block> validation_blocks(const StoredValidation& stored) {
   std::vector<report::Block> blocks;
   blocks.push_back(report::Paragraph{"The post-operative CT (" + date_text(summary, "postop_date") +
                                      ") was registered onto the pre-operative CT (" + date_text(summary, "preop_date") +
-                                     ") by mutual information on the cranium above the infraorbital rim. Each "
-                                     "bone segment the plan moves was then "
-                                     "fitted to the post-operative bone (ICP from its planned move), and the "
-                                     "face was predicted again for the moves "
-                                     "actually made. Distances run from the predicted to the post-operative "
-                                     "skin, in the face without eyes and neck; "
-                                     "negative means the prediction lies behind the real face."});
+                                     ") by mutual information on the cranium above the infraorbital rim. Each bone "
+                                     "segment the plan moves was then fitted to the post-operative bone (ICP from its "
+                                     "planned move), and the face was predicted again for the moves actually made. "
+                                     "Distances run from the predicted to the post-operative skin, on the outer face "
+                                     "without eyes and neck; negative means the prediction lies behind the real face."});
   blocks.push_back(report::KeyValueBlock{{
       {"Registration", "mutual information " + fixed(registration.at("metric").get<double>(), 3) + ", " +
                            std::to_string(registration.at("iterations").get<int>()) + " iterations, " +
@@ -84,11 +82,9 @@ std::vector<report::Block> validation_blocks(const StoredValidation& stored) {
   blocks.push_back(report::Paragraph{"Closest-point distance (mm), predicted to post-operative skin:"});
   blocks.push_back(regions_table(regions, false));
   if (!regions.empty() && regions.front().corresponding.count > 0) {
-    blocks.push_back(
-        report::Paragraph{"Corresponding-point distance (mm), after a smooth non-rigid "
-                          "registration of the prediction onto the outcome "
-                          "(coherent point drift): a point may not slide along the surface to "
-                          "its nearest neighbour."});
+    blocks.push_back(report::Paragraph{
+        "Corresponding-point distance (mm), after a smooth non-rigid registration of the prediction onto the outcome "
+        "(coherent point drift): a point may not slide along the surface to its nearest neighbour."});
     blocks.push_back(regions_table(regions, true));
   }
   report::ImageGrid maps;
@@ -96,11 +92,9 @@ std::vector<report::Block> validation_blocks(const StoredValidation& stored) {
   for (size_t i = 0; i < stored.error_maps.size() && i < views.size(); ++i)
     maps.figures.push_back({stored.error_maps[i], "Error map, " + views[i]});
   blocks.push_back(maps);
-  blocks.push_back(
-      report::Note{"Error map: blue where the prediction lies behind the real "
-                   "face, red where it lies in front, white where they "
-                   "agree; the scale runs from -3 to +3 mm (beyond it the end "
-                   "colours). Skin outside the compared region is plain."});
+  blocks.push_back(report::Note{
+      "Error map: blue where the prediction lies behind the real face, red where it lies in front, white where they "
+      "agree; the scale runs from -3 to +3 mm (beyond it the end colours). Skin outside the compared region is plain."});
   blocks.push_back(report::ImageGrid{{{stored.profile,
                                        "Mid-sagittal profiles: pre-operative (grey), predicted (blue) "
                                        "and post-operative (red), millimetres from subnasale"}},

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "mesh/vertex_normals.h"
 #include "occlusion/aabb_tree.h"
 
 namespace maxillo::validation {
@@ -21,20 +22,6 @@ using occlusion::TriangleFeature;
 const double kMinNormalCosine = std::cos(60.0 * M_PI / 180.0);
 
 Eigen::Vector3d row(const VertexMatrix& v, int i) { return v.row(i).transpose(); }
-
-// Area-weighted vertex normals (unit; zero for unused vertices).
-std::vector<Eigen::Vector3d> vertex_normals(const TriangleMesh& mesh) {
-  std::vector<Eigen::Vector3d> normals(size_t(mesh.vertex_count()), Eigen::Vector3d::Zero());
-  for (Eigen::Index f = 0; f < mesh.face_count(); ++f) {
-    const auto face = mesh.faces.row(f);
-    const Eigen::Vector3d n = (row(mesh.vertices, face(1)) - row(mesh.vertices, face(0)))
-                                  .cross(row(mesh.vertices, face(2)) - row(mesh.vertices, face(0)));
-    for (int k = 0; k < 3; ++k) normals[size_t(face(k))] += n;  // |n| = twice the area: area weighting
-  }
-  for (auto& n : normals)
-    if (n.norm() > 0) n.normalize();
-  return normals;
-}
 
 // The target's open border: edges used by one face, and their vertices. A closest point there is
 // where the target simply ends, not a counterpart of the moving point.
@@ -107,7 +94,7 @@ class Matcher {
       const auto nearest = tree_.nearest(p, options_.max_pair_distance_mm);
       if (nearest.face < 0 || border_.contains(target_, nearest.face, nearest.feature)) continue;
       const Eigen::Vector3d& n = face_normals_[size_t(nearest.face)];
-      if ((transform.linear() * moving_normals_[size_t(i)]).dot(n) < kMinNormalCosine) continue;
+      if ((transform.linear() * moving_normals_.row(i).transpose()).dot(n) < kMinNormalCosine) continue;
       found.push_back({p, nearest.point, n});
     }
     return found;
@@ -119,7 +106,7 @@ class Matcher {
   occlusion::AabbTree tree_;
   Border border_;
   const IcpOptions& options_;
-  std::vector<Eigen::Vector3d> moving_normals_;
+  VertexMatrix moving_normals_;  // unit, area-weighted (mesh/vertex_normals.h)
   std::vector<Eigen::Vector3d> face_normals_;
   std::vector<int> samples_;
 };
