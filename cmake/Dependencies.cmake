@@ -5,6 +5,7 @@ find_package(OpenSSL REQUIRED)            # SHA-256 of archived objects (uses SH
 find_package(nlohmann_json 3 REQUIRED)
 find_package(CLI11 REQUIRED)
 find_package(DCMTK REQUIRED)
+find_package(ZLIB REQUIRED)             # deflated DICOM data sets, inflated for the structure check
 find_package(ITK 5.2 REQUIRED COMPONENTS
   ITKCommon ITKIOImageBase ITKIOMeta ITKIONRRD ITKThresholding ITKConnectedComponents
   ITKBinaryMathematicalMorphology ITKMathematicalMorphology ITKLabelMap ITKImageFilterBase

@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <span>
@@ -47,7 +48,7 @@ struct ImportReport {
   size_t conflicts = 0;
   size_t failed = 0;
   size_t identity_flags = 0;  // new identity flags raised by this import
-  size_t restored = 0;        // already archived files whose lost object file was written again
+  size_t restored = 0;        // already archived files whose lost or damaged object file was written again
   std::vector<ImportProblem> problems;  // in the order met
   size_t files() const { return imported + already_archived + conflicts + failed; }
   bool all_ok() const { return conflicts == 0 && failed == 0; }
@@ -63,26 +64,74 @@ struct ImportOptions {
 enum class RepairMode { ReportOnly, Repair };
 enum class ExportProfile { Original, Deidentified };
 
+struct VerifyOptions {
+  RepairMode mode = RepairMode::ReportOnly;
+  // Quarantine orphans even when they are more than a small share of the store (see verify).
+  bool force = false;
+  ProgressDisplay progress = ProgressDisplay::Auto;
+};
+
 struct VerifyReport {
+  std::string index_check = "ok";                // SQLite integrity_check's first finding
+  std::vector<std::string> journal_differences;  // where the index and its journal disagree
   size_t objects_checked = 0;
   std::vector<std::string> missing;          // sha256 of indexed objects without a file: data loss
   std::vector<std::string> corrupt;          // sha256 whose file no longer hashes to its name
+  // What names each missing or corrupt object: "case:3 series:5 instance:12", "case:3 artefact:7 (report)".
+  std::map<std::string, std::vector<std::string>> owners;
   std::vector<std::filesystem::path> orphans;       // object files no row names
   std::vector<std::filesystem::path> temporaries;   // leftovers of interrupted writes
-  size_t removed = 0;                        // orphans + temporaries deleted by Repair
-  bool consistent() const { return missing.empty() && corrupt.empty() && orphans.empty() && temporaries.empty(); }
+  size_t quarantined = 0;                    // orphans + temporaries moved into quarantine by Repair
+  std::vector<std::string> restored;         // missing objects Repair found in quarantine and put back
+  std::string repair_refused;                // why Repair changed nothing, when it refused
+  bool index_intact() const { return index_check == "ok" && journal_differences.empty(); }
+  bool consistent() const {
+    return index_intact() && missing.empty() && corrupt.empty() && orphans.empty() && temporaries.empty();
+  }
   // Consistent after the repair: only what repair cannot fix remains.
-  bool data_intact() const { return missing.empty() && corrupt.empty(); }
+  bool data_intact() const { return index_intact() && missing.empty() && corrupt.empty(); }
 };
+
+struct RebuildOptions {
+  bool force = false;  // rebuild even an intact index (it is kept beside the new one)
+  ProgressDisplay progress = ProgressDisplay::Auto;
+};
+
+struct RebuildReport {
+  size_t journal_entries = 0;                 // entries replayed
+  std::vector<std::string> journal_problems;  // entries missing or unreadable (skipped)
+  size_t restored_from_quarantine = 0;        // objects rows name, found in quarantine and put back
+  size_t instances_checked = 0;               // instance rows whose DICOM object was re-parsed
+  size_t instances_without_object = 0;        // instance rows whose object file is missing
+  std::vector<std::string> disagreements;     // instance rows their object contradicts
+  size_t dicom_adopted = 0;                   // DICOM objects no journal entry named, indexed anew
+  std::vector<std::filesystem::path> unexplained;  // objects neither named by a row nor DICOM
+  std::filesystem::path previous_index;       // where the replaced index was kept (empty if none)
+  std::map<std::string, int64_t> rows;        // rows per table in the rebuilt index
+};
+
+// Existing: the archive must be there (Error kNotFound otherwise). CreateIfMissing: a missing
+// folder becomes a new, empty archive (import and the demo create archives; nothing else does).
+enum class OpenMode { Existing, CreateIfMissing };
 
 class Archive {
  public:
-  // Opens the archive in `folder`, creating it and upgrading its schema as needed.
+  // Opens the archive in `folder` and upgrades its schema as needed. Refuses, with
+  // Error(kIndexDamaged) and how to recover, an index that is missing or empty while objects
+  // exist, damaged (SQLite quick_check), or behind its journal (archive_health.h).
   // Throws Error(SchemaTooNew) when the index was written by a newer program.
-  static Archive open(const std::filesystem::path& folder);
+  static Archive open(const std::filesystem::path& folder, OpenMode mode = OpenMode::Existing);
   ~Archive();
   Archive(Archive&&) noexcept;
   Archive& operator=(Archive&&) noexcept;
+
+  // Re-creates ARCHIVE/index.sqlite from the object store alone: the journal is replayed (every
+  // row the index ever committed, ids included), every instance row is checked against its
+  // re-parsed DICOM object, and DICOM objects no entry names (archives older than the journal,
+  // a lost journal entry) are indexed anew from their own headers. The old index, if any, is
+  // kept as index.sqlite.damaged-<time> (or .replaced-<time> with force), never deleted.
+  // Refuses (Error kConflict) an intact index unless options.force.
+  static RebuildReport rebuild_index(const std::filesystem::path& folder, const RebuildOptions& options = {});
 
   const std::filesystem::path& folder() const;
   int schema_version() const;
@@ -140,8 +189,18 @@ class Archive {
   std::vector<ArtefactRecord> artefacts(int64_t case_id) const;
 
   // --- integrity and export ---
-  // Re-hashes every object. Repair removes orphan and temporary files only, never rows.
-  VerifyReport verify(RepairMode mode, ProgressDisplay progress = ProgressDisplay::Auto);
+  // Checks the index (SQLite integrity_check, and a replay of its journal compared row by row)
+  // and re-hashes every object. Repair never deletes: it moves orphan and temporary files into
+  // the quarantine (object_store.h) and puts back quarantined objects that rows name. It refuses,
+  // changing nothing (report.repair_refused says why), when the index is damaged or disagrees
+  // with its journal, or when orphans are more than 5 % of the store (and at least 10) unless
+  // options.force: that many unindexed objects mean a lost or old index, not interrupted writes.
+  VerifyReport verify(const VerifyOptions& options);
+  VerifyReport verify(RepairMode mode, ProgressDisplay progress = ProgressDisplay::Auto) {
+    return verify(VerifyOptions{mode, false, progress});
+  }
+  // Deletes the quarantine (what `verify --repair` set aside); returns the files deleted.
+  size_t purge_quarantine();
   // Writes the series' files into out_dir (created), named <instance number>_<SOP UID>.dcm:
   // Original = the archived bytes; Deidentified = copies without identifying attributes, with
   // pseudonyms and new UIDs (archive/dicom_deidentify.h) keyed by deidentification_secret().

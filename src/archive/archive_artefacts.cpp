@@ -1,6 +1,7 @@
 // Derived artefacts (reports, renders, surfaces...): stored objects with their provenance.
 #include "archive/archive_sql.h"
 #include "archive/archive_state.h"
+#include "archive/journalled_transaction.h"
 #include "core/atomic_file.h"
 #include "core/json.h"
 #include "core/sha256.h"
@@ -20,9 +21,10 @@ std::string Archive::store_object(std::span<const std::byte> bytes) {
   StoreLock lock(state_->folder, LockKind::Shared);
   state_->objects.put(sha, bytes);
   state_->objects.make_durable();
-  sqlite::Transaction transaction(state_->db);
+  JournalledTransaction transaction(state_->db, state_->journal, "object");
   sqlite::Statement insert(state_->db, sql::kInsertObject);
   insert.bind(1, sha).bind(2, int64_t(bytes.size())).run();
+  if (state_->db.changes() == 1) transaction.written("objects", "sha256 = ?1", {sha});
   transaction.commit();
   return sha;
 }
@@ -42,11 +44,13 @@ int64_t Archive::add_artefact(const NewArtefact& a) {
   if (!is_sha256_hex(a.object_sha256) || !std::filesystem::exists(object_path(a.object_sha256)))
     throw Error(ErrorCode::kNotFound, a.object_sha256, "artefact object is not in the store (use store_object first)");
   if (!Json::accept(a.parameters_json)) throw Error(ErrorCode::kBadValue, a.kind, "artefact parameters are not JSON");
-  sqlite::Transaction transaction(state_->db);
+  StoreLock lock(state_->folder, LockKind::Shared);  // verify and rebuild see no half-done change
+  JournalledTransaction transaction(state_->db, state_->journal, "artefact");
   sqlite::Statement insert(state_->db, sql::kInsertArtefact);
   insert.bind(1, a.case_id).bind(2, a.kind).bind(3, a.object_sha256).bind(4, a.media_type).bind(5, a.inputs_hash);
   insert.bind(6, a.parameters_json).bind(7, kVersion).bind(8, utc_now()).run();
   int64_t id = state_->db.last_insert_id();
+  transaction.inserted("artefacts", id);
   transaction.commit();
   return id;
 }

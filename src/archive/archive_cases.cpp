@@ -4,6 +4,7 @@
 
 #include "archive/archive_sql.h"
 #include "archive/archive_state.h"
+#include "archive/journalled_transaction.h"
 
 namespace maxillo {
 
@@ -77,11 +78,13 @@ void Archive::set_series_role(int64_t case_id, int64_t series, std::string_view 
   static constexpr std::string_view kRoles[] = {"preop", "postop", "follow-up", "report", "unassigned"};
   if (std::find(std::begin(kRoles), std::end(kRoles), role) == std::end(kRoles))
     throw Error(ErrorCode::kBadValue, std::string(role), "unknown role (preop, postop, follow-up, report, unassigned)");
-  sqlite::Transaction transaction(state_->db);
+  StoreLock lock(state_->folder, LockKind::Shared);  // verify and rebuild see no half-done change
+  JournalledTransaction transaction(state_->db, state_->journal, "role");
   sqlite::Statement update(state_->db, sql::kSetSeriesRole);
   update.bind(1, case_id).bind(2, series).bind(3, role).run();
   if (state_->db.changes() != 1)
     throw Error(ErrorCode::kNotFound, std::to_string(series), "series is not part of case " + std::to_string(case_id));
+  transaction.written("case_series", "case_id = ?1 AND series = ?2", {case_id, series});
   transaction.commit();
 }
 

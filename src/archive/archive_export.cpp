@@ -62,30 +62,70 @@ std::string Archive::deidentification_secret() const {
   return std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size());
 }
 
+// The export is written into a hidden sibling folder and moved into place only when every file
+// is there: a failed export (a corrupt object, a full disk) leaves nothing in `out_dir`.
+class StagingFolder {
+ public:
+  explicit StagingFolder(const std::filesystem::path& out_dir)
+      : path_(out_dir.parent_path() / ("." + out_dir.filename().string() + ".partial-" + std::to_string(::getpid()))) {
+    std::error_code error;
+    std::filesystem::remove_all(path_, error);
+    std::filesystem::create_directories(path_, error);
+    if (error) throw Error(ErrorCode::kWriteFailed, path_.string(), error.message());
+  }
+  ~StagingFolder() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+  }
+  const std::filesystem::path& path() const { return path_; }
+
+  // Moves the files into out_dir (renamed whole when it does not exist yet).
+  std::vector<std::filesystem::path> publish(const std::vector<std::string>& names, const std::filesystem::path& out_dir) {
+    std::error_code error;
+    if (!std::filesystem::exists(out_dir, error)) {
+      std::filesystem::rename(path_, out_dir, error);
+    } else {
+      for (const auto& name : names) {
+        std::filesystem::rename(path_ / name, out_dir / name, error);
+        if (error) break;
+      }
+    }
+    if (error) throw Error(ErrorCode::kWriteFailed, out_dir.string(), error.message());
+    std::vector<std::filesystem::path> published;
+    for (const auto& name : names) published.push_back(out_dir / name);
+    return published;
+  }
+
+ private:
+  std::filesystem::path path_;
+};
+
 std::vector<std::filesystem::path> Archive::export_series(int64_t series, const std::filesystem::path& out_dir,
                                                           ExportProfile profile) const {
   auto members = instances(series);
   if (members.empty()) throw Error(ErrorCode::kNotFound, std::to_string(series), "no such series or no instances");
+  const auto target_dir = std::filesystem::absolute(out_dir);
   std::error_code error;
-  std::filesystem::create_directories(out_dir, error);
-  if (error) throw Error(ErrorCode::kWriteFailed, out_dir.string(), error.message());
+  std::filesystem::create_directories(target_dir.parent_path(), error);
+  if (error) throw Error(ErrorCode::kWriteFailed, target_dir.string(), error.message());
+  if (std::filesystem::exists(target_dir, error) && !std::filesystem::is_directory(target_dir, error))
+    throw Error(ErrorCode::kWriteFailed, target_dir.string(), "exists and is not a folder");
   std::string secret = profile == ExportProfile::Deidentified ? deidentification_secret() : "";
 
-  std::vector<std::filesystem::path> written;
+  StagingFolder staging(target_dir);
+  std::vector<std::string> names;
   for (const auto& instance : members) {
     auto source = state_->objects.path_of(instance.object_sha256);
     auto bytes = checked_object(source, instance.object_sha256);
     if (profile == ExportProfile::Original) {
-      auto target = out_dir / file_name(instance, instance.sop_instance_uid);
-      write_file_atomically(target, bytes, Durability::Unflushed);
-      written.push_back(target);
+      names.push_back(file_name(instance, instance.sop_instance_uid));
+      write_file_atomically(staging.path() / names.back(), bytes, Durability::Unflushed);
     } else {
-      auto target = out_dir / file_name(instance, pseudonymous_uid(secret, instance.sop_instance_uid));
-      write_deidentified_copy(source, target, secret);
-      written.push_back(target);
+      names.push_back(file_name(instance, pseudonymous_uid(secret, instance.sop_instance_uid)));
+      write_deidentified_copy(source, staging.path() / names.back(), secret);
     }
   }
-  return written;
+  return staging.publish(names, target_dir);
 }
 
 }  // namespace maxillo

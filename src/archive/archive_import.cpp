@@ -15,13 +15,17 @@
 namespace maxillo {
 namespace {
 
-// A bounded single-producer single-consumer queue; close() marks the end of input.
+// A bounded single-producer single-consumer queue; close() marks the end of input. Bounded in
+// files and in bytes, so a folder of large multi-frame files does not fill the memory.
 class ScanQueue {
  public:
   void push(ScannedFile&& item) {
     std::unique_lock lock(mutex_);
-    not_full_.wait(lock, [&] { return items_.size() < kCapacity || abandoned_; });
+    not_full_.wait(lock, [&] {
+      return (items_.size() < kCapacity && (items_.empty() || bytes_ < kCapacityBytes)) || abandoned_;
+    });
     if (abandoned_) return;
+    bytes_ += item.bytes.size();
     items_.push_back(std::move(item));
     not_empty_.notify_one();
   }
@@ -46,12 +50,15 @@ class ScanQueue {
     if (items_.empty()) return std::nullopt;
     ScannedFile item = std::move(items_.front());
     items_.pop_front();
+    bytes_ -= item.bytes.size();
     not_full_.notify_one();
     return item;
   }
 
  private:
   static constexpr size_t kCapacity = 64;
+  static constexpr size_t kCapacityBytes = size_t(512) << 20;
+  size_t bytes_ = 0;
   std::mutex mutex_;
   std::condition_variable not_full_, not_empty_;
   std::deque<ScannedFile> items_;
@@ -65,13 +72,15 @@ void report_problem(ImportReport& report, const ImportOptions& options, ImportPr
   report.problems.push_back(std::move(problem));
 }
 
-// An indexed object whose file has gone (verify reports it as missing) is written again from
-// the identical bytes being re-imported: re-importing the originals heals the archive.
-bool restore_lost_object(ObjectStore& objects, const ScannedFile& file) {
-  if (std::filesystem::exists(objects.path_of(file.sha256))) return false;
-  objects.put(file.sha256, file.bytes);
+// An indexed object whose file has gone or no longer hashes to its name (verify reports it as
+// missing or corrupt) is written again from the identical bytes being re-imported: re-importing
+// the originals heals the archive. What is there is hashed before it is trusted.
+bool restore_archived_object(ObjectStore& objects, const ScannedFile& file) {
+  auto outcome = objects.put(file.sha256, file.bytes);
+  if (outcome == ObjectStore::PutOutcome::AlreadyIntact) return false;
   objects.make_durable();
-  log::warning(file.path.string(), ": restored the lost archived object ", file.sha256.substr(0, 12), "...");
+  log::warning(file.path.string(), ": restored the ", outcome == ObjectStore::PutOutcome::Replaced ? "damaged" : "lost",
+               " archived object ", file.sha256.substr(0, 12), "...");
   return true;
 }
 
@@ -100,7 +109,7 @@ ImportReport Archive::import_paths(const std::vector<std::filesystem::path>& pat
     queue.close();
   });
 
-  BatchWriter writer(state_->db, state_->objects);
+  BatchWriter writer(state_->db, state_->objects, state_->journal);
   auto commit = [&] {
     size_t pending = writer.pending();
     writer.commit(report, options.on_problem);
@@ -110,7 +119,7 @@ ImportReport Archive::import_paths(const std::vector<std::filesystem::path>& pat
     while (auto item = queue.pop()) {
       switch (item->stage) {
         case ScannedFile::Stage::Known:
-          if (restore_lost_object(state_->objects, *item)) ++report.restored;
+          if (restore_archived_object(state_->objects, *item)) ++report.restored;
           ++report.already_archived;
           progress.advance();
           break;
@@ -121,11 +130,24 @@ ImportReport Archive::import_paths(const std::vector<std::filesystem::path>& pat
                           item->code, item->reason});
           progress.advance();
           break;
-        case ScannedFile::Stage::Parsed:
+        case ScannedFile::Stage::Parsed: {
           log::debug("import ", item->path.string(), ": patient ", item->header.patient_id);
-          writer.add(std::move(*item));
+          auto path = item->path;
+          std::string reason;
+          switch (writer.add(std::move(*item), reason)) {
+            case ImportOutcome::Imported: break;
+            case ImportOutcome::AlreadyArchived:  // the same file twice in one batch
+              ++report.already_archived;
+              progress.advance();
+              break;
+            default:
+              report_problem(report, options, {path, ImportOutcome::Conflict, ErrorCode::kConflict, reason});
+              progress.advance();
+              break;
+          }
           if (writer.pending() >= options.batch_files) commit();
           break;
+        }
       }
     }
     commit();

@@ -15,6 +15,12 @@ Json strings(const Container& items) {
   return list;
 }
 
+Json paths(const std::vector<std::filesystem::path>& items) {
+  Json list = Json::array();
+  for (const auto& item : items) list.push_back(item.string());
+  return list;
+}
+
 }  // namespace
 
 Json to_json(const PatientRecord& r) {
@@ -111,17 +117,34 @@ Json to_json(const ImportReport& r) {
 }
 
 Json to_json(const VerifyReport& r) {
-  Json orphans = Json::array(), temporaries = Json::array();
-  for (const auto& p : r.orphans) orphans.push_back(p.string());
-  for (const auto& p : r.temporaries) temporaries.push_back(p.string());
-  return {{"objects_checked", r.objects_checked},
+  Json owners = Json::object();
+  for (const auto& [sha, names] : r.owners) owners[sha] = strings(names);
+  return {{"index_check", r.index_check},
+          {"journal_differences", strings(r.journal_differences)},
+          {"objects_checked", r.objects_checked},
           {"consistent", r.consistent()},
           {"data_intact", r.data_intact()},
           {"missing", strings(r.missing)},
           {"corrupt", strings(r.corrupt)},
-          {"orphans", orphans},
-          {"temporaries", temporaries},
-          {"removed", r.removed}};
+          {"owners", owners},
+          {"orphans", paths(r.orphans)},
+          {"temporaries", paths(r.temporaries)},
+          {"quarantined", r.quarantined},
+          {"restored", strings(r.restored)},
+          {"repair_refused", r.repair_refused.empty() ? Json(nullptr) : Json(r.repair_refused)}};
+}
+
+Json to_json(const RebuildReport& r) {
+  return {{"journal_entries", r.journal_entries},
+          {"journal_problems", strings(r.journal_problems)},
+          {"restored_from_quarantine", r.restored_from_quarantine},
+          {"instances_checked", r.instances_checked},
+          {"instances_without_object", r.instances_without_object},
+          {"disagreements", strings(r.disagreements)},
+          {"dicom_adopted", r.dicom_adopted},
+          {"unexplained", paths(r.unexplained)},
+          {"previous_index", r.previous_index.empty() ? Json(nullptr) : Json(r.previous_index.string())},
+          {"rows", r.rows}};
 }
 
 }  // namespace maxillo

@@ -16,5 +16,6 @@ Json to_json(const CaseContents& contents);
 Json to_json(const ImportProblem& problem);
 Json to_json(const ImportReport& report);
 Json to_json(const VerifyReport& report);
+Json to_json(const RebuildReport& report);
 
 }  // namespace maxillo

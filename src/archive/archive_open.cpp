@@ -8,10 +8,12 @@
 #include <chrono>
 #include <thread>
 #include <cstring>
-#include <ctime>
 #include <map>
 
+#include "archive/archive_health.h"
 #include "archive/archive_state.h"
+#include "archive/journal_replay.h"
+#include "archive/journalled_transaction.h"
 #include "archive/dicom_header.h"
 #include "core/resources.h"
 
@@ -36,7 +38,30 @@ std::map<int, std::string> migrations() {
   return by_version;
 }
 
-int upgrade_schema(sqlite::Database& db) {
+// Version 2 introduced the journal: the rows an index already had are journalled as one entry.
+void snapshot_rows(JournalledTransaction& transaction) {
+  for (const auto& table : index_tables()) transaction.all_rows_of(table);
+}
+
+void prepare_folder(const std::filesystem::path& folder, OpenMode mode) {
+  std::error_code error;
+  if (std::filesystem::is_directory(folder, error)) {
+    if (mode == OpenMode::Existing && !std::filesystem::exists(index_file(folder)) &&
+        !holds_any_file(objects_folder(folder)))
+      throw Error(ErrorCode::kNotFound, folder.string(), "not a maxillo archive (`maxillo import` creates one)");
+    return;
+  }
+  if (std::filesystem::exists(folder, error))
+    throw Error(ErrorCode::kWriteFailed, folder.string(), "not a folder, so it cannot hold an archive");
+  if (mode == OpenMode::Existing)
+    throw Error(ErrorCode::kNotFound, folder.string(), "no archive here (`maxillo import` creates one)");
+  std::filesystem::create_directories(folder, error);
+  if (error) throw Error(ErrorCode::kWriteFailed, folder.string(), error.message());
+}
+
+}  // namespace
+
+int upgrade_schema(sqlite::Database& db, const IndexJournal& journal) {
   auto steps = migrations();
   int newest = steps.empty() ? 0 : steps.rbegin()->first;
   int current = db.user_version();
@@ -45,25 +70,17 @@ int upgrade_schema(sqlite::Database& db) {
                 "schema version " + std::to_string(current) + ", this program knows up to " + std::to_string(newest));
   for (const auto& [version, path] : steps) {
     if (version <= current) continue;
-    sqlite::Transaction transaction(db);
-    if (db.user_version() >= version) continue;  // another process upgraded meanwhile
+    JournalledTransaction transaction(db, journal, "snapshot");
+    const int found = db.user_version();
+    if (found >= version) continue;  // another process upgraded meanwhile
     db.execute(load_resource(path));
+    if (version == 2 && found == 1) snapshot_rows(transaction);
     db.execute("PRAGMA user_version = " + std::to_string(version));
     transaction.commit();
   }
   return db.user_version();
 }
 
-}  // namespace
-
-std::string utc_now() {
-  std::time_t now = std::time(nullptr);
-  std::tm utc{};
-  gmtime_r(&now, &utc);
-  char text[32];
-  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
-  return text;
-}
 
 void configure_connection(sqlite::Database& db) {
   // WAL: readers never block the writer; synchronous=NORMAL in WAL keeps the index consistent
@@ -71,6 +88,8 @@ void configure_connection(sqlite::Database& db) {
   db.execute("PRAGMA journal_mode = WAL");
   db.execute("PRAGMA synchronous = NORMAL");
   db.execute("PRAGMA foreign_keys = ON");
+  // Checks each b-tree page as it is read, so damage is noticed where it is met.
+  db.execute("PRAGMA cell_size_check = ON");
 }
 
 StoreLock::StoreLock(const std::filesystem::path& folder, LockKind kind) {
@@ -87,31 +106,37 @@ StoreLock::StoreLock(const std::filesystem::path& folder, LockKind kind) {
 
 StoreLock::~StoreLock() { ::close(fd_); }  // closing releases the flock
 
-Archive::State::State(const std::filesystem::path& archive_folder)
+Archive::State::State(const std::filesystem::path& archive_folder, sqlite::OpenKind index_open)
     : folder(archive_folder),
-      db((std::filesystem::create_directories(archive_folder), index_file(archive_folder))),
-      objects(archive_folder / "objects") {}
+      db(index_file(archive_folder), index_open),
+      objects(objects_folder(archive_folder)),
+      journal(journal_folder(archive_folder)) {}
 
-Archive Archive::open(const std::filesystem::path& folder) {
+Archive Archive::open(const std::filesystem::path& folder, OpenMode mode) {
   initialise_dicom_toolkit();
+  prepare_folder(folder, mode);
+  const IndexPresence presence = check_index_presence(folder);
   std::unique_ptr<State> state;
   try {
-    state = std::make_unique<State>(folder);
+    state = std::make_unique<State>(folder, presence == IndexPresence::Fresh ? sqlite::OpenKind::Create
+                                                                             : sqlite::OpenKind::Existing);
   } catch (const std::filesystem::filesystem_error& e) {
     throw Error(ErrorCode::kWriteFailed, folder.string(), e.code().message());
   }
+  require_intact_index(state->db);
   // Two processes creating the same archive at once: switching a new file to WAL and the first
   // upgrade can report "locked" without waiting on the busy handler. Retry them briefly.
   for (int attempt = 0;; ++attempt) {
     try {
       configure_connection(state->db);
-      state->schema_version = upgrade_schema(state->db);
+      state->schema_version = upgrade_schema(state->db, state->journal);
       break;
     } catch (const Error& e) {
       if (e.code() != ErrorCode::kArchiveBusy || attempt == 200) throw;
       std::this_thread::sleep_for(std::chrono::milliseconds(10 + attempt % 40));
     }
   }
+  require_index_not_behind_journal(state->db, state->journal);
   return Archive(std::move(state));
 }
 

@@ -97,5 +97,11 @@ inline constexpr const char* kArtefactsOfCase = "WHERE case_id = ?1 ORDER BY id"
 
 // --- verify ---
 inline constexpr const char* kAllObjects = "SELECT sha256, size FROM objects";
+// ?1 sha256: what names this object, for a person to see what a missing or corrupt one affects.
+inline constexpr const char* kOwnersOfObject =
+    "SELECT 'case:' || IFNULL(cs.case_id, '?') || ' series:' || i.series || ' instance:' || i.id "
+    "FROM instances i LEFT JOIN case_series cs ON cs.series = i.series WHERE i.object = ?1 "
+    "UNION ALL SELECT 'case:' || a.case_id || ' artefact:' || a.id || ' (' || a.kind || ')' "
+    "FROM artefacts a WHERE a.object = ?1";
 
 }  // namespace maxillo::sql

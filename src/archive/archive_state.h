@@ -4,8 +4,10 @@
 #include <string>
 
 #include "archive/archive.h"
+#include "archive/index_journal.h"
 #include "archive/object_store.h"
 #include "archive/sqlite.h"
+#include "core/utc_time.h"
 
 namespace maxillo {
 
@@ -25,19 +27,24 @@ class StoreLock {
 };
 
 struct Archive::State {
-  explicit State(const std::filesystem::path& archive_folder);
+  State(const std::filesystem::path& archive_folder, sqlite::OpenKind index_open);
   std::filesystem::path folder;
   sqlite::Database db;
   ObjectStore objects;
+  IndexJournal journal;
   int schema_version = 0;
 };
 
 inline std::filesystem::path index_file(const std::filesystem::path& folder) { return folder / "index.sqlite"; }
+inline std::filesystem::path objects_folder(const std::filesystem::path& folder) { return folder / "objects"; }
+inline std::filesystem::path journal_folder(const std::filesystem::path& folder) { return objects_folder(folder) / "journal"; }
+
+// Applies the schema migrations in db/ one version at a time; an index upgraded from version 1
+// gets a snapshot journal entry of its rows. Returns the schema version.
+int upgrade_schema(sqlite::Database& db, const IndexJournal& journal);
 
 // Connection settings shared by every connection to an archive index.
 void configure_connection(sqlite::Database& db);
 
-// UTC now as ISO 8601, e.g. 2024-05-01T12:00:00Z.
-std::string utc_now();
 
 }  // namespace maxillo

@@ -1,29 +1,95 @@
-// Archive::verify: re-hash every indexed object, find missing, corrupt, orphan and temporary
-// files. Repair deletes orphans and temporaries only: a missing or corrupt object is data loss
-// that a person must see, and its rows stay.
+// Archive::verify: check the index (SQLite's integrity check and its journal), re-hash every
+// indexed object, find missing, corrupt, orphan and temporary files. Repair never deletes: it
+// quarantines orphans and temporaries and refuses when what it sees means a lost index.
+#include <unistd.h>
+
 #include <unordered_map>
 #include <unordered_set>
 
 #include "archive/archive_sql.h"
 #include "archive/archive_state.h"
+#include "archive/index_comparison.h"
+#include "archive/journal_replay.h"
+#include "archive/journalled_transaction.h"
 #include "core/atomic_file.h"
 #include "core/sha256.h"
 
 namespace maxillo {
+namespace {
 
-VerifyReport Archive::verify(RepairMode mode, ProgressDisplay display) {
-  // Exclusive: no importer is between writing an object and committing its row, so every
-  // unindexed object really is an orphan.
-  StoreLock lock(state_->folder, LockKind::Exclusive);
-  VerifyReport report;
+// Orphans beyond this share of the store (and kManyOrphans files) are not what interrupted
+// writes leave behind: an import batch is 500 files, but a store is normally thousands.
+constexpr size_t kManyOrphans = 10;
+constexpr size_t kOrphanShareDivisor = 20;  // 5 %
+
+std::string integrity_check(sqlite::Database& db) {
+  try {
+    sqlite::Statement check(db, "PRAGMA integrity_check(20)");
+    std::string findings;
+    while (check.step()) findings += (findings.empty() ? "" : "; ") + check.text(0);
+    return findings.empty() ? "no answer" : findings;
+  } catch (const Error& e) {
+    return e.reason();
+  }
+}
+
+// A scratch index beside the real one, removed with its WAL files whatever happens.
+class ScratchIndex {
+ public:
+  explicit ScratchIndex(const std::filesystem::path& folder)
+      : path_(folder / (".verify-" + std::to_string(::getpid()) + ".sqlite")) {
+    remove();
+  }
+  ~ScratchIndex() { remove(); }
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  void remove() {
+    std::error_code ignored;
+    for (const char* suffix : {"", "-wal", "-shm", "-journal"}) std::filesystem::remove(path_.string() + suffix, ignored);
+  }
+  std::filesystem::path path_;
+};
+
+// Replays entries 1..N (N: the index's counter) into a scratch index and compares it with the
+// index row by row. The caller holds the store lock exclusively, so no writer commits meanwhile.
+std::vector<std::string> journal_differences(Archive::State& state) {
+  std::vector<std::string> differences;
+  try {
+    ScratchIndex scratch(state.folder);
+    sqlite::Database db(scratch.path(), sqlite::OpenKind::Create);
+    db.execute("PRAGMA journal_mode = OFF; PRAGMA synchronous = OFF");
+    upgrade_schema(db, state.journal);
+    auto outcome = replay_journal(db, state.journal, journal_sequence(state.db));
+    for (auto& problem : outcome.problems) differences.push_back("journal " + problem);
+    sqlite::Statement attach(db, "ATTACH DATABASE ?1 AS live");
+    attach.bind(1, index_file(state.folder).string()).run();
+    for (const auto& difference : compare_attached_indexes(db, "live"))
+      differences.push_back("index and journal differ in " + difference.describe() +
+                            " (first: the journal's replay, second: the index)");
+  } catch (const Error& e) {
+    differences.push_back("journal check failed: " + e.reason());
+  }
+  return differences;
+}
+
+std::vector<std::string> owners_of(sqlite::Database& db, const std::string& sha) {
+  sqlite::Statement query(db, sql::kOwnersOfObject);
+  query.bind(1, sha);
+  std::vector<std::string> owners;
+  while (query.step()) owners.push_back(query.text(0));
+  return owners;
+}
+
+void scan_objects(Archive::State& state, ProgressDisplay display, VerifyReport& report) {
   std::unordered_map<std::string, int64_t> indexed;  // sha256 -> size
   {
-    sqlite::Statement query(state_->db, sql::kAllObjects);
+    sqlite::Statement query(state.db, sql::kAllObjects);
     while (query.step()) indexed.emplace(query.text(0), query.integer(1));
   }
   Progress progress("verify", indexed.size(), display);
   std::unordered_set<std::string> seen;
-  state_->objects.for_each_file([&](ObjectStore::EntryKind kind, const std::string& sha, const std::filesystem::path& path) {
+  state.objects.for_each_file([&](ObjectStore::EntryKind kind, const std::string& sha, const std::filesystem::path& path) {
     if (kind == ObjectStore::EntryKind::Temporary) {
       report.temporaries.push_back(path);
       return;
@@ -46,16 +112,58 @@ VerifyReport Archive::verify(RepairMode mode, ProgressDisplay display) {
   for (const auto& [sha, size] : indexed)
     if (!seen.contains(sha)) report.missing.push_back(sha);
   progress.finish();
+  for (const auto* bad : {&report.missing, &report.corrupt})
+    for (const auto& sha : *bad) report.owners[sha] = owners_of(state.db, sha);
+}
 
-  if (mode == RepairMode::Repair) {
-    for (const auto* paths : {&report.orphans, &report.temporaries})
-      for (const auto& path : *paths) {
-        std::error_code error;
-        if (std::filesystem::remove(path, error)) ++report.removed;
-      }
-    if (report.removed > 0) state_->objects.make_durable();
+std::string reason_to_refuse(const VerifyReport& report, bool force) {
+  if (!report.index_intact())
+    return "the index is damaged or disagrees with its journal, so objects it does not name may still be data: "
+           "run `maxillo archive rebuild-index` first";
+  const size_t stored = report.objects_checked + report.orphans.size();
+  if (!force && report.orphans.size() >= kManyOrphans && report.orphans.size() * kOrphanShareDivisor > stored)
+    return std::to_string(report.orphans.size()) + " of " + std::to_string(stored) +
+           " objects are named by no index row, more than interrupted writes leave behind. If a large import was "
+           "interrupted, run it again (it adopts its objects); if the index was replaced by an older copy, run "
+           "`maxillo archive rebuild-index`; to quarantine them anyway, repeat with --force (the quarantine keeps "
+           "them until `verify --purge`)";
+  return {};
+}
+
+void repair(Archive::State& state, const VerifyOptions& options, VerifyReport& report) {
+  report.repair_refused = reason_to_refuse(report, options.force);
+  if (!report.repair_refused.empty()) return;
+  for (const auto* paths : {&report.orphans, &report.temporaries})
+    for (const auto& path : *paths) {
+      state.objects.set_aside(path);
+      ++report.quarantined;
+    }
+  std::vector<std::string> still_missing;
+  for (const auto& sha : report.missing) {
+    if (state.objects.restore_from_quarantine(sha)) report.restored.push_back(sha);
+    else still_missing.push_back(sha);
   }
+  report.missing = std::move(still_missing);
+  if (report.quarantined > 0 || !report.restored.empty()) state.objects.make_durable();
+}
+
+}  // namespace
+
+VerifyReport Archive::verify(const VerifyOptions& options) {
+  // Exclusive: no writer is between writing an object and committing its row, and no index
+  // row changes while the index is compared with its journal.
+  StoreLock lock(state_->folder, LockKind::Exclusive);
+  VerifyReport report;
+  report.index_check = integrity_check(state_->db);
+  report.journal_differences = journal_differences(*state_);
+  scan_objects(*state_, options.progress, report);
+  if (options.mode == RepairMode::Repair) repair(*state_, options, report);
   return report;
+}
+
+size_t Archive::purge_quarantine() {
+  StoreLock lock(state_->folder, LockKind::Exclusive);
+  return state_->objects.purge_quarantine();
 }
 
 }  // namespace maxillo

@@ -10,6 +10,7 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/sha256.h"
+#include "core/utc_time.h"
 #include "core/version.h"
 
 namespace maxillo {
@@ -22,11 +23,8 @@ void put(DcmDataset& dataset, const DcmTagKey& tag, const std::string& value) {
 
 // DICOM DA and TM of now, UTC (the report records when it was made, not when it was scanned).
 std::pair<std::string, std::string> utc_date_time() {
-  std::time_t now = std::time(nullptr);
-  char date[16], time[16];
-  std::strftime(date, sizeof date, "%Y%m%d", std::gmtime(&now));
-  std::strftime(time, sizeof time, "%H%M%S", std::gmtime(&now));
-  return {date, time};
+  const std::string both = utc_time_text("%Y%m%d %H%M%S");  // one reading of the clock
+  return {both.substr(0, 8), both.substr(9)};
 }
 
 void put_patient_and_study(DcmDataset& d, const EncapsulatedReport& r) {

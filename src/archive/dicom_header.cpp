@@ -16,7 +16,9 @@
 #include <cstring>
 #include <mutex>
 
+#include "archive/dicom_structure.h"
 #include "core/error.h"
+#include "core/utf8.h"
 
 namespace maxillo {
 namespace {
@@ -27,10 +29,13 @@ bool has_dicm_prefix(std::span<const std::byte> bytes) {
   return bytes.size() >= kPreambleLength + 4 && std::memcmp(bytes.data() + kPreambleLength, "DICM", 4) == 0;
 }
 
+// Text as UTF-8: values in a declared character set were converted by DCMTK; bytes that are
+// still not UTF-8 (accented letters with no Specific Character Set declared) are read as
+// Latin-1, the usual encoding of such files (documented in ARCHITECTURE.md).
 std::string text_of(DcmItem& item, const DcmTagKey& tag) {
   OFString value;
   if (item.findAndGetOFStringArray(tag, value).bad()) return {};
-  return value.c_str();
+  return repaired_utf8(std::string_view(value.c_str(), value.length()));
 }
 
 std::optional<int> integer_of(DcmItem& item, const DcmTagKey& tag) {
@@ -115,6 +120,7 @@ InstanceHeader parse_instance_header(std::span<const std::byte> bytes, const std
   initialise_dicom_toolkit();
   if (!has_dicm_prefix(bytes))
     throw Error(ErrorCode::kNotDicom, path.string(), "no DICM prefix at byte 128 (not a DICOM Part 10 file)");
+  check_dicom_structure(bytes, path);  // before DCMTK: it trusts lengths and nests on the stack
 
   // The whole file is already in memory (it was read once for hashing): parse from there.
   DcmInputBufferStream stream;

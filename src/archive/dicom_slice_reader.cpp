@@ -10,6 +10,7 @@
 #include <dcmtk/dcmdata/dcdatset.h>
 #include <dcmtk/dcmdata/dcdeftag.h>
 #include <dcmtk/dcmdata/dcfilefo.h>
+#include <dcmtk/dcmdata/dcistrmb.h>
 #include <dcmtk/dcmdata/dcpixel.h>
 #include <dcmtk/dcmdata/dcrledrg.h>
 #include <dcmtk/dcmdata/dcxfer.h>
@@ -19,8 +20,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <mutex>
 
+#include "archive/dicom_structure.h"
+#include "core/atomic_file.h"
 #include "core/error.h"
 
 namespace maxillo {
@@ -126,6 +130,21 @@ struct SampleLayout {
   }
 };
 
+// The decoded frame is allocated from Rows x Columns, which a header can set to 65535 x 65535
+// (8 GiB): check the claim against the bytes really stored before allocating. Native pixel data
+// must hold the whole frame; compressed data is allowed a generous 1:1000 ratio.
+void check_frame_size(const Reading& r, DcmPixelData& pixel_data, size_t frame_bytes) {
+  constexpr size_t kMaxCompressionRatio = 1000;
+  const size_t stored = pixel_data.getLength();
+  const bool encapsulated = DcmXfer(r.dataset.getOriginalXfer()).isEncapsulated();
+  if (!encapsulated && stored < frame_bytes)
+    r.fail(ErrorCode::kBadValue, "Pixel Data holds " + std::to_string(stored) + " bytes, Rows x Columns needs " +
+                                     std::to_string(frame_bytes));
+  if (encapsulated && frame_bytes / kMaxCompressionRatio > stored)
+    r.fail(ErrorCode::kBadValue, "Rows x Columns (" + std::to_string(frame_bytes) + " bytes) is implausible for " +
+                                     std::to_string(stored) + " bytes of compressed pixel data");
+}
+
 void read_pixels(const Reading& r, DicomSlice& slice, const std::string& photometric) {
   SampleLayout layout{r.required_uint16(DCM_BitsAllocated, "Bits Allocated"), 0, false};
   if (layout.bits_allocated != 8 && layout.bits_allocated != 16)
@@ -142,6 +161,7 @@ void read_pixels(const Reading& r, DicomSlice& slice, const std::string& photome
     r.fail(ErrorCode::kMissingAttribute, "Pixel Data is missing");
   auto* pixel_data = static_cast<DcmPixelData*>(element);
   const size_t count = size_t(slice.rows) * slice.columns;
+  check_frame_size(r, *pixel_data, count * (layout.bits_allocated / 8));
   std::vector<uint8_t> frame(count * (layout.bits_allocated / 8) + 1);  // even size for DCMTK
   Uint32 start_fragment = 0;
   OFString colour_model;
@@ -168,8 +188,16 @@ DicomSlice read_dicom_slice(const std::filesystem::path& path) {
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error))
     throw Error(ErrorCode::kFileNotFound, path.string(), "no such file");
+  const std::vector<std::byte> bytes = read_file(path);
+  check_dicom_structure(bytes, path);  // lengths and nesting checked before DCMTK reads them
+  DcmInputBufferStream stream;
+  stream.setBuffer(bytes.data(), static_cast<offile_off_t>(bytes.size()));
+  stream.setEos();
   DcmFileFormat file;
-  OFCondition status = file.loadFile(path.c_str());
+  file.transferInit();
+  // Every value read now (no deferred loading): the buffer is gone when this function returns.
+  OFCondition status = file.read(stream, EXS_Unknown, EGL_noChange, std::numeric_limits<Uint32>::max());
+  file.transferEnd();
   if (status.bad()) throw Error(ErrorCode::kNotDicom, path.string(), status.text());
   Reading r{path, *file.getDataset()};
 

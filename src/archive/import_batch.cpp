@@ -19,11 +19,17 @@ int64_t single_id(sqlite::Statement& query) {
   return id;
 }
 
+std::string conflict_reason(const std::string& sop_instance_uid, const std::string& archived_sha256) {
+  return "SOP Instance UID " + sop_instance_uid + " is archived with other content (object " +
+         archived_sha256.substr(0, 12) + "...); the archived file is kept";
+}
+
 }  // namespace
 
-BatchWriter::BatchWriter(sqlite::Database& db, ObjectStore& objects)
+BatchWriter::BatchWriter(sqlite::Database& db, ObjectStore& objects, const IndexJournal& journal)
     : db_(db),
       objects_(objects),
+      journal_(journal),
       insert_patient_(db, sql::kInsertPatient),
       patient_by_id_(db, sql::kPatientByPatientId),
       insert_case_(db, sql::kInsertDefaultCase),
@@ -38,10 +44,17 @@ BatchWriter::BatchWriter(sqlite::Database& db, ObjectStore& objects)
       insert_instance_(db, sql::kInsertInstance),
       object_of_sop_(db, sql::kObjectOfSopInstance) {}
 
-void BatchWriter::add(ScannedFile&& file) {
+ImportOutcome BatchWriter::add(ScannedFile&& file, std::string& reason) {
+  auto [earlier, first] = batch_objects_.emplace(file.header.sop_instance_uid, file.sha256);
+  if (!first) {
+    if (earlier->second == file.sha256) return ImportOutcome::AlreadyArchived;
+    reason = conflict_reason(file.header.sop_instance_uid, earlier->second);
+    return ImportOutcome::Conflict;  // its bytes are never stored: nothing would name them
+  }
   objects_.put(file.sha256, file.bytes);
   file.bytes = {};  // the file is on disk now; keep batches small in memory
   batch_.push_back(std::move(file));
+  return ImportOutcome::Imported;
 }
 
 void BatchWriter::commit(ImportReport& report, const std::function<void(const ImportProblem&)>& on_problem) {
@@ -51,7 +64,12 @@ void BatchWriter::commit(ImportReport& report, const std::function<void(const Im
   ImportReport outcome;
   std::vector<ImportProblem> problems;
   {
-    sqlite::Transaction transaction(db_);
+    JournalledTransaction transaction(db_, journal_, "import");
+    transaction_ = &transaction;
+    struct Forget {
+      JournalledTransaction*& current;
+      ~Forget() { current = nullptr; }
+    } forget{transaction_};
     for (const auto& file : batch_) {
       std::string reason;
       switch (insert(file, now, outcome, reason)) {
@@ -72,35 +90,44 @@ void BatchWriter::commit(ImportReport& report, const std::function<void(const Im
     report.problems.push_back(std::move(problem));
   }
   batch_.clear();
+  batch_objects_.clear();
+}
+
+// Another process may have archived this SOP Instance UID since the scanner looked: decided
+// before any row is written, so a rejected file raises no identity flag and makes no patient.
+ImportOutcome BatchWriter::archived_outcome(const ScannedFile& file, std::string& reason) {
+  std::string archived;
+  if (object_of_sop_.reset().bind(1, file.header.sop_instance_uid).step()) archived = object_of_sop_.text(0);
+  object_of_sop_.reset();
+  if (archived.empty()) return ImportOutcome::Imported;
+  if (archived == file.sha256) return ImportOutcome::AlreadyArchived;
+  reason = conflict_reason(file.header.sop_instance_uid, archived);
+  return ImportOutcome::Conflict;
 }
 
 ImportOutcome BatchWriter::insert(const ScannedFile& file, const std::string& now, ImportReport& report,
                                   std::string& reason) {
+  if (auto outcome = archived_outcome(file, reason); outcome != ImportOutcome::Imported) return outcome;
   const InstanceHeader& h = file.header;
   const PatientState& patient = patient_of(h, now);
   flag_identity(patient, file, now, report);
   int64_t series = series_of(h, study_of(h, patient.id), patient.default_case);
   insert_object_.reset().bind(1, file.sha256).bind(2, int64_t(file.size)).run();
+  if (db_.changes() == 1) transaction_->written("objects", "sha256 = ?1", {file.sha256});
   auto& s = insert_instance_.reset();
   s.bind(1, series).bind(2, h.sop_instance_uid).bind(3, h.sop_class_uid);
   bind_optional(s, 4, h.instance_number);
   s.bind(5, h.image_position).bind(6, h.image_orientation).bind(7, h.transfer_syntax_uid).bind(8, file.sha256);
   s.bind(9, int64_t(file.size)).bind(10, std::filesystem::absolute(file.path).string()).bind(11, now);
   s.run();
-  if (db_.changes() == 1) return ImportOutcome::Imported;
-  // Another file of this batch, or another process, archived this SOP Instance UID first.
-  object_of_sop_.reset().bind(1, h.sop_instance_uid).step();
-  std::string archived = object_of_sop_.text(0);
-  object_of_sop_.reset();
-  if (archived == file.sha256) return ImportOutcome::AlreadyArchived;
-  reason = "SOP Instance UID " + h.sop_instance_uid + " is archived with other content (object " +
-           archived.substr(0, 12) + "...); the archived file is kept";
-  return ImportOutcome::Conflict;
+  transaction_->inserted("instances", db_.last_insert_id());
+  return ImportOutcome::Imported;
 }
 
 const BatchWriter::PatientState& BatchWriter::patient_of(const InstanceHeader& h, const std::string& now) {
   if (auto found = patients_.find(h.patient_id); found != patients_.end()) return found->second;
   insert_patient_.reset().bind(1, h.patient_id).bind(2, h.patient_name).bind(3, h.birth_date).bind(4, h.sex).bind(5, now).run();
+  if (db_.changes() == 1) transaction_->inserted("patients", db_.last_insert_id());
   PatientState state{};
   patient_by_id_.reset().bind(1, h.patient_id).step();
   state.id = patient_by_id_.integer(0);
@@ -109,6 +136,7 @@ const BatchWriter::PatientState& BatchWriter::patient_of(const InstanceHeader& h
   state.sex = patient_by_id_.text(3);
   patient_by_id_.reset();
   insert_case_.reset().bind(1, state.id).bind(2, now).run();
+  if (db_.changes() == 1) transaction_->inserted("cases", db_.last_insert_id());
   state.default_case = single_id(case_of_patient_.reset().bind(1, state.id));
   return patients_.emplace(h.patient_id, std::move(state)).first->second;
 }
@@ -126,7 +154,9 @@ void BatchWriter::flag_identity(const PatientState& patient, const ScannedFile& 
     if (!flagged_.emplace(patient.id, attribute, *arrived).second) continue;
     insert_flag_.reset().bind(1, patient.id).bind(2, attribute).bind(3, *archived).bind(4, *arrived);
     insert_flag_.bind(5, std::filesystem::absolute(file.path).string()).bind(6, h.sop_instance_uid).bind(7, now).run();
-    report.identity_flags += size_t(db_.changes());
+    if (db_.changes() != 1) continue;
+    transaction_->inserted("identity_flags", db_.last_insert_id());
+    ++report.identity_flags;
   }
 }
 
@@ -134,6 +164,7 @@ int64_t BatchWriter::study_of(const InstanceHeader& h, int64_t patient) {
   if (auto found = studies_.find(h.study_uid); found != studies_.end()) return found->second;
   insert_study_.reset().bind(1, patient).bind(2, h.study_uid).bind(3, h.study_date).bind(4, h.study_time);
   insert_study_.bind(5, h.study_description).bind(6, h.accession_number).run();
+  if (db_.changes() == 1) transaction_->inserted("studies", db_.last_insert_id());
   int64_t id = single_id(study_by_uid_.reset().bind(1, h.study_uid));
   return studies_.emplace(h.study_uid, id).first->second;
 }
@@ -147,8 +178,10 @@ int64_t BatchWriter::series_of(const InstanceHeader& h, int64_t study, int64_t c
   bind_optional(s, 7, h.columns);
   s.bind(8, optional_real(h.pixel_spacing_row)).bind(9, optional_real(h.pixel_spacing_column));
   s.bind(10, optional_real(h.slice_thickness)).run();
+  if (db_.changes() == 1) transaction_->inserted("series", db_.last_insert_id());
   int64_t id = single_id(series_by_uid_.reset().bind(1, h.series_uid));
   attach_series_.reset().bind(1, case_id).bind(2, id).bind(3, h.modality).run();
+  if (db_.changes() == 1) transaction_->written("case_series", "case_id = ?1 AND series = ?2", {case_id, id});
   return series_.emplace(h.series_uid, id).first->second;
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 // The second stage of an import, on the main thread: store the objects of a batch, make them
-// durable with one syncfs, then commit all the batch's rows in one transaction. Rows are
-// therefore never committed before their files exist on stable storage.
+// durable with one syncfs, then commit all the batch's rows in one journalled transaction.
+// Rows are therefore never committed before their files exist on stable storage.
 #include <map>
 #include <set>
 #include <string>
@@ -10,6 +10,8 @@
 
 #include "archive/archive.h"
 #include "archive/import_scan.h"
+#include "archive/index_journal.h"
+#include "archive/journalled_transaction.h"
 #include "archive/object_store.h"
 #include "archive/sqlite.h"
 
@@ -17,10 +19,12 @@ namespace maxillo {
 
 class BatchWriter {
  public:
-  BatchWriter(sqlite::Database& db, ObjectStore& objects);
+  BatchWriter(sqlite::Database& db, ObjectStore& objects, const IndexJournal& journal);
 
-  // Writes the file's object now (not yet durable) and queues its rows.
-  void add(ScannedFile&& file);
+  // Writes the file's object now (not yet durable) and queues its rows. A second file of the
+  // batch with the same SOP Instance UID is not written: its outcome is returned at once
+  // (AlreadyArchived for the same bytes, Conflict with `reason` otherwise); else Imported.
+  ImportOutcome add(ScannedFile&& file, std::string& reason);
   size_t pending() const { return batch_.size(); }
   // syncfs, then one transaction for every queued file; each outcome goes into report.
   void commit(ImportReport& report, const std::function<void(const ImportProblem&)>& on_problem);
@@ -32,6 +36,7 @@ class BatchWriter {
     std::string name, birth_date, sex;  // as archived
   };
   ImportOutcome insert(const ScannedFile& file, const std::string& now, ImportReport& report, std::string& reason);
+  ImportOutcome archived_outcome(const ScannedFile& file, std::string& reason);
   const PatientState& patient_of(const InstanceHeader& h, const std::string& now);
   void flag_identity(const PatientState& patient, const ScannedFile& file, const std::string& now, ImportReport& report);
   int64_t study_of(const InstanceHeader& h, int64_t patient);
@@ -39,7 +44,10 @@ class BatchWriter {
 
   sqlite::Database& db_;
   ObjectStore& objects_;
+  const IndexJournal& journal_;
+  JournalledTransaction* transaction_ = nullptr;  // while commit() runs
   std::vector<ScannedFile> batch_;
+  std::map<std::string, std::string, std::less<>> batch_objects_;  // SOP Instance UID -> sha256 in this batch
   sqlite::Statement insert_patient_, patient_by_id_, insert_case_, case_of_patient_, insert_flag_;
   sqlite::Statement insert_study_, study_by_uid_, insert_series_, series_by_uid_, attach_series_;
   sqlite::Statement insert_object_, insert_instance_, object_of_sop_;

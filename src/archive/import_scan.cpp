@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdio>
+#include <optional>
 #include <cstring>
 
 #include "archive/archive_sql.h"
@@ -44,6 +46,22 @@ void list_folder(const std::filesystem::path& folder, FileList& list) {
   }
 }
 
+std::string gibibytes(uint64_t bytes) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f GiB", double(bytes) / double(uint64_t(1) << 30));
+  return text;
+}
+
+// A file is read whole to be hashed and parsed: refuse what no CT file can be before reading.
+std::optional<ScannedFile> refuse_oversized(const std::filesystem::path& path, const struct stat& info) {
+  const auto size = uint64_t(info.st_size);
+  if (size <= kMaxImportFileBytes) return std::nullopt;
+  std::string reason = "file is " + gibibytes(size) + ", more than the " + gibibytes(kMaxImportFileBytes) +
+                       " a DICOM file may hold here";
+  if (uint64_t(info.st_blocks) * 512 < size / 2) reason += " (a sparse file: most of it is not even on disk)";
+  return failure(path, ErrorCode::kBadValue, reason);
+}
+
 }  // namespace
 
 FileList list_input_files(const std::vector<std::filesystem::path>& paths) {
@@ -61,7 +79,7 @@ FileList list_input_files(const std::vector<std::filesystem::path>& paths) {
 
 struct FileScanner::Queries {
   explicit Queries(const std::filesystem::path& index_file)
-      : db(index_file), known_object(db, sql::kInstanceWithObject), object_of_sop(db, sql::kObjectOfSopInstance) {
+      : db(index_file, sqlite::OpenKind::Existing), known_object(db, sql::kInstanceWithObject), object_of_sop(db, sql::kObjectOfSopInstance) {
     db.execute("PRAGMA query_only = ON");
   }
   sqlite::Database db;
@@ -82,6 +100,7 @@ ScannedFile FileScanner::scan(const std::filesystem::path& path) {
   }
   if (S_ISDIR(info.st_mode)) return failure(path, ErrorCode::kBadValue, "unreadable: is a folder");
   if (!S_ISREG(info.st_mode)) return failure(path, ErrorCode::kBadValue, "unreadable: not a regular file");
+  if (auto refused = refuse_oversized(path, info)) return std::move(*refused);
 
   ScannedFile item;
   item.path = path;

@@ -3,6 +3,7 @@
 // unless the archive already holds those exact bytes. Runs on its own thread with its own
 // read-only view of the index, so the main thread only writes objects and commits rows.
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -28,6 +29,10 @@ struct ScannedFile {
   ErrorCode code = ErrorCode::kProcessing;
   std::string reason;
 };
+
+// Files are read whole: larger ones are refused unread (a multi-frame cone-beam CT of 700^3
+// 16-bit voxels is 0.7 GiB; DICOM lengths are 32-bit).
+inline constexpr uint64_t kMaxImportFileBytes = uint64_t(4) << 30;
 
 // Input paths expanded to files: folders recursively (symlinked folders are not followed),
 // sorted within each folder. A path that does not exist or a folder that cannot be listed

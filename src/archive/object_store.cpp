@@ -4,12 +4,15 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cassert>
 #include <cerrno>
 #include <cstring>
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/sha256.h"
+#include "core/utc_time.h"
 
 namespace maxillo {
 namespace {
@@ -35,7 +38,25 @@ void write_all(int fd, std::span<const std::byte> bytes, const std::filesystem::
   }
 }
 
+// Folders of the store that hold no objects (see object_store.h).
+bool is_reserved_folder(const std::string& name) { return name == "journal" || name == "quarantine"; }
+
+
+bool file_hashes_to(const std::filesystem::path& path, std::string_view sha256) {
+  try {
+    return sha256_hex(read_file(path)) == sha256;
+  } catch (const Error&) {
+    return false;
+  }
+}
+
 }  // namespace
+
+std::optional<std::string> sha256_named_by(const std::filesystem::path& object_file) {
+  std::string sha = object_file.parent_path().filename().string() + object_file.filename().string();
+  if (!is_sha256_hex(sha)) return std::nullopt;
+  return sha;
+}
 
 bool is_sha256_hex(std::string_view text) {
   if (text.size() != 64) return false;
@@ -62,11 +83,30 @@ void ObjectStore::ensure_shard(std::string_view shard) {
   shards_made_.emplace(shard);
 }
 
-void ObjectStore::put(std::string_view sha256, std::span<const std::byte> bytes) {
+ObjectStore::ObjectState ObjectStore::state_of(std::string_view sha256) const {
   auto path = path_of(sha256);
-  struct stat existing {};
-  if (::stat(path.c_str(), &existing) == 0 && size_t(existing.st_size) == bytes.size()) return;
+  std::error_code error;
+  if (!std::filesystem::exists(path, error)) return ObjectState::Absent;
+  return file_hashes_to(path, sha256) ? ObjectState::Intact : ObjectState::Damaged;
+}
+
+ObjectStore::PutOutcome ObjectStore::put(std::string_view sha256, std::span<const std::byte> bytes) {
+  auto path = path_of(sha256);
+  PutOutcome outcome = PutOutcome::Written;
+  switch (state_of(sha256)) {
+    case ObjectState::Intact: return PutOutcome::AlreadyIntact;
+    case ObjectState::Damaged:
+      set_aside(path, "damaged-");  // kept for inspection, replaced by the good bytes
+      outcome = PutOutcome::Replaced;
+      break;
+    case ObjectState::Absent: break;
+  }
   ensure_shard(sha256.substr(0, 2));
+  write_new(path, bytes);
+  return outcome;
+}
+
+void ObjectStore::write_new(const std::filesystem::path& path, std::span<const std::byte> bytes) {
   auto temporary = temporary_sibling(path);
   {
     Descriptor file{::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0444)};
@@ -92,6 +132,7 @@ void ObjectStore::for_each_file(
   std::error_code error;
   for (const auto& shard : std::filesystem::directory_iterator(folder_, error)) {
     std::string shard_name = shard.path().filename().string();
+    if (shard.is_directory() && is_reserved_folder(shard_name)) continue;
     if (!shard.is_directory()) {
       visit(EntryKind::Temporary, {}, shard.path());
       continue;
@@ -103,6 +144,46 @@ void ObjectStore::for_each_file(
     }
   }
   if (error) throw Error(ErrorCode::kArchiveCorrupt, folder_.string(), "cannot list objects: " + error.message());
+}
+
+std::filesystem::path ObjectStore::set_aside(const std::filesystem::path& file, std::string_view label) {
+  if (!quarantine_now_) quarantine_now_ = quarantine_folder() / utc_stamp();
+  create_folders_durably(*quarantine_now_);
+  auto name = std::string(label) + sha256_named_by(file).value_or(file.filename().string());
+  auto target = *quarantine_now_ / name;
+  for (int n = 1; std::filesystem::exists(target); ++n) target = *quarantine_now_ / (name + "." + std::to_string(n));
+  if (::rename(file.c_str(), target.c_str()) != 0) fail(file, errno);
+  return target;
+}
+
+std::vector<std::filesystem::path> ObjectStore::quarantined_files() const {
+  std::vector<std::filesystem::path> files;
+  std::error_code error;
+  for (std::filesystem::recursive_directory_iterator it(quarantine_folder(), error), end; !error && it != end;
+       it.increment(error))
+    if (it->is_regular_file()) files.push_back(it->path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+bool ObjectStore::restore_from_quarantine(std::string_view sha256) {
+  for (const auto& file : quarantined_files()) {
+    if (file.filename() != sha256 || !file_hashes_to(file, sha256)) continue;
+    auto path = path_of(sha256);
+    ensure_shard(sha256.substr(0, 2));
+    if (::rename(file.c_str(), path.c_str()) != 0) fail(path, errno);
+    return true;
+  }
+  return false;
+}
+
+size_t ObjectStore::purge_quarantine() {
+  size_t files = quarantined_files().size();
+  std::error_code error;
+  std::filesystem::remove_all(quarantine_folder(), error);
+  if (error) throw Error(ErrorCode::kWriteFailed, quarantine_folder().string(), error.message());
+  quarantine_now_.reset();
+  return files;
 }
 
 }  // namespace maxillo

@@ -13,16 +13,43 @@ namespace {
 // How long a writer waits for another process before giving up with kArchiveBusy. Import
 // batches hold the write lock for milliseconds, so this is generous.
 constexpr int kBusyTimeoutMs = 30000;
+
+// A damaged index file is not a transient database error: say how to recover.
+ErrorCode code_for(int status) {
+  switch (status & 0xFF) {
+    case SQLITE_BUSY:
+    case SQLITE_LOCKED: return ErrorCode::kArchiveBusy;
+    case SQLITE_CORRUPT:
+    case SQLITE_NOTADB: return ErrorCode::kIndexDamaged;
+    default: return ErrorCode::kDatabase;
+  }
+}
+
+std::string with_recovery_hint(int status, std::string reason) {
+  if (code_for(status) == ErrorCode::kIndexDamaged)
+    reason += " (the index is damaged: `maxillo archive rebuild-index` rebuilds it from the object store)";
+  return reason;
+}
 }  // namespace
 
-Database::Database(const std::filesystem::path& file) : file_(file) {
-  int status = sqlite3_open_v2(file.c_str(), &db_,
-                               SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_NOMUTEX, nullptr);
+namespace {
+int open_flags(OpenKind kind) {
+  switch (kind) {
+    case OpenKind::Create: return SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_NOMUTEX;
+    case OpenKind::Existing: return SQLITE_OPEN_READWRITE | SQLITE_OPEN_NOMUTEX;
+    case OpenKind::ReadOnly: return SQLITE_OPEN_READONLY | SQLITE_OPEN_NOMUTEX;
+  }
+  return 0;
+}
+}  // namespace
+
+Database::Database(const std::filesystem::path& file, OpenKind kind) : file_(file) {
+  int status = sqlite3_open_v2(file.c_str(), &db_, open_flags(kind), nullptr);
   if (status != SQLITE_OK) {
     std::string reason = db_ ? sqlite3_errmsg(db_) : sqlite3_errstr(status);
     sqlite3_close(db_);
     db_ = nullptr;
-    throw Error(ErrorCode::kDatabase, file.string(), "cannot open: " + reason);
+    throw Error(code_for(status), file.string(), with_recovery_hint(status, "cannot open: " + reason));
   }
   sqlite3_busy_timeout(db_, kBusyTimeoutMs);
   sqlite3_extended_result_codes(db_, 1);
@@ -31,9 +58,7 @@ Database::Database(const std::filesystem::path& file) : file_(file) {
 Database::~Database() { sqlite3_close_v2(db_); }
 
 void Database::fail(int status, std::string_view what) const {
-  int primary = status & 0xFF;
-  ErrorCode code = (primary == SQLITE_BUSY || primary == SQLITE_LOCKED) ? ErrorCode::kArchiveBusy : ErrorCode::kDatabase;
-  throw Error(code, file_.string(), std::string(what) + ": " + sqlite3_errmsg(db_));
+  throw Error(code_for(status), file_.string(), with_recovery_hint(status, std::string(what) + ": " + sqlite3_errmsg(db_)));
 }
 
 void Database::execute(std::string_view sql) {
@@ -43,8 +68,7 @@ void Database::execute(std::string_view sql) {
   if (status != SQLITE_OK) {
     std::string reason = message ? message : sqlite3_errstr(status);
     sqlite3_free(message);
-    ErrorCode code = (status & 0xFF) == SQLITE_BUSY ? ErrorCode::kArchiveBusy : ErrorCode::kDatabase;
-    throw Error(code, file_.string(), reason);
+    throw Error(code_for(status), file_.string(), with_recovery_hint(status, reason));
   }
 }
 
@@ -97,6 +121,18 @@ bool Statement::step() {
 
 void Statement::run() {
   while (step()) {
+  }
+}
+
+int Statement::column_count() const { return sqlite3_column_count(statement_); }
+std::string Statement::column_name(int column) const { return sqlite3_column_name(statement_, column); }
+Statement::ColumnType Statement::column_type(int column) const {
+  switch (sqlite3_column_type(statement_, column)) {
+    case SQLITE_INTEGER: return ColumnType::Integer;
+    case SQLITE_FLOAT: return ColumnType::Real;
+    case SQLITE_TEXT: return ColumnType::Text;
+    case SQLITE_BLOB: return ColumnType::Blob;
+    default: return ColumnType::Null;
   }
 }
 

@@ -16,9 +16,13 @@ struct sqlite3_stmt;
 
 namespace maxillo::sqlite {
 
+// How a connection opens its file: Create makes a missing file; Existing refuses one (a lost
+// index must never be silently re-created, see archive_health.h).
+enum class OpenKind { Create, Existing, ReadOnly };
+
 class Database {
  public:
-  explicit Database(const std::filesystem::path& file);
+  explicit Database(const std::filesystem::path& file, OpenKind kind = OpenKind::Create);
   ~Database();
   Database(const Database&) = delete;
   Database& operator=(const Database&) = delete;
@@ -60,6 +64,11 @@ class Statement {
   bool step();
   // Runs a statement that returns no rows.
   void run();
+
+  enum class ColumnType { Integer, Real, Text, Blob, Null };
+  int column_count() const;
+  std::string column_name(int column) const;
+  ColumnType column_type(int column) const;
 
   int64_t integer(int column) const;
   double real(int column) const;

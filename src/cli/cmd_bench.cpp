@@ -78,7 +78,7 @@ void run_bench(const BenchArguments& args, CommandContext& ctx) {
   std::vector<double> first, again;
   for (int run = 0; run < args.runs; ++run) {
     auto archive_folder = workdir / ("archive" + std::to_string(run));
-    Archive archive = Archive::open(archive_folder);
+    Archive archive = Archive::open(archive_folder, OpenMode::CreateIfMissing);
     first.push_back(timed_import(archive, inputs, size_t(args.count), 0));
     again.push_back(timed_import(archive, inputs, 0, size_t(args.count)));
     if (run + 1 < args.runs) std::filesystem::remove_all(archive_folder);

@@ -59,7 +59,7 @@ int run_demo(const DemoOptions& options, const GlobalOptions& global) {
   clock.mark("generate phantom");
 
   auto archive_dir = global.archive_dir.empty() ? options.out / "archive" : global.archive_dir;
-  auto archive = Archive::open(archive_dir);
+  auto archive = Archive::open(archive_dir, OpenMode::CreateIfMissing);
   auto imported = archive.import_paths({sample.ct_folder});
   if (!imported.all_ok()) throw Error(ErrorCode::kProcessing, sample.ct_folder.string(), "the phantom did not import cleanly");
   clock.mark("import");

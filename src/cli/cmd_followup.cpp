@@ -119,7 +119,7 @@ int run_cohort(const std::vector<ceph::CaseFollowUp>& cohort, const std::string&
 
 int run_import_cohort(const FollowupOptions& options, const GlobalOptions& global) {
   const std::string name = options.cohort_name.empty() ? options.import_cohort.stem().string() : options.cohort_name;
-  auto archive = Archive::open(resolve_archive_dir(global));
+  auto archive = Archive::open(resolve_archive_dir(global), OpenMode::CreateIfMissing);
   const auto cohort = ceph::read_cohort_csv(options.import_cohort);
   pipeline::LandmarkFrame frame{options.geometry.geometry, options.geometry.axes()};
   const auto imported = pipeline::import_cohort(archive, cohort, name, frame, options.import_cohort.filename().string());

@@ -28,7 +28,7 @@ std::string summary_line(const ImportReport& r) {
 }
 
 void run_import(const ImportArguments& args, CommandContext& ctx) {
-  Archive archive = Archive::open(resolve_archive_dir(ctx.global));
+  Archive archive = Archive::open(resolve_archive_dir(ctx.global), OpenMode::CreateIfMissing);
   ImportOptions options;
   options.batch_files = args.batch_files;
   options.progress = ctx.global.quiet ? ProgressDisplay::Never : ProgressDisplay::Auto;
@@ -36,7 +36,7 @@ void run_import(const ImportArguments& args, CommandContext& ctx) {
     std::cerr << problem.path.string() << ": " << problem.reason << "\n";
   };
   ImportReport report = archive.import_paths(args.paths, options);
-  if (ctx.global.json) std::cout << to_json(report).dump(2) << "\n";
+  if (ctx.global.json) std::cout << json_text(to_json(report)) << "\n";
   else std::cout << summary_line(report) << "\n";
   ctx.exit_code = report.all_ok() ? 0 : exit_code_for(ErrorCode::kBatchPartlyFailed);
 }

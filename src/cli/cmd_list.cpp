@@ -20,7 +20,7 @@ template <typename Records>
 void print_json(const Records& records) {
   Json list = Json::array();
   for (const auto& record : records) list.push_back(to_json(record));
-  std::cout << list.dump(2) << "\n";
+  std::cout << json_text(list) << "\n";
 }
 
 long long ll(int64_t value) { return static_cast<long long>(value); }

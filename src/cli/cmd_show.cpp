@@ -57,14 +57,14 @@ void print_text(const Json& json, int indent = 0) {
         for (const auto& [k, v] : entry.items())
           if (!v.is_structured() && (k == "id" || k.find("uid") != std::string::npos || k == "description" ||
                                      k == "role" || k == "instance_number" || k == "modality" || k == "date"))
-            std::cout << " " << k << "=" << (v.is_string() ? v.get<std::string>() : v.dump());
+            std::cout << " " << k << "=" << (v.is_string() ? v.get<std::string>() : json_text(v, -1));
         std::cout << "\n";
       }
     } else if (value.is_object()) {
       std::cout << pad << key << ":\n";
       print_text(value, indent + 2);
     } else {
-      std::cout << pad << key << ": " << (value.is_string() ? value.get<std::string>() : value.dump()) << "\n";
+      std::cout << pad << key << ": " << (value.is_string() ? value.get<std::string>() : json_text(value, -1)) << "\n";
     }
   }
 }
@@ -79,7 +79,7 @@ void attach_show(CLI::App& app, CommandContext& ctx) {
     ResolvedItem item = archive.resolve(*id);
     Json json = describe_item(archive, item);
     if (ctx.global.json) {
-      std::cout << Json{{"kind", to_string(item.kind)}, {"id", item.id}, {"item", json}}.dump(2) << "\n";
+      std::cout << json_text(Json{{"kind", to_string(item.kind)}, {"id", item.id}, {"item", json}}) << "\n";
     } else {
       std::cout << to_string(item.kind) << " " << item.id << "\n";
       print_text(json, 2);

@@ -1,5 +1,7 @@
-// maxillo verify [--repair]: re-hash every archived object. Exit 0 when consistent (after
-// --repair: when no data is missing or corrupt), else 41 (archive inconsistent).
+// maxillo verify [--repair [--force]] [--purge]: check the index (integrity, journal) and
+// re-hash every archived object. Exit 0 when consistent (after --repair: when no data is
+// missing or corrupt and the index is intact), else 41 (archive inconsistent); 46 when the
+// index itself is damaged.
 #include <iostream>
 
 #include "archive/archive.h"
@@ -7,34 +9,83 @@
 #include "cli/command.h"
 
 namespace maxillo::cli {
+namespace {
+
+struct VerifyArguments {
+  bool repair = false;
+  bool force = false;
+  bool purge = false;
+};
+
+void print_objects(const Archive& archive, const VerifyReport& report, bool repair) {
+  auto owners = [&](const std::string& sha) {
+    std::string text;
+    for (const auto& owner : report.owners.at(sha)) text += (text.empty() ? " [" : ", ") + owner;
+    return text.empty() ? text : text + "]";
+  };
+  for (const auto& sha : report.missing)
+    std::cerr << archive.object_path(sha).string() << ": missing (data loss)" << owners(sha) << "\n";
+  for (const auto& sha : report.corrupt)
+    std::cerr << archive.object_path(sha).string() << ": corrupt (content no longer matches its SHA-256; "
+              << "importing the original file again restores it)" << owners(sha) << "\n";
+  const bool moved = repair && report.repair_refused.empty();
+  for (const auto& path : report.orphans)
+    std::cerr << path.string() << (moved ? ": orphan object, moved to quarantine\n" : ": orphan object\n");
+  for (const auto& path : report.temporaries)
+    std::cerr << path.string() << (moved ? ": temporary file, moved to quarantine\n" : ": temporary file\n");
+  for (const auto& sha : report.restored)
+    std::cerr << archive.object_path(sha).string() << ": restored from quarantine\n";
+}
+
+void print_report(const Archive& archive, const VerifyReport& report, bool repair, bool ok) {
+  if (report.index_check != "ok") std::cerr << "index: " << report.index_check << "\n";
+  for (const auto& difference : report.journal_differences) std::cerr << "index: " << difference << "\n";
+  print_objects(archive, report, repair);
+  if (!report.repair_refused.empty()) std::cerr << "repair refused, nothing changed: " << report.repair_refused << "\n";
+  std::cout << "index " << (report.index_intact() ? "intact" : "DAMAGED") << "; " << report.objects_checked
+            << " objects checked: " << report.missing.size() << " missing, " << report.corrupt.size() << " corrupt, "
+            << report.orphans.size() << " orphans, " << report.temporaries.size() << " temporary files";
+  if (repair) std::cout << "; " << report.quarantined << " quarantined, " << report.restored.size() << " restored";
+  std::cout << (ok ? " - consistent\n" : " - INCONSISTENT\n");
+  if (!repair && (!report.orphans.empty() || !report.temporaries.empty()))
+    std::cout << "`maxillo verify --repair` moves orphans and temporary files into the quarantine (nothing is deleted)\n";
+}
+
+void run_verify(const VerifyArguments& args, CommandContext& ctx) {
+  Archive archive = Archive::open(resolve_archive_dir(ctx.global));
+  if (args.purge) {
+    size_t purged = archive.purge_quarantine();
+    if (ctx.global.json) std::cout << json_text(Json{{"purged", purged}}) << "\n";
+    else std::cout << purged << " quarantined files deleted\n";
+    return;
+  }
+  VerifyOptions options{args.repair ? RepairMode::Repair : RepairMode::ReportOnly, args.force,
+                        ctx.global.quiet ? ProgressDisplay::Never : ProgressDisplay::Auto};
+  VerifyReport report = archive.verify(options);
+  const bool ok = (args.repair ? report.data_intact() : report.consistent()) && report.repair_refused.empty();
+  if (ctx.global.json) {
+    Json json = to_json(report);
+    json["ok"] = ok;
+    std::cout << json_text(json) << "\n";
+  } else {
+    print_report(archive, report, args.repair, ok);
+  }
+  ErrorCode failure = report.index_intact() ? ErrorCode::kArchiveCorrupt : ErrorCode::kIndexDamaged;
+  ctx.exit_code = ok ? 0 : exit_code_for(failure);
+}
+
+}  // namespace
 
 void attach_verify(CLI::App& app, CommandContext& ctx) {
-  auto repair = std::make_shared<bool>(false);
-  app.add_flag("--repair", *repair, "remove orphan objects and temporary files (never archived data)");
-  app.callback([repair, &ctx] {
-    Archive archive = Archive::open(resolve_archive_dir(ctx.global));
-    VerifyReport report = archive.verify(*repair ? RepairMode::Repair : RepairMode::ReportOnly,
-                                         ctx.global.quiet ? ProgressDisplay::Never : ProgressDisplay::Auto);
-    bool ok = *repair ? report.data_intact() : report.consistent();
-    if (ctx.global.json) {
-      Json json = to_json(report);
-      json["ok"] = ok;
-      std::cout << json.dump(2) << "\n";
-    } else {
-      for (const auto& sha : report.missing) std::cerr << archive.object_path(sha).string() << ": missing (data loss)\n";
-      for (const auto& sha : report.corrupt)
-        std::cerr << archive.object_path(sha).string() << ": corrupt (content no longer matches its SHA-256)\n";
-      for (const auto& path : report.orphans)
-        std::cerr << path.string() << (*repair ? ": orphan object, removed\n" : ": orphan object (verify --repair removes it)\n");
-      for (const auto& path : report.temporaries)
-        std::cerr << path.string() << (*repair ? ": temporary file, removed\n" : ": temporary file (verify --repair removes it)\n");
-      std::cout << report.objects_checked << " objects checked: " << report.missing.size() << " missing, "
-                << report.corrupt.size() << " corrupt, " << report.orphans.size() << " orphans, "
-                << report.temporaries.size() << " temporary files";
-      if (*repair) std::cout << "; " << report.removed << " removed";
-      std::cout << (ok ? " - consistent\n" : " - INCONSISTENT\n");
-    }
-    ctx.exit_code = ok ? 0 : exit_code_for(ErrorCode::kArchiveCorrupt);
+  auto args = std::make_shared<VerifyArguments>();
+  app.add_flag("--repair", args->repair,
+               "move orphan objects and temporary files into the quarantine, put back quarantined objects the "
+               "index names (nothing is ever deleted)");
+  app.add_flag("--force", args->force, "with --repair: quarantine orphans even when they are many");
+  app.add_flag("--purge", args->purge, "delete the quarantine (what earlier repairs set aside)")->excludes("--repair");
+  app.callback([args, &ctx] {
+    if (args->force && !args->repair) throw CLI::ValidationError("--force", "only with --repair");
+    run_verify(*args, ctx);
   });
 }
 

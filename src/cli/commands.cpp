@@ -10,6 +10,7 @@ void attach_import(CLI::App&, CommandContext&);
 void attach_list(CLI::App&, CommandContext&);
 void attach_show(CLI::App&, CommandContext&);
 void attach_verify(CLI::App&, CommandContext&);
+void attach_archive(CLI::App&, CommandContext&);
 void attach_export(CLI::App&, CommandContext&);
 void attach_bench(CLI::App&, CommandContext&);
 void attach_surfaces(CLI::App&, CommandContext&);
@@ -34,7 +35,8 @@ std::span<const CommandSpec> command_table() {
       CommandSpec{"import", "Archive", "archive DICOM files or folders (recursive)", attach_import},
       CommandSpec{"list", "Archive", "list patients, studies, series, cases or identity flags", attach_list},
       CommandSpec{"show", "Archive", "show a patient, study, series, instance or case by ID or UID", attach_show},
-      CommandSpec{"verify", "Archive", "re-hash every archived object; --repair removes orphans", attach_verify},
+      CommandSpec{"verify", "Archive", "check the index and re-hash every object; --repair quarantines orphans", attach_verify},
+      CommandSpec{"archive", "Archive", "archive maintenance: rebuild-index (a lost or damaged index from the object store)", attach_archive},
       CommandSpec{"role", "Archive", "set a series' role in its case (preop, postop, follow-up, unassigned)", attach_role},
       CommandSpec{"export", "Archive", "write a series' original files into a folder", attach_export},
       CommandSpec{"bench", "Archive", "benchmarks (bench import, bench cube, bench occlusion)", attach_bench},

@@ -101,6 +101,16 @@ void write_file_atomically(const std::filesystem::path& path, std::span<const st
     fsync_folder(path.has_parent_path() ? path.parent_path() : std::filesystem::path("."));
 }
 
+void sync_folder(const std::filesystem::path& folder) { fsync_folder(folder); }
+
+void create_folders_durably(const std::filesystem::path& folder) {
+  if (folder.empty() || std::filesystem::is_directory(folder)) return;
+  create_folders_durably(folder.parent_path());
+  if (::mkdir(folder.c_str(), 0755) != 0 && errno != EEXIST)
+    throw Error(ErrorCode::kWriteFailed, folder.string(), std::strerror(errno));
+  fsync_folder(folder.parent_path().empty() ? std::filesystem::path(".") : folder.parent_path());
+}
+
 void write_file_atomically(const std::filesystem::path& path, std::string_view text, Durability durability) {
   write_file_atomically(path, std::as_bytes(std::span(text.data(), text.size())), durability);
 }

@@ -21,6 +21,14 @@ void write_file_atomically(const std::filesystem::path& path, std::span<const st
 void write_file_atomically(const std::filesystem::path& path, std::string_view text,
                            Durability durability = Durability::Flushed);
 
+// Creates `folder` and any missing parents, each made durable (its parent folder fsync'ed), so
+// a file later written durably inside it cannot vanish with its folder in a crash.
+// Throws Error(WriteFailed).
+void create_folders_durably(const std::filesystem::path& folder);
+
+// fsync(2) of a folder: its entries (created, renamed, removed files) reach stable storage.
+void sync_folder(const std::filesystem::path& folder);
+
 // A unique name beside `path` for a temporary file (same folder, so rename is atomic).
 std::filesystem::path temporary_sibling(const std::filesystem::path& path);
 

@@ -5,6 +5,7 @@
 
 #include "core/atomic_file.h"
 #include "core/progress.h"
+#include "core/utc_time.h"
 #include "core/version.h"
 #include "pipeline/case_landmarks.h"
 #include "pipeline/cephalometry_section.h"
@@ -20,13 +21,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
-
-std::string utc_now_iso8601() {
-  std::time_t now = std::time(nullptr);
-  char text[32];
-  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
-  return text;
-}
 
 const StudyRecord* study_of(const CaseContents& contents, int64_t study) {
   for (const auto& s : contents.studies)
@@ -52,7 +46,7 @@ report::ReportModel model_header(const CaseContents& contents) {
                             {s.pixel_spacing_column.value_or(0), s.pixel_spacing_row.value_or(0),
                              s.slice_thickness.value_or(0)}});
   }
-  model.generated_at = utc_now_iso8601();
+  model.generated_at = utc_now();
   model.program_version = kVersion;
   return model;
 }

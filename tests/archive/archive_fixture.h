@@ -5,6 +5,7 @@
 #include <iterator>
 #include <string>
 
+#include "archive/archive.h"
 #include "archive/dicom_series_writer.h"
 #include "support/temporary_folder.h"
 
@@ -34,6 +35,13 @@ inline SeriesMetadata patient_metadata(const std::string& patient_id, const std:
 inline WrittenSeries write_series(const std::filesystem::path& folder, int slices, const std::string& patient_id = "P1",
                                   const std::string& name = "Doe^Jane") {
   return write_ct_series(small_volume(slices), patient_metadata(patient_id, name), folder);
+}
+
+// Import options for tests: no progress bar.
+inline ImportOptions quiet() {
+  ImportOptions options;
+  options.progress = ProgressDisplay::Never;
+  return options;
 }
 
 inline std::string read_text(const std::filesystem::path& path) {

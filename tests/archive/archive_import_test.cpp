@@ -12,16 +12,12 @@ namespace {
 
 using testing::TemporaryFolder;
 
-ImportOptions quiet() {
-  ImportOptions options;
-  options.progress = ProgressDisplay::Never;
-  return options;
-}
+using testing::quiet;
 
 TEST(ArchiveImport, IndexesPatientStudySeriesAndInstances) {
   TemporaryFolder folder;
   auto written = testing::write_series(folder / "in", 5, "P1", "Müller-Łukasz^Zoë");
-  Archive archive = Archive::open(folder / "archive");
+  Archive archive = Archive::open(folder / "archive", OpenMode::CreateIfMissing);
   ImportReport report = archive.import_paths({folder / "in"}, quiet());
   EXPECT_EQ(report.imported, 5u);
   EXPECT_TRUE(report.all_ok());
@@ -62,7 +58,7 @@ TEST(ArchiveImport, SecondCtSeriesOfAPatientIsUnassigned) {
   TemporaryFolder folder;
   testing::write_series(folder / "a", 2, "P1");
   testing::write_series(folder / "b", 2, "P1");
-  Archive archive = Archive::open(folder / "archive");
+  Archive archive = Archive::open(folder / "archive", OpenMode::CreateIfMissing);
   archive.import_paths({folder / "a"}, quiet());
   archive.import_paths({folder / "b"}, quiet());
   auto contents = archive.case_contents(archive.resolve_case("P1"));
@@ -77,7 +73,7 @@ TEST(ArchiveImport, SecondCtSeriesOfAPatientIsUnassigned) {
 TEST(ArchiveImport, ReimportChangesNothingAndSaysSo) {
   TemporaryFolder folder;
   testing::write_series(folder / "in", 4);
-  Archive archive = Archive::open(folder / "archive");
+  Archive archive = Archive::open(folder / "archive", OpenMode::CreateIfMissing);
   archive.import_paths({folder / "in"}, quiet());
   auto index_before = testing::read_text(folder / "archive" / "index.sqlite");
   ImportReport again = archive.import_paths({folder / "in"}, quiet());
@@ -93,7 +89,7 @@ TEST(ArchiveImport, ReimportChangesNothingAndSaysSo) {
 TEST(ArchiveImport, SameSopInstanceUidWithOtherBytesIsAConflictAndTheOriginalIsKept) {
   TemporaryFolder folder;
   auto written = testing::write_series(folder / "in", 2);
-  Archive archive = Archive::open(folder / "archive");
+  Archive archive = Archive::open(folder / "archive", OpenMode::CreateIfMissing);
   archive.import_paths({folder / "in"}, quiet());
   auto original = testing::read_text(archive.series_instance_files(1)[0]);
 
@@ -122,7 +118,7 @@ TEST(ArchiveImport, PatientIdWithAnotherNameIsFlaggedNotMerged) {
   TemporaryFolder folder;
   testing::write_series(folder / "a", 3, "P7", "Doe^Jane");
   testing::write_series(folder / "b", 3, "P7", "Roe^Richard");
-  Archive archive = Archive::open(folder / "archive");
+  Archive archive = Archive::open(folder / "archive", OpenMode::CreateIfMissing);
   archive.import_paths({folder / "a"}, quiet());
   ImportReport report = archive.import_paths({folder / "b"}, quiet());
   EXPECT_EQ(report.imported, 3u);
@@ -153,7 +149,7 @@ TEST(ArchiveImport, EveryBadInputIsNamedWithItsReasonWhileTheRestImports) {
   std::vector<ImportProblem> seen;
   ImportOptions options = quiet();
   options.on_problem = [&](const ImportProblem& p) { seen.push_back(p); };
-  Archive archive = Archive::open(folder / "archive");
+  Archive archive = Archive::open(folder / "archive", OpenMode::CreateIfMissing);
   ImportReport report = archive.import_paths({folder / "in", folder / "missing-folder"}, options);
   EXPECT_EQ(report.imported, 3u);
   EXPECT_EQ(report.failed, 6u);
@@ -177,7 +173,7 @@ TEST(ArchiveImport, EveryBadInputIsNamedWithItsReasonWhileTheRestImports) {
 TEST(ArchiveImport, TruncationAnywhereInThePixelsOrHeaderIsDetected) {
   TemporaryFolder folder;
   auto spare = testing::write_series(folder / "spare", 1);
-  Archive archive = Archive::open(folder / "archive");
+  Archive archive = Archive::open(folder / "archive", OpenMode::CreateIfMissing);
   for (double fraction : {0.2, 0.5, 0.9, 0.999}) {
     auto path = folder / ("cut" + std::to_string(int(fraction * 1000)) + ".dcm");
     testing::write_truncated(spare.files[0], path, fraction);
@@ -192,16 +188,16 @@ TEST(ArchiveImport, ConcurrentImportersOfOverlappingSetsMakeNoErrorsAndNoDuplica
   testing::write_series(folder / "a", 40, "P1");
   testing::write_series(folder / "b", 40, "P2");
   testing::write_series(folder / "c", 40, "P3");
-  { Archive::open(folder / "archive"); }
+  { Archive::open(folder / "archive", OpenMode::CreateIfMissing); }
   ImportReport first, second;
   std::thread one([&] {
-    Archive archive = Archive::open(folder / "archive");
+    Archive archive = Archive::open(folder / "archive", OpenMode::CreateIfMissing);
     ImportOptions options = quiet();
     options.batch_files = 7;
     first = archive.import_paths({folder / "a", folder / "b"}, options);
   });
   std::thread two([&] {
-    Archive archive = Archive::open(folder / "archive");
+    Archive archive = Archive::open(folder / "archive", OpenMode::CreateIfMissing);
     ImportOptions options = quiet();
     options.batch_files = 5;
     second = archive.import_paths({folder / "b", folder / "c"}, options);
@@ -212,7 +208,7 @@ TEST(ArchiveImport, ConcurrentImportersOfOverlappingSetsMakeNoErrorsAndNoDuplica
   EXPECT_TRUE(second.all_ok());
   EXPECT_EQ(first.imported + second.imported, 120u);
   EXPECT_EQ(first.already_archived + second.already_archived, 40u);
-  Archive archive = Archive::open(folder / "archive");
+  Archive archive = Archive::open(folder / "archive", OpenMode::CreateIfMissing);
   EXPECT_EQ(archive.patients().size(), 3u);
   EXPECT_EQ(archive.cases().size(), 3u);
   int64_t instances = 0;

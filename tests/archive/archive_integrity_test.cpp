@@ -14,7 +14,7 @@ using testing::TemporaryFolder;
 Archive archive_with_series(const TemporaryFolder& folder, WrittenSeries* written = nullptr) {
   auto series = testing::write_series(folder / "in", 4);
   if (written) *written = series;
-  Archive archive = Archive::open(folder / "archive");
+  Archive archive = Archive::open(folder / "archive", OpenMode::CreateIfMissing);
   ImportOptions options;
   options.progress = ProgressDisplay::Never;
   archive.import_paths({folder / "in"}, options);
@@ -73,7 +73,7 @@ TEST(ArchiveVerify, ReimportingTheOriginalsRestoresALostObject) {
   EXPECT_TRUE(archive.verify(RepairMode::ReportOnly, ProgressDisplay::Never).consistent());
 }
 
-TEST(ArchiveVerify, RepairRemovesOrphansAndTemporariesOnly) {
+TEST(ArchiveVerify, RepairQuarantinesOrphansAndTemporariesAndDeletesNothing) {
   TemporaryFolder folder;
   Archive archive = archive_with_series(folder);
   std::string orphan_sha = sha256_hex(std::string_view("orphan"));
@@ -87,9 +87,17 @@ TEST(ArchiveVerify, RepairRemovesOrphansAndTemporariesOnly) {
   EXPECT_EQ(before.temporaries.size(), 1u);
   EXPECT_TRUE(before.data_intact());
   VerifyReport repaired = archive.verify(RepairMode::Repair, ProgressDisplay::Never);
-  EXPECT_EQ(repaired.removed, 2u);
+  EXPECT_EQ(repaired.quarantined, 2u);
   EXPECT_FALSE(std::filesystem::exists(orphan));
+  EXPECT_FALSE(std::filesystem::exists(temporary));
   EXPECT_TRUE(archive.verify(RepairMode::ReportOnly, ProgressDisplay::Never).consistent());
+  // Set aside, not deleted: both files are in the quarantine until a purge.
+  auto quarantine = folder / "archive" / "objects" / "quarantine";
+  size_t kept = 0;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(quarantine)) kept += entry.is_regular_file();
+  EXPECT_EQ(kept, 2u);
+  EXPECT_EQ(archive.purge_quarantine(), 2u);
+  EXPECT_FALSE(std::filesystem::exists(quarantine));
 }
 
 TEST(ArchiveExport, SeriesComesBackByteIdentical) {

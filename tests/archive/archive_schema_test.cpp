@@ -40,24 +40,24 @@ TEST(ArchiveSchema, EmptyFolderIsUpgradedToTheNewestVersionAndReopeningIsIdempot
   testing::TemporaryFolder folder;
   auto archive_folder = folder / "archive";
   {
-    Archive archive = Archive::open(archive_folder);
+    Archive archive = Archive::open(archive_folder, OpenMode::CreateIfMissing);
     EXPECT_EQ(archive.schema_version(), Archive::newest_schema_version());
     EXPECT_TRUE(archive.patients().empty());
     EXPECT_TRUE(archive.cases().empty());
   }
   EXPECT_EQ(user_version(archive_folder / "index.sqlite"), Archive::newest_schema_version());
   for (int n = 0; n < 2; ++n) {
-    Archive archive = Archive::open(archive_folder);
+    Archive archive = Archive::open(archive_folder, OpenMode::CreateIfMissing);
     EXPECT_EQ(archive.schema_version(), Archive::newest_schema_version());
   }
 }
 
 TEST(ArchiveSchema, NewerSchemaIsRefused) {
   testing::TemporaryFolder folder;
-  { Archive::open(folder.path()); }
+  { Archive::open(folder.path(), OpenMode::CreateIfMissing); }
   set_user_version(folder / "index.sqlite", Archive::newest_schema_version() + 1);
   try {
-    Archive::open(folder.path());
+    Archive::open(folder.path(), OpenMode::CreateIfMissing);
     FAIL() << "a newer schema must be refused";
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), ErrorCode::kSchemaTooNew);

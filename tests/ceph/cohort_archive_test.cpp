@@ -61,7 +61,7 @@ TEST(SampleCohort, LandmarksWithoutTheVolumeEqualThePhantoms) {
 
 struct EmptyArchive {
   TemporaryFolder folder{"maxillo-cohort-test"};
-  Archive archive = Archive::open(folder.path() / "archive");
+  Archive archive = Archive::open(folder.path() / "archive", OpenMode::CreateIfMissing);
 };
 
 TEST(CohortArchive, CsvToArchiveToCohortGivesTheCsvData) {

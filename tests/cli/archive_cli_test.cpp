@@ -10,6 +10,7 @@
 #include "archive_fixture.h"
 #include "core/error.h"
 #include "core/json.h"
+#include "support/bad_dicom_files.h"
 #include "support/run_command.h"
 #include "support/run_maxillo.h"
 
@@ -137,18 +138,100 @@ TEST(ArchiveCli, KilledImportLeavesAConsistentArchiveAndReimportCompletesIt) {
     auto verify = testing::run_maxillo({"--archive", archive, "--json", "verify"}, folder.path());
     Json report = Json::parse(verify.out);
     EXPECT_TRUE(report.at("data_intact").get<bool>()) << verify.out;  // at most orphans / temporaries
-    auto repair = testing::run_maxillo({"--archive", archive, "verify", "--repair"}, folder.path());
-    EXPECT_EQ(repair.exit_code, 0) << repair.out << repair.err;
-    EXPECT_EQ(testing::run_maxillo({"--archive", archive, "verify"}, folder.path()).exit_code, 0);
     int64_t before = archived_instances(archive, folder.path());
     if (before < total) interrupted_mid_import = true;
+    // A killed batch leaves up to 40 orphans of a few hundred objects: more than repair
+    // quarantines unasked, so it explains that the import should be run again.
+    auto repair = testing::run_maxillo({"--archive", archive, "verify", "--repair"}, folder.path());
+    if (repair.exit_code != 0) EXPECT_NE(repair.err.find("run it again"), std::string::npos) << repair.err;
 
     auto again = testing::run_maxillo({"--archive", archive, "import", (folder / "in").string()}, folder.path());
     EXPECT_EQ(again.exit_code, 0) << again.err;
     EXPECT_EQ(archived_instances(archive, folder.path()), total);
+    auto repaired = testing::run_maxillo({"--archive", archive, "verify", "--repair"}, folder.path());
+    EXPECT_EQ(repaired.exit_code, 0) << repaired.out << repaired.err;  // only temporaries were left
     EXPECT_EQ(testing::run_maxillo({"--archive", archive, "verify"}, folder.path()).exit_code, 0);
   }
   EXPECT_TRUE(interrupted_mid_import) << "no kill landed during the import; the machine was too fast for the delays";
+}
+
+size_t object_files(const std::filesystem::path& archive) {
+  size_t count = 0;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(archive / "objects"))
+    count += entry.is_regular_file() && entry.path().string().find("/journal/") == std::string::npos;
+  return count;
+}
+
+// Issue 14, defect 1: a lost index made `list` show an empty archive, `import` re-add rows
+// and `verify --repair` delete every object as an orphan.
+TEST(ArchiveCli, ALostIndexIsRefusedByEveryCommandAndRebuiltFromTheStore) {
+  TemporaryFolder folder;
+  testing::write_series(folder / "in", 12, "P1");
+  auto archive = folder / "archive";
+  auto a = archive.string();
+  ASSERT_EQ(testing::run_maxillo({"--archive", a, "import", (folder / "in").string()}, folder.path()).exit_code, 0);
+  auto listed = testing::run_maxillo({"--archive", a, "--json", "list", "series"}, folder.path());
+  const size_t objects = object_files(archive);
+  ASSERT_EQ(objects, 12u);
+
+  for (bool truncate : {false, true}) {
+    std::filesystem::remove(archive / "index.sqlite");
+    if (truncate) std::ofstream(archive / "index.sqlite").close();
+    for (std::vector<std::string> command : {std::vector<std::string>{"list"}, {"import", (folder / "in").string()},
+                                             {"verify", "--repair"}, {"export", "1", "--out", (folder / "x").string()}}) {
+      command.insert(command.begin(), {"--archive", a});
+      auto result = testing::run_maxillo(command, folder.path());
+      EXPECT_EQ(result.exit_code, exit_code_for(ErrorCode::kIndexDamaged)) << command[2] << ": " << result.err;
+      EXPECT_NE(result.err.find("archive rebuild-index"), std::string::npos) << result.err;
+    }
+    EXPECT_EQ(object_files(archive), objects);
+  }
+  EXPECT_FALSE(std::filesystem::exists(folder / "x"));
+
+  auto rebuilt = testing::run_maxillo({"--archive", a, "archive", "rebuild-index"}, folder.path());
+  EXPECT_EQ(rebuilt.exit_code, 0) << rebuilt.out << rebuilt.err;
+  EXPECT_EQ(testing::run_maxillo({"--archive", a, "--json", "list", "series"}, folder.path()).out, listed.out);
+  EXPECT_EQ(testing::run_maxillo({"--archive", a, "verify"}, folder.path()).exit_code, 0);
+}
+
+TEST(ArchiveCli, ReadingCommandsDoNotCreateAMissingArchive) {
+  TemporaryFolder folder;
+  auto missing = folder / "NONEXISTENT";
+  auto result = testing::run_maxillo({"--archive", missing.string(), "list"}, folder.path());
+  EXPECT_EQ(result.exit_code, exit_code_for(ErrorCode::kNotFound)) << result.err;
+  EXPECT_NE(result.err.find("no archive"), std::string::npos) << result.err;
+  EXPECT_FALSE(std::filesystem::exists(missing));
+}
+
+// Issue 14, defect 7: text that is not UTF-8 must never break --json output.
+TEST(ArchiveCli, JsonOutputSurvivesLatin1NamesAndFileNames) {
+  TemporaryFolder folder;
+  auto written = testing::write_series(folder / "in", 2, "P1");
+  DcmFileFormat file;
+  file.loadFile(written.files[0].c_str());
+  file.getDataset()->findAndDeleteElement(DCM_SpecificCharacterSet);
+  file.getDataset()->putAndInsertString(DCM_PatientID, "P-LATIN");
+  file.getDataset()->putAndInsertString(DCM_PatientName, "M\xFCller^J\xF6rg");
+  file.getDataset()->putAndInsertString(DCM_SOPInstanceUID, "1.2.3.4.5.6");
+  std::filesystem::create_directories(folder / "latin");
+  ASSERT_TRUE(file.saveFile((folder / "latin" / "sch\xE4" "del.dcm").c_str(), EXS_LittleEndianExplicit).good());
+  std::ofstream(folder / "latin" / "notiz-\xFC.txt") << std::string(200, 'x');  // a failure naming a Latin-1 path
+  auto a = (folder / "archive").string();
+
+  auto imported = testing::run_maxillo({"--archive", a, "--json", "import", (folder / "latin").string()}, folder.path());
+  EXPECT_EQ(imported.exit_code, 1) << imported.err;
+  Json report = Json::parse(imported.out);
+  EXPECT_EQ(report.at("imported"), 1);
+  for (const auto& command : {"patients", "studies", "series"}) {
+    auto listed = testing::run_maxillo({"--archive", a, "--json", "list", command}, folder.path());
+    EXPECT_EQ(listed.exit_code, 0) << listed.err;
+    EXPECT_NO_THROW((void)Json::parse(listed.out)) << listed.out;
+  }
+  auto patients = Json::parse(testing::run_maxillo({"--archive", a, "--json", "list", "patients"}, folder.path()).out);
+  EXPECT_EQ(patients[0].at("name"), "Müller^Jörg");
+  auto shown = testing::run_maxillo({"--archive", a, "--json", "show", "P-LATIN"}, folder.path());
+  EXPECT_EQ(shown.exit_code, 0) << shown.err;
+  EXPECT_NO_THROW((void)Json::parse(shown.out));
 }
 
 TEST(ArchiveCli, TwoConcurrentImportersOfOverlappingSets) {

@@ -4,6 +4,7 @@
 
 #include <fstream>
 
+#include "archive/index_comparison.h"
 #include "core/json.h"
 #include "support/pdf_tools.h"
 #include "support/temporary_folder.h"
@@ -228,6 +229,34 @@ TEST_F(DemoTest, ReportHasTheValidationAndTheNightlySummary) {
   const auto summary = out / "nightly" / "validation-summary.pdf";
   EXPECT_GE(testing::pdf_page_count(summary), 2);
   EXPECT_NE(testing::pdf_text(summary).find("Validation summary"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace maxillo
+
+namespace maxillo {
+namespace {
+
+// Issue 14: the demo archive's index deleted and rebuilt from the object store alone gives back
+// every table row for row (ids, cases, roles, artefacts, their derivation keys and times).
+TEST_F(DemoTest, ItsArchiveIndexIsRebuiltExactlyFromTheObjectStore) {
+  ASSERT_EQ(demo_.exit_code, 0) << demo_.output;
+  const auto original = folder_->path() / "out" / "archive";
+  const auto copy = folder_->path() / "archive-copy";
+  std::filesystem::copy(original, copy, std::filesystem::copy_options::recursive);
+  std::filesystem::remove(copy / "index.sqlite");
+  const std::string maxillo = std::string(MAXILLO_BINARY) + " --archive " + quote(copy);
+  auto refused = run_command(maxillo + " list 2>&1");
+  EXPECT_EQ(refused.exit_code, 46) << refused.output;
+  auto rebuilt = run_command(maxillo + " archive rebuild-index 2>&1");
+  ASSERT_EQ(rebuilt.exit_code, 0) << rebuilt.output;
+  auto differences = compare_index_files(original / "index.sqlite", copy / "index.sqlite");
+  for (const auto& difference : differences) ADD_FAILURE() << difference.describe();
+  auto kinds = run_command("sqlite3 " + quote(copy / "index.sqlite") + " 'SELECT DISTINCT kind FROM artefacts'").output;
+  for (const char* kind : {"report", "surface-skin", "landmarks", "plan", "validation", "validation-distances"})
+    EXPECT_NE(kinds.find(std::string(kind) + "\n"), std::string::npos) << kind << " not among " << kinds;
+  auto verify = run_command(maxillo + " verify 2>&1");
+  EXPECT_EQ(verify.exit_code, 0) << verify.output;
 }
 
 }  // namespace

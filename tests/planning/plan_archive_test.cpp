@@ -13,7 +13,7 @@ namespace {
 
 struct ArchivedCase {
   maxillo::testing::TemporaryFolder folder;
-  Archive archive = Archive::open(folder.path() / "archive");
+  Archive archive = Archive::open(folder.path() / "archive", OpenMode::CreateIfMissing);
   int64_t case_id = 0;
   ArchivedCase() {
     maxillo::testing::write_series(folder.path() / "dicom", 3, "P9");

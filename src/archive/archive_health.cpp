@@ -1,0 +1,63 @@
+#include "archive/archive_health.h"
+
+#include "archive/archive_state.h"
+#include "archive/journalled_transaction.h"
+#include "core/error.h"
+
+namespace maxillo {
+namespace {
+
+std::string rebuild_advice(const std::filesystem::path& archive_folder) {
+  return "rebuild it from the object store with `maxillo --archive " + archive_folder.string() +
+         " archive rebuild-index` (nothing has been changed)";
+}
+
+}  // namespace
+
+bool holds_any_file(const std::filesystem::path& folder) {
+  std::error_code error;
+  for (std::filesystem::recursive_directory_iterator it(folder, error), end; !error && it != end; it.increment(error))
+    if (it->is_regular_file(error)) return true;
+  return false;
+}
+
+IndexPresence check_index_presence(const std::filesystem::path& archive_folder) {
+  auto index = index_file(archive_folder);
+  std::error_code error;
+  bool present = std::filesystem::exists(index, error) && std::filesystem::file_size(index, error) > 0 && !error;
+  if (present) return IndexPresence::Present;
+  if (!holds_any_file(objects_folder(archive_folder))) return IndexPresence::Fresh;
+  throw Error(ErrorCode::kIndexDamaged, index.string(),
+              std::string(std::filesystem::exists(index) ? "the index is empty" : "the index is missing") +
+                  " but the object store holds archived data; it is never re-created empty: " +
+                  rebuild_advice(archive_folder));
+}
+
+void require_intact_index(sqlite::Database& db) {
+  sqlite::Statement check(db, "PRAGMA quick_check");
+  std::string first = check.step() ? check.text(0) : "no answer";
+  if (first == "ok") return;
+  throw Error(ErrorCode::kIndexDamaged, db.file().string(),
+              "the index is damaged (SQLite quick_check: " + first + "); " + rebuild_advice(db.file().parent_path()));
+}
+
+void require_index_not_behind_journal(sqlite::Database& db, const IndexJournal& journal) {
+  // Entry N+2 can only be written once N+1 has committed, and the counter never goes back, so
+  // if the counter is the same before and after looking, N+2 proves commits the index lacks.
+  int64_t before = journal_sequence(db);
+  for (int attempt = 0; attempt < 10; ++attempt) {
+    bool ahead = journal.has(before + 2);
+    int64_t after = journal_sequence(db);
+    if (after != before) {
+      before = after;  // another process committed meanwhile: look again
+      continue;
+    }
+    if (!ahead) return;
+    throw Error(ErrorCode::kIndexDamaged, db.file().string(),
+                "the index is behind its journal (index at entry " + std::to_string(before) + ", journal has entry " +
+                    std::to_string(before + 2) + "): it was restored from an older copy or lost commits; " +
+                    rebuild_advice(db.file().parent_path()));
+  }
+}
+
+}  // namespace maxillo

@@ -1,0 +1,179 @@
+// Archive::rebuild_index: a lost or damaged index re-created from the object store alone
+// (the journal and the objects), built beside the old one and swapped in only when complete.
+#include "archive/archive_health.h"
+#include "archive/archive_state.h"
+#include "archive/dicom_header.h"
+#include "archive/import_batch.h"
+#include "archive/journal_replay.h"
+#include "archive/journalled_transaction.h"
+#include "core/atomic_file.h"
+#include "core/log.h"
+#include "core/sha256.h"
+#include "core/utc_time.h"
+
+namespace maxillo {
+namespace {
+
+constexpr size_t kAdoptionBatch = 500;
+
+
+void remove_index_files(const std::filesystem::path& index) {
+  std::error_code ignored;
+  for (const char* suffix : {"", "-wal", "-shm", "-journal"}) std::filesystem::remove(index.string() + suffix, ignored);
+}
+
+// Whether the index as it stands would be accepted by Archive::open.
+bool index_is_intact(const std::filesystem::path& folder, const IndexJournal& journal) {
+  try {
+    if (check_index_presence(folder) != IndexPresence::Present) return false;
+    sqlite::Database db(index_file(folder), sqlite::OpenKind::Existing);
+    require_intact_index(db);
+    if (db.user_version() >= 2) require_index_not_behind_journal(db, journal);
+    return db.user_version() >= 1;
+  } catch (const Error&) {
+    return false;
+  }
+}
+
+void restore_named_objects(sqlite::Database& db, ObjectStore& objects, RebuildReport& report) {
+  sqlite::Statement query(db, "SELECT sha256 FROM objects");
+  while (query.step()) {
+    auto sha = query.text(0);
+    if (objects.state_of(sha) == ObjectStore::ObjectState::Absent && objects.restore_from_quarantine(sha))
+      ++report.restored_from_quarantine;
+  }
+}
+
+// Every instance row against its object: the journal says what the index said, the object is
+// the data, and they must agree.
+void check_instances(sqlite::Database& db, const ObjectStore& objects, ProgressDisplay display, RebuildReport& report) {
+  sqlite::Statement count(db, "SELECT COUNT(*) FROM instances");
+  count.step();
+  Progress progress("check instances", size_t(count.integer(0)), display);
+  sqlite::Statement rows(db,
+                         "SELECT i.id, i.object, i.sop_instance_uid, x.series_uid, s.study_uid FROM instances i "
+                         "JOIN series x ON x.id = i.series JOIN studies s ON s.id = x.study ORDER BY i.id");
+  while (rows.step()) {
+    progress.advance();
+    auto path = objects.path_of(rows.text(1));
+    if (!std::filesystem::exists(path)) {
+      ++report.instances_without_object;
+      continue;
+    }
+    const std::string row = "instance:" + std::to_string(rows.integer(0)) + " (" + path.string() + ")";
+    try {
+      auto header = parse_instance_header(read_file(path), path);
+      ++report.instances_checked;
+      if (header.sop_instance_uid != rows.text(2) || header.series_uid != rows.text(3) || header.study_uid != rows.text(4))
+        report.disagreements.push_back(row + ": its DICOM UIDs differ from the journal's row");
+    } catch (const Error& e) {
+      report.disagreements.push_back(row + ": " + e.reason());
+    }
+  }
+  progress.finish();
+}
+
+// DICOM objects that no journal entry named are indexed from their own headers, through the
+// import's own writer (so they are journalled like any import); other unnamed files are listed.
+void adopt_unindexed_objects(sqlite::Database& db, ObjectStore& objects, const IndexJournal& journal,
+                             RebuildReport& report) {
+  std::vector<std::filesystem::path> candidates;
+  {
+    sqlite::Statement indexed(db, "SELECT 1 FROM objects WHERE sha256 = ?1");
+    objects.for_each_file([&](ObjectStore::EntryKind kind, const std::string& sha, const std::filesystem::path& path) {
+      if (kind != ObjectStore::EntryKind::Object) return;
+      if (!indexed.reset().bind(1, sha).step()) candidates.push_back(path);
+      indexed.reset();
+    });
+  }
+  std::sort(candidates.begin(), candidates.end());  // the same store gives the same ids
+  BatchWriter writer(db, objects, journal);
+  ImportReport imported;
+  for (const auto& path : candidates) {
+    ScannedFile file;
+    file.path = path;
+    try {
+      file.bytes = read_file(path);
+      file.sha256 = sha256_hex(file.bytes);
+      if (file.sha256 != sha256_named_by(path)) throw Error(ErrorCode::kArchiveCorrupt, path.string(), "damaged");
+      file.size = file.bytes.size();
+      file.header = parse_instance_header(file.bytes, path);
+    } catch (const Error&) {
+      report.unexplained.push_back(path);
+      continue;
+    }
+    std::string reason;
+    if (writer.add(std::move(file), reason) == ImportOutcome::Imported) ++report.dicom_adopted;
+    else report.unexplained.push_back(path);
+    if (writer.pending() >= kAdoptionBatch) writer.commit(imported, nullptr);
+  }
+  writer.commit(imported, nullptr);
+  for (const auto& problem : imported.problems) {
+    report.unexplained.push_back(problem.path);
+    --report.dicom_adopted;
+  }
+}
+
+void count_rows(sqlite::Database& db, RebuildReport& report) {
+  for (const auto& table : index_tables()) {
+    sqlite::Statement count(db, "SELECT COUNT(*) FROM " + table);
+    count.step();
+    report.rows[table] = count.integer(0);
+  }
+}
+
+// The new index replaces the old one in one rename; the old one is kept, with its WAL.
+void install(const std::filesystem::path& folder, const std::filesystem::path& rebuilt, bool was_intact,
+             RebuildReport& report) {
+  const auto index = index_file(folder);
+  std::error_code error;
+  if (std::filesystem::exists(index, error) || std::filesystem::exists(index.string() + "-wal", error)) {
+    report.previous_index = folder / ("index.sqlite." + std::string(was_intact ? "replaced-" : "damaged-") + utc_stamp());
+    for (const char* suffix : {"", "-wal"})
+      if (std::filesystem::exists(index.string() + suffix, error))
+        std::filesystem::rename(index.string() + suffix, report.previous_index.string() + suffix);
+    std::filesystem::remove(index.string() + "-shm", error);  // derived from the WAL, rebuilt on open
+  }
+  std::filesystem::rename(rebuilt, index);
+  sync_folder(folder);
+}
+
+}  // namespace
+
+RebuildReport Archive::rebuild_index(const std::filesystem::path& folder, const RebuildOptions& options) {
+  initialise_dicom_toolkit();
+  if (!std::filesystem::is_directory(objects_folder(folder)))
+    throw Error(ErrorCode::kNotFound, folder.string(), "no object store (objects/) to rebuild an index from");
+  StoreLock lock(folder, LockKind::Exclusive);
+  IndexJournal journal(journal_folder(folder));
+  const bool intact = index_is_intact(folder, journal);
+  if (intact && !options.force)
+    throw Error(ErrorCode::kConflict, index_file(folder).string(),
+                "the index is intact; `archive rebuild-index --force` rebuilds it anyway (the current one is kept)");
+
+  RebuildReport report;
+  const auto rebuilt = folder / "index.sqlite.rebuilding";
+  remove_index_files(rebuilt);
+  {
+    ObjectStore objects(objects_folder(folder));
+    sqlite::Database db(rebuilt, sqlite::OpenKind::Create);
+    configure_connection(db);
+    upgrade_schema(db, journal);
+    auto outcome = replay_journal(db, journal);
+    report.journal_entries = outcome.entries;
+    report.journal_problems = std::move(outcome.problems);
+    restore_named_objects(db, objects, report);
+    check_instances(db, objects, options.progress, report);
+    adopt_unindexed_objects(db, objects, journal, report);
+    count_rows(db, report);
+    require_intact_index(db);
+    db.execute("PRAGMA journal_mode = DELETE");  // folds the WAL into the file before it moves
+    objects.make_durable();
+  }
+  install(folder, rebuilt, intact, report);
+  log::info("index rebuilt from ", report.journal_entries, " journal entries and ", report.dicom_adopted,
+            " DICOM objects no entry named");
+  return report;
+}
+
+}  // namespace maxillo
