@@ -75,7 +75,13 @@ FactorisationStatus precompute_factorisation(const StiffnessBlocks& stiffness,
       out.factor_nonzeros = static_cast<const Simplicial*>(out.factorisation.get())->matrixL().nestedExpression().nonZeros();
   }
 #ifdef MAXILLO_HAVE_CHOLMOD
-  if (backend == CholeskyBackend::kCholmodSupernodal) status = factorise<Supernodal>(k, out);
+  if (backend == CholeskyBackend::kCholmodSupernodal) {
+    status = factorise<Supernodal>(k, out);
+    // Eigen keeps CHOLMOD's factor to itself; its workspace records the entries of L.
+    if (status == FactorisationStatus::kOk)
+      out.factor_nonzeros =
+          long(const_cast<Supernodal*>(static_cast<const Supernodal*>(out.factorisation.get()))->cholmod().lnz);
+  }
 #endif
   return status;
 }
