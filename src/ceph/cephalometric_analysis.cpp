@@ -1,16 +1,36 @@
 #include "ceph/cephalometric_analysis.h"
 
+#include <cstdio>
 #include <functional>
 #include <initializer_list>
 
 #include "ceph/cephalometric_measures.h"
+#include "core/error.h"
 
 namespace maxillo::ceph {
 namespace {
 
 using Points = std::vector<Eigen::Vector2d>;
 
-// The points of `labels`, or the reason they are not all there.
+// Distinct anatomical points lie millimetres apart; closer than this, an angle or line through
+// them is noise, and at zero distance undefined: the landmark set is wrong, not the measure.
+constexpr double kCoincidentMm = 0.5;
+
+void require_apart(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const std::string& a_label,
+                   const std::string& b_label) {
+  const double distance = (a - b).norm();
+  if (!(distance >= kCoincidentMm))
+  {
+    char apart[32];
+    std::snprintf(apart, sizeof apart, "%.2f", distance);
+    throw Error(ErrorCode::kBadValue, "landmarks",
+                a_label + " and " + b_label + " coincide (" + apart + " mm apart in the sagittal plane): " +
+                    "no measurement can use both");
+  }
+}
+
+// The points of `labels`, or the reason they are not all there. Points that coincide are an
+// input error (Error kBadValue naming them).
 std::optional<Points> gather(const SagittalLandmarks& set, std::initializer_list<const char*> labels,
                              std::string& reason) {
   Points points;
@@ -25,6 +45,9 @@ std::optional<Points> gather(const SagittalLandmarks& set, std::initializer_list
     reason = "missing landmark(s): " + missing;
     return std::nullopt;
   }
+  const auto* label = labels.begin();
+  for (size_t i = 0; i < points.size(); ++i)
+    for (size_t j = i + 1; j < points.size(); ++j) require_apart(points[i], points[j], label[i], label[j]);
   return points;
 }
 
@@ -39,7 +62,15 @@ std::optional<Eigen::Vector2d> midpoint(const SagittalLandmarks& set, const char
   return (*u + *l) / 2;
 }
 
+std::optional<OcclusalLine> occlusal_line_points(const SagittalLandmarks& set, std::string& reason);
+
 std::optional<OcclusalLine> occlusal_line(const SagittalLandmarks& set, std::string& reason) {
+  auto line = occlusal_line_points(set, reason);
+  if (line) require_apart(line->posterior, line->anterior, "the occlusal line's posterior point", "its anterior point");
+  return line;
+}
+
+std::optional<OcclusalLine> occlusal_line_points(const SagittalLandmarks& set, std::string& reason) {
   if (auto p = set.find("OccP"), a = set.find("OccA"); p && a)
     return OcclusalLine{*p, *a, "occlusal line OccP-OccA (traced)"};
   auto molars = midpoint(set, "U6", "L6");

@@ -1,6 +1,7 @@
 // 3D Slicer markups JSON (.mrk.json, schema v1.0.3).
 #include "ceph/landmark_format_support.h"
 #include "core/json.h"
+#include "core/json_input.h"
 
 namespace maxillo::landmark_format {
 namespace {
@@ -9,21 +10,11 @@ constexpr const char* kMarkupsSchema =
     "https://raw.githubusercontent.com/slicer/slicer/master/Modules/Loadable/Markups/Resources/Schema/"
     "markups-schema-v1.0.3.json#";
 
-size_t line_of_byte(std::string_view text, size_t byte) {
-  byte = std::min(byte, text.size());
-  return size_t(std::count(text.begin(), text.begin() + long(byte), '\n')) + 1;
-}
-
 }  // namespace
 
 LandmarkSet parse_markups_json(std::string_view text, const std::string& source) {
   Collector out(source);
-  Json document;
-  try {
-    document = Json::parse(text);
-  } catch (const Json::parse_error& e) {
-    out.fail(line_name(line_of_byte(text, e.byte > 0 ? e.byte - 1 : 0)), "invalid JSON");
-  }
+  const Json document = parse_json_input(text, source);
   if (!document.is_object() || !document.contains("markups") || !document["markups"].is_array())
     out.fail("document", "no \"markups\" array (not a Slicer markups file)");
   size_t markup_number = 0;

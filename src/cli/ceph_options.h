@@ -35,7 +35,7 @@ inline void add_geometry_options(CLI::App& app, GeometryOptions& options) {
                  "auto (2D cephalogram when every z is 0), cephalogram (x, y in the image plane) or volume (3D LPS)")
       ->transform(CLI::CheckedTransformer(geometries, CLI::ignore_case));
   app.add_option("--pixel-spacing", options.pixel_spacing_mm, "mm per unit of a cephalogram's x, y (pixels)")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(1e-3, 10.0));
   app.add_flag("--image-y-down", options.image_y_down, "cephalogram y grows downwards (image pixel coordinates)");
   app.add_flag("--face-left", options.face_left, "the cephalogram's face looks to -x (default +x)");
   std::map<std::string, ceph::Sex> sexes{{"F", ceph::Sex::kFemale}, {"M", ceph::Sex::kMale}, {"unknown", ceph::Sex::kUnknown}};

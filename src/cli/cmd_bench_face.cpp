@@ -141,9 +141,11 @@ void attach_bench_face(CLI::App& bench, CommandContext& /*ctx*/) {
   CLI::App* face = bench.add_subcommand("face", "soft tissue model of the phantom's face: meshing, solves, skin mappings");
   face->add_option("--spacing", args->spacing_mm, "phantom voxel size, mm")->check(CLI::Range(0.5, 3.0))->capture_default_str();
   face->add_option("--runs", args->runs, "runs; medians are reported")->check(CLI::Range(1, 50))->capture_default_str();
-  face->add_option("--max-tets", args->max_tets, "tetrahedra budget")->capture_default_str();
-  face->add_option("--cell-mm", args->cell_mm, "target tetrahedron size, mm")->capture_default_str();
-  face->add_option("--skin-triangles", args->skin_triangles, "skin decimation target")->capture_default_str();
+  face->add_option("--max-tets", args->max_tets, "tetrahedra budget")->check(kTetrahedra)->capture_default_str();
+  face->add_option("--cell-mm", args->cell_mm, "target tetrahedron size, mm")->check(kCellMm)->capture_default_str();
+  face->add_option("--skin-triangles", args->skin_triangles, "skin decimation target")
+      ->check(kTriangles)
+      ->capture_default_str();
   face->callback([args] { run_face_bench(*args); });
 }
 

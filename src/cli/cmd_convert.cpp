@@ -81,10 +81,15 @@ void attach_convert(CLI::App& app, CommandContext& ctx) {
   app.add_option("--out", options->out, "folder for the DICOM series (created if needed)")->required();
   app.add_option("--direction", options->direction,
                  "9 numbers: the i, j and k axes as LPS unit vectors (overrides the file's)")
-      ->expected(9)->delimiter(',');
+      ->expected(9)
+      ->delimiter(',')
+      ->check(CLI::Range(-1.0, 1.0));
   app.add_option("--origin", options->origin, "x,y,z: LPS position of voxel (0,0,0) in mm (overrides the file's)")
-      ->expected(3)->delimiter(',');
+      ->expected(3)
+      ->delimiter(',')
+      ->check(kCoordinateMm);
   app.add_option("--hu-offset", options->hu_offset, "added to every stored value to give HU (e.g. -1024)")
+      ->check(CLI::Range(-32768.0, 32767.0))
       ->capture_default_str();
   app.add_option("--patient-name", options->patient_name, "DICOM patient name (Family^Given)")->capture_default_str();
   app.add_option("--patient-id", options->patient_id, "DICOM patient ID")->capture_default_str();

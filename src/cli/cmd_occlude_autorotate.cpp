@@ -81,11 +81,13 @@ void attach_occlude_autorotate(CLI::App& occlude, CommandContext& ctx) {
   app->add_option("--hinge", options->hinge, "two points of the condylar axis x,y,z,x,y,z (mm, lower frame)")
       ->required()
       ->delimiter(',')
-      ->expected(6);
+      ->expected(6)
+      ->check(kCoordinateMm);
   app->add_option("--pogonion", options->pogonion, "pogonion x,y,z (mm, lower frame)")
       ->required()
       ->delimiter(',')
-      ->expected(3);
+      ->expected(3)
+      ->check(kCoordinateMm);
   app->add_option("--upper-pose", options->upper_pose, "JSON with upper_transform placing the upper arch")
       ->check(CLI::ExistingFile);
   app->add_option("--max-deg", options->rotation.max_angle_deg, "largest closing rotation tried")

@@ -18,6 +18,7 @@
 #include "imaging/rigid_registration.h"
 #include "imaging/volume_assembly.h"
 #include "occlusion/occlusion_files.h"
+#include "pipeline/archived_series.h"
 #include "pipeline/case_landmarks.h"
 
 namespace maxillo::cli {
@@ -70,7 +71,7 @@ LoadedSeries load_input(const std::string& text, LazyArchive& archive) {
   }
   Archive& a = archive.get();
   const int64_t series = a.resolve_series(text);
-  loaded.volume = load_series_volume(a.series_instance_files(series));
+  loaded.volume = pipeline::load_archived_series(a, series);
   loaded.series = series;
   loaded.source = {{"series", series}, {"series_uid", a.series_by_id(series)->series_uid}};
   return loaded;
@@ -165,7 +166,8 @@ void attach_register(CLI::App& app, CommandContext& ctx) {
                  "metric subvolume in the fixed CT, LPS mm: xmin,ymin,zmin,xmax,ymax,zmax "
                  "(default: the cranium above the infraorbital rim)")
       ->delimiter(',')
-      ->expected(6);
+      ->expected(6)
+      ->check(kCoordinateMm);
   app.add_option("--out", options->out, "write the transform as JSON (moving_to_fixed 4x4, metric, box)");
   app.callback([options, &ctx] { run_register(*options, ctx); });
 }

@@ -39,14 +39,19 @@ void attach_sample_postop(CLI::App& app, CommandContext& ctx) {
   app.add_option("--out", a->out, "output folder: ct/ (DICOM series) and truth.json")->required();
   app.add_option("--error-mm", a->options.error_mm,
                  "the real face lies this far in front of the prediction at the centre")
+      ->check(CLI::Range(-10.0, 10.0))
       ->capture_default_str();
   app.add_option("--error-sigma-mm", a->options.error_sigma_mm, "width (sigma) of that error bump")
+      ->check(CLI::Range(1.0, 100.0))
       ->capture_default_str();
   app.add_option("--error-centre", a->options.error_centre, "soft tissue landmark at the bump's centre")
       ->capture_default_str();
   app.add_option("--reposition-deg", a->options.reposition_deg, "head turned in the post-operative scanner")
+      ->check(CLI::Range(-30.0, 30.0))
       ->capture_default_str();
-  app.add_option("--reposition-mm", a->options.reposition_mm, "and shifted along each axis")->capture_default_str();
+  app.add_option("--reposition-mm", a->options.reposition_mm, "and shifted along each axis")
+      ->check(CLI::Range(-50.0, 50.0))
+      ->capture_default_str();
   app.add_option("--date", a->date, "study date YYYYMMDD (default: a year after the pre-operative CT)");
   app.add_flag("--import", a->import, "import the series into the archive as the case's post-operative CT");
   app.callback([a, &ctx] { ctx.exit_code = run(*a, ctx.global); });

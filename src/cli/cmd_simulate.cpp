@@ -78,7 +78,8 @@ void attach_simulate(CLI::App& app, CommandContext& ctx) {
   auto options = std::make_shared<SimulateOptions>();
   app.add_option("CASE", options->case_text, "case id, or a Patient ID (its default case)")->required();
   app.add_option("--plan", options->plan_file, "plan JSON (maxillo plan); its osteotomies and segment moves are used");
-  app.add_option("--advance", options->advance_mm, "instead of a plan: Le Fort I advancement of the maxilla, mm");
+  app.add_option("--advance", options->advance_mm, "instead of a plan: Le Fort I advancement of the maxilla, mm")
+      ->check(kAdvancementMm);
   app.add_option("--model", options->model,
                  "mtm (mass tensor), fem (linear FEM), msm (mass-spring) or nfem (non-linear FEM)")
       ->check(CLI::IsMember({"mtm", "fem", "msm", "nfem"}))
@@ -86,8 +87,12 @@ void attach_simulate(CLI::App& app, CommandContext& ctx) {
   app.add_option("--poisson", options->poisson, "Poisson ratio of the soft tissue")
       ->check(CLI::Range(0.3, 0.499))
       ->capture_default_str();
-  app.add_option("--max-tets", options->max_tets, "tetrahedra budget of the face model")->capture_default_str();
-  app.add_option("--cell-mm", options->cell_mm, "target tetrahedron size, mm (grows to meet --max-tets)")->capture_default_str();
+  app.add_option("--max-tets", options->max_tets, "tetrahedra budget of the face model")
+      ->check(kTetrahedra)
+      ->capture_default_str();
+  app.add_option("--cell-mm", options->cell_mm, "target tetrahedron size, mm (grows to meet --max-tets)")
+      ->check(kCellMm)
+      ->capture_default_str();
   app.add_flag("--uncertainty", options->uncertainty,
                "also solve with the other models and Poisson ratios 0.45 and 0.49: per-vertex spread");
   app.add_option("--out", options->out, "output folder: predicted skin (vtp, stl, ply), model (vtu), renders, json")

@@ -1,5 +1,6 @@
 // maxillo: the command-line entry point. Parses global options, dispatches to the command
 // table and turns errors into the exit codes of core/error_catalogue.def.
+#include <cmath>
 #include <cstdlib>
 #include <iostream>
 
@@ -22,6 +23,22 @@ void configure_logging(const GlobalOptions& global) {
   else if (global.verbosity > 0) log::set_level(log::Level::Debug);
 }
 
+// CLI11 reads "nan", "inf" and "1e400" as doubles; no numeric option of maxillo means them.
+// Every floating-point option of every command gets this check (ranges are each option's own).
+void refuse_non_finite_numbers(CLI::App& app) {
+  static const CLI::Validator finite(
+      [](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double value = std::strtod(text.c_str(), &end);
+        if (end != text.c_str() && *end == '\0' && !std::isfinite(value)) return "must be a finite number, got " + text;
+        return {};
+      },
+      "", "");
+  for (CLI::Option* option : app.get_options())
+    if (option->get_type_name().find("FLOAT") != std::string::npos) option->check(finite);
+  for (CLI::App* subcommand : app.get_subcommands([](CLI::App*) { return true; })) refuse_non_finite_numbers(*subcommand);
+}
+
 int run(int argc, char** argv) {
   CLI::App app{"maxillo: cranio-maxillofacial planning, simulation and reports", "maxillo"};
   app.require_subcommand(1);
@@ -40,6 +57,7 @@ int run(int argc, char** argv) {
     sub->fallthrough();  // global options may follow the command name
     command.attach(*sub, context);
   }
+  refuse_non_finite_numbers(app);
 
   try {
     app.parse(argc, argv);

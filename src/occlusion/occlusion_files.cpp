@@ -1,11 +1,13 @@
 #include "occlusion/occlusion_files.h"
 
 #include <charconv>
+#include <cmath>
 #include <sstream>
 #include <string>
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/json_input.h"
 
 namespace maxillo::occlusion {
 namespace {
@@ -15,7 +17,8 @@ std::string file_text(const std::filesystem::path& path) {
   return std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size());
 }
 
-// Parses comma-separated numbers; false if any field is not a number.
+// Parses comma-separated numbers; false if any field is not a number. "nan" and "inf" parse
+// as numbers but mean nothing here: they are refused by the caller (non_finite).
 bool parse_numbers(const std::string& line, std::vector<double>& values) {
   values.clear();
   std::stringstream fields(line);
@@ -50,6 +53,9 @@ std::vector<SpringPair> read_spring_pairs(const std::filesystem::path& path) {
       throw Error(ErrorCode::kBadValue, path.string(),
                   "row " + std::to_string(row) + " has " + std::to_string(values.size()) +
                       " values, expected ux,uy,uz,lx,ly,lz");
+    for (double value : values)
+      if (!std::isfinite(value))
+        throw Error(ErrorCode::kBadValue, path.string(), "row " + std::to_string(row) + " holds a value that is not a finite number");
     pairs.push_back({{values[0], values[1], values[2]}, {values[3], values[4], values[5]}});
   }
   if (pairs.size() < 3)
@@ -94,12 +100,7 @@ Eigen::Isometry3d transform_from_json(const Json& value, const std::string& subj
 }
 
 Eigen::Isometry3d read_upper_transform(const std::filesystem::path& path) {
-  Json document;
-  try {
-    document = Json::parse(file_text(path));
-  } catch (const Json::exception& e) {
-    throw Error(ErrorCode::kBadValue, path.string(), std::string("not valid JSON: ") + e.what());
-  }
+  const Json document = parse_json_input(file_text(path), path.string());
   if (!document.is_object() || !document.contains("upper_transform"))
     throw Error(ErrorCode::kBadValue, path.string(), "no key upper_transform");
   return transform_from_json(document["upper_transform"], path.string());

@@ -2,6 +2,7 @@
 
 #include "core/log.h"
 #include "imaging/volume_assembly.h"
+#include "pipeline/archived_series.h"
 #include "pipeline/derivation.h"
 #include "pipeline/mesh_artefact.h"
 
@@ -55,7 +56,7 @@ CaseSurfaces case_surfaces(Archive& archive, int64_t case_id, int64_t series, co
     log::info("surfaces up to date, reusing them");
     return CaseSurfaces{load_mesh_artefact(archive, *skin), load_mesh_artefact(archive, *bone), key, true};
   }
-  auto volume = load_series_volume(archive.series_instance_files(series));
+  auto volume = load_archived_series(archive, series);
   auto surfaces = extract_case_surfaces(volume, recipe);
   surfaces.key = key;
   store_mesh_artefact(archive, case_id, kSkinKind, key, parameters, surfaces.skin);

@@ -3,6 +3,7 @@
 #include "core/log.h"
 #include "imaging/segmentation.h"
 #include "imaging/volume_assembly.h"
+#include "pipeline/archived_series.h"
 #include "pipeline/derivation.h"
 #include "planning/enclosed_air.h"
 #include "planning/jaw_separation.h"
@@ -11,7 +12,7 @@ namespace maxillo::pipeline {
 
 CaseTissues load_case_tissues(Archive& archive, int64_t case_id, const LandmarkSet& landmarks) {
   const int64_t series = primary_series(archive.case_contents(case_id));
-  return segment_case_tissues(load_series_volume(archive.series_instance_files(series)), landmarks);
+  return segment_case_tissues(load_archived_series(archive, series), landmarks);
 }
 
 CaseTissues segment_case_tissues(const Volume& ct, const LandmarkSet& landmarks) {

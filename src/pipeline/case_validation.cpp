@@ -13,6 +13,7 @@
 #include "mesh/mesh_io.h"
 #include "mesh/mesh_transform.h"
 #include "mesh/surface_extraction.h"
+#include "pipeline/archived_series.h"
 #include "pipeline/case_landmarks.h"
 #include "pipeline/case_surfaces.h"
 #include "pipeline/derivation.h"
@@ -227,7 +228,7 @@ CaseValidation validate_case(Archive& archive, int64_t case_id, const Validation
   v.preop_series = planned.preop_series;
 
   log::info("validation: registering the post-operative CT");
-  const Volume postop_ct = load_series_volume(archive.series_instance_files(v.postop_series));
+  const Volume postop_ct = load_archived_series(archive, v.postop_series);
   RigidRegistrationOptions registration = options.registration;
   if (!registration.box) registration.box = cranial_registration_box(planned.preop_ct, &planned.landmarks);
   v.registration = register_rigid(planned.preop_ct, postop_ct, registration);

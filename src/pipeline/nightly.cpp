@@ -33,15 +33,16 @@ std::optional<std::string> inputs_hash_or_none(const Archive& archive, int64_t c
   }
 }
 
-// The cases of this shard with a post-operative CT, a plan and landmarks, by case id.
-std::vector<EligibleCase> eligible_cases(const Archive& archive, const NightlyOptions& options) {
-  std::vector<EligibleCase> cases;
+// The cases of this shard, by case id. Whether each is eligible is decided case by case, so
+// that a case whose records cannot be read fails alone (run_nightly).
+std::vector<int64_t> shard_cases(const Archive& archive, const NightlyOptions& options) {
+  std::vector<int64_t> cases;
   for (const auto& c : archive.cases()) {
     const auto patient = archive.patient(c.patient);
-    if (!patient || shard_of(patient->patient_id, c.label, options.shard.count) != options.shard.index) continue;
-    if (auto key = inputs_hash_or_none(archive, c.id, options.validation)) cases.push_back({c.id, *key});
+    if (patient && shard_of(patient->patient_id, c.label, options.shard.count) == options.shard.index)
+      cases.push_back(c.id);
   }
-  std::sort(cases.begin(), cases.end(), [](const auto& a, const auto& b) { return a.case_id < b.case_id; });
+  std::sort(cases.begin(), cases.end());
   return cases;
 }
 
@@ -60,19 +61,30 @@ NightlyCase process_case(Archive& archive, const EligibleCase& c, const NightlyO
     return result;
   }
   const auto started = std::chrono::steady_clock::now();
-  try {
-    const auto validation =
-        validate_case(archive, c.case_id, options.validation, options.out / ("case-" + std::to_string(c.case_id)));
-    store_validation(archive, validation);
-    stored = find_validation(archive, c.case_id, c.key);
-    result.outcome = NightlyOutcome::kValidated;
-  } catch (const Error& e) {
-    result.outcome = NightlyOutcome::kFailed;
-    result.reason = e.what();
-    log::error("case ", c.case_id, ": validation failed: ", e.what());
-  }
+  const auto validation =
+      validate_case(archive, c.case_id, options.validation, options.out / ("case-" + std::to_string(c.case_id)));
+  store_validation(archive, validation);
+  stored = find_validation(archive, c.case_id, c.key);
+  result.outcome = NightlyOutcome::kValidated;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return result;
+}
+
+// One case of the run: nothing when it has no post-operative CT, plan or landmarks.
+std::optional<NightlyCase> nightly_case(Archive& archive, int64_t case_id, const NightlyOptions& options,
+                                        std::vector<StoredValidation>& shown) {
+  auto key = inputs_hash_or_none(archive, case_id, options.validation);
+  if (!key) return std::nullopt;
+  const EligibleCase eligible{case_id, *key};
+  auto stored = find_validation(archive, case_id, eligible.key);
+  NightlyCase result = process_case(archive, eligible, options, stored);
+  if (stored) shown.push_back(std::move(*stored));
+  return result;
+}
+
+NightlyCase failed_case(int64_t case_id, std::string reason) {
+  log::error("case ", case_id, ": validation failed: ", reason);
+  return NightlyCase{case_id, NightlyOutcome::kFailed, std::move(reason), 0};
 }
 
 std::string summary_name(const Shard& shard) {
@@ -147,11 +159,19 @@ NightlyReport run_nightly(Archive& archive, const NightlyOptions& options) {
   std::filesystem::create_directories(options.out);
   NightlyReport report;
   std::vector<StoredValidation> shown;
-  for (const auto& c : eligible_cases(archive, options)) {
-    auto stored = find_validation(archive, c.case_id, c.key);
-    report.cases.push_back(process_case(archive, c, options, stored));
-    log::info("case ", c.case_id, ": ", to_string(report.cases.back().outcome));
-    if (stored) shown.push_back(std::move(*stored));
+  for (int64_t case_id : shard_cases(archive, options)) {
+    try {  // whatever one case throws, the others still run
+      auto result = nightly_case(archive, case_id, options, shown);
+      if (!result) continue;
+      report.cases.push_back(*result);
+      log::info("case ", case_id, ": ", to_string(result->outcome));
+    } catch (const Error& e) {
+      report.cases.push_back(failed_case(case_id, e.what()));
+    } catch (const std::exception& e) {
+      report.cases.push_back(failed_case(case_id, std::string("internal error: ") + e.what()));
+    } catch (...) {
+      report.cases.push_back(failed_case(case_id, "internal error of an unknown kind"));
+    }
   }
   report.summary_pdf = options.out / summary_name(options.shard);
   if (shown.empty()) return report;

@@ -80,11 +80,9 @@ int write_validation_summary(const std::vector<StoredValidation>& validations,
   for (const auto& fact : run_facts) notes.blocks.push_back(report::Note{fact});
   model.sections.push_back(notes);
 
-  const auto partial = std::filesystem::path(pdf).concat(".partial");
-  const int pages =
-      report::write_report(model, report::load_report_template("templates/validation-summary.json"), partial);
-  std::filesystem::rename(partial, pdf);  // a reader never sees half a PDF
-  return pages;
+  // write_report writes through a temporary file and a rename: a reader never sees half a PDF,
+  // and the log names the file a reader will open.
+  return report::write_report(model, report::load_report_template("templates/validation-summary.json"), pdf);
 }
 
 }  // namespace maxillo::pipeline

@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "imaging/volume_assembly.h"
+#include "pipeline/archived_series.h"
 #include "pipeline/case_landmarks.h"
 #include "pipeline/case_surfaces.h"
 #include "pipeline/derivation.h"
@@ -26,7 +27,7 @@ PlannedCase load_planned_case(Archive& archive, int64_t case_id, const CaseTissu
   if (!plan) throw Error(ErrorCode::kNotFound, subject, "the case has no plan: make one first (maxillo plan create)");
   c.plan = std::move(*plan);
   c.preop_series = primary_series(archive.case_contents(case_id));
-  c.preop_ct = load_series_volume(archive.series_instance_files(c.preop_series));
+  c.preop_ct = load_archived_series(archive, c.preop_series);
   c.tissues = tissues ? *tissues : segment_case_tissues(c.preop_ct, c.landmarks);
   c.applied =
       planning::apply_plan(c.plan.plan, c.tissues.segmentation, c.landmarks, planning::segmentation_anatomy_labels());

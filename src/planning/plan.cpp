@@ -7,6 +7,7 @@
 #include <set>
 
 #include "core/error.h"
+#include "core/json_input.h"
 
 namespace maxillo::planning {
 namespace {
@@ -249,9 +250,8 @@ Json cut_json(const CutSpec& cut, bool le_fort) {
 
 bool differ(double a, double b) { return std::abs(a - b) > 1e-6; }
 
-}  // namespace
-
-Plan plan_from_json(const Json& json, const std::string& source) {
+// Every field read and range-checked; how the fields fit together is validate_plan's.
+Plan read_plan_fields(const Json& json, const std::string& source) {
   Reader r(json, "", source);
   Plan plan;
   if (!r.has("format_version")) r.fail("format_version", "missing");
@@ -270,21 +270,33 @@ Plan plan_from_json(const Json& json, const std::string& source) {
   if (r.has("distraction")) plan.distraction = read_distraction(r.at("distraction"), source);
   if (r.has("occlusion")) plan.occlusion = read_occlusion(r.at("occlusion"), source);
   r.refuse_unknown_keys();
-  validate_plan(plan, source);
+  return plan;
+}
+
+void check_consistency(const Plan& plan, const std::string& source);
+
+}  // namespace
+
+Plan plan_from_json(const Json& json, const std::string& source) {
+  Plan plan = read_plan_fields(json, source);
+  check_consistency(plan, source);
   return plan;
 }
 
 Plan parse_plan(std::string_view text, const std::string& source) {
-  Json json;
-  try {
-    json = Json::parse(text);
-  } catch (const Json::parse_error& e) {
-    throw Error(ErrorCode::kBadValue, source, std::string("not valid JSON: ") + e.what());
-  }
-  return plan_from_json(json, source);
+  return plan_from_json(parse_json_input(text, source), source);
 }
 
+// A plan made in code (from command-line options) passes the same range checks as a plan read
+// from a file, by reading back its own JSON: one set of limits, NaN and infinities refused.
 void validate_plan(const Plan& plan, const std::string& source) {
+  read_plan_fields(plan_to_json(plan), source);
+  check_consistency(plan, source);
+}
+
+namespace {
+
+void check_consistency(const Plan& plan, const std::string& source) {
   auto fail = [&](const std::string& field, const std::string& reason) {
     throw Error(ErrorCode::kBadValue, source, field + ": " + reason);
   };
@@ -306,6 +318,8 @@ void validate_plan(const Plan& plan, const std::string& source) {
   }
   if (plan.distraction) validate(plan.distraction->schedule);
 }
+
+}  // namespace
 
 Json plan_to_json(const Plan& plan) {
   Json json{{"format_version", plan.format_version}, {"description", plan.description}};

@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "core/json.h"
+#include "core/json_input.h"
 #include "core/resources.h"
 
 namespace maxillo::report {
@@ -101,12 +102,7 @@ std::span<const std::string_view> known_section_ids() { return kSectionIds; }
 
 ReportTemplate parse_report_template(std::string_view json_text, std::string_view source) {
   const Reader in(source);
-  Json root;
-  try {
-    root = Json::parse(json_text);
-  } catch (const Json::parse_error& e) {
-    in.fail(std::string("not valid JSON: ") + e.what());
-  }
+  const Json root = parse_json_input(json_text, std::string(source));
   in.only_keys(root, "the template", {"title", "subtitle", "page", "fonts", "footer", "sections"});
   ReportTemplate out;
   out.source = source;

@@ -75,7 +75,7 @@ TEST(PlanJson, RefusalsNameTheFieldAndTheReason) {
                           "distraction": {"target": {"advancement_mm": 10}}})")
                 .find("must equal distraction.target"),
             std::string::npos);
-  EXPECT_NE(reason_of("{not json").find("not valid JSON"), std::string::npos);
+  EXPECT_NE(reason_of("{not json").find("invalid JSON"), std::string::npos);
   EXPECT_EQ(reason_of(R"({"format_version": 1, "distraction": {"schedule": {"rate_mm_per_day": "fast"}}})"),
             "distraction.schedule.rate_mm_per_day: must be a number");
 }
