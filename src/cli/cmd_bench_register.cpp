@@ -27,6 +27,7 @@ struct RegisterBenchArguments {
   double rotation_deg = 4;
   double translation_mm = 7;
   bool elastix = true;
+  bool same_seed = false;  // every run with seed 1: the runs' spread is then the non-determinism
   RigidRegistrationOptions ours;  // the library's defaults unless tuned on the command line
 };
 
@@ -40,6 +41,21 @@ double median(std::vector<double> values) {
   std::sort(values.begin(), values.end());
   const size_t n = values.size();
   return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+// How far apart the runs' answers lie: the largest rotation between run 1's and another's
+// (degrees), and the largest RMS distance over the skin between where they put it (mm).
+struct Spread {
+  double degrees = 0, mm = 0;
+};
+Spread spread_of(const std::vector<Eigen::Isometry3d>& results, const Eigen::MatrixX3d& skin) {
+  Spread spread;
+  for (const auto& result : results) {
+    const Eigen::AngleAxisd between(result.linear() * results.front().linear().transpose());
+    spread.degrees = std::max(spread.degrees, std::abs(between.angle()) * 180 / M_PI);
+    spread.mm = std::max(spread.mm, pipeline::rms_error_mm(skin, result, results.front().inverse()));
+  }
+  return spread;
 }
 
 struct MethodRuns {
@@ -71,12 +87,14 @@ void run_register_bench(const RegisterBenchArguments& args, CommandContext& ctx)
 
   MethodRuns ours, elastix;
   std::vector<int> iterations;
+  std::vector<Eigen::Isometry3d> answers;
   TemporaryFolder scratch("bench-register");
   for (int run = 0; run < args.runs; ++run) {
     RigidRegistrationOptions options = args.ours;
     options.box = box;
-    options.seed = uint32_t(run + 1);
+    options.seed = args.same_seed ? 1u : uint32_t(run + 1);
     const RigidRegistrationResult result = register_rigid(fixed, moving, options);
+    answers.push_back(result.moving_to_fixed);
     ours.seconds.push_back(result.seconds);
     ours.rms_mm.push_back(pipeline::rms_error_mm(skin, result.moving_to_fixed, known));
     iterations.push_back(result.iterations);
@@ -93,10 +111,13 @@ void run_register_bench(const RegisterBenchArguments& args, CommandContext& ctx)
   }
 
   const double ratio = with_elastix ? median(elastix.seconds) / median(ours.seconds) : 0;
+  const Spread spread = spread_of(answers, skin);
   if (ctx.global.json) {
     Json json = {{"runs", args.runs},          {"rotation_deg", args.rotation_deg},
                  {"translation_mm", args.translation_mm}, {"skin_vertices", skin.rows()},
-                 {"ours", ours.json()},        {"iterations", iterations}};
+                 {"ours", ours.json()},        {"iterations", iterations},
+                 {"threads", args.ours.threads}, {"same_seed", args.same_seed},
+                 {"spread_deg", spread.degrees}, {"spread_mm", spread.mm}};
     if (with_elastix) {
       json["elastix"] = elastix.json();
       json["elastix_to_ours_time_ratio"] = ratio;
@@ -106,6 +127,8 @@ void run_register_bench(const RegisterBenchArguments& args, CommandContext& ctx)
   }
   std::printf("ours:    median %.2f s, RMS %.4f mm over the skin (target <= 0.05 mm)\n", median(ours.seconds),
               median(ours.rms_mm));
+  std::printf("ours:    runs %s apart by up to %.4f deg and %.4f mm over the skin\n",
+              args.same_seed ? "(same seed)" : "(seeds 1..n)", spread.degrees, spread.mm);
   if (with_elastix) {
     std::printf("elastix: median %.2f s, RMS %.4f mm over the skin\n", median(elastix.seconds), median(elastix.rms_mm));
     std::printf("time ratio elastix / ours: %.2f (target > 1)\n", ratio);
@@ -136,6 +159,10 @@ void attach_bench_register(CLI::App& bench, CommandContext& ctx) {
       ->capture_default_str();
   sub->add_option("--window", args->ours.convergence_window, "ours: convergence window (iterations)")
       ->check(CLI::Range(3, 100))->capture_default_str();
+  sub->add_flag("--same-seed", args->same_seed, "every run samples alike: the spread is then non-determinism");
+  sub->add_option("--threads", args->ours.threads, "ours: threads (0 = the default)")
+      ->check(CLI::Range(0, 64))
+      ->capture_default_str();
   sub->add_option("--levels", args->ours.levels, "ours: resolution levels")->check(CLI::Range(1, 5))->capture_default_str();
   sub->callback([args, &ctx] { run_register_bench(*args, ctx); });
 }

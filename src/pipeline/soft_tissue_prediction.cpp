@@ -34,6 +34,17 @@ struct Solved {
   int iterations = 0;
 };
 
+// The local iterations stop at their sweep limit with points still moving: that face is not
+// the model's answer, so it is an error naming the model and how far from rest it was.
+void require_at_rest(const softtissue::LocalIterationResult& result, const softtissue::LocalIterationOptions& options,
+                     const char* model) {
+  if (result.status == softtissue::IterationStatus::kConverged) return;
+  throw Error(ErrorCode::kProcessing, model,
+              "did not come to rest: after " + std::to_string(result.iterations) + " sweeps a point still moved " +
+                  std::to_string(result.last_max_move_mm) + " mm per sweep (threshold " +
+                  std::to_string(options.gradient_threshold_mm) + " mm)");
+}
+
 Solved solve(const softtissue::TetMesh& mesh, const softtissue::BoundaryConditions& bc, const SoftTissueOptions& o,
              double& assembly_seconds) {
   auto start = Clock::now();
@@ -53,6 +64,7 @@ Solved solve(const softtissue::TetMesh& mesh, const softtissue::BoundaryConditio
     const auto model = softtissue::make_van_gelder_model(mesh, o.young_modulus_mpa);
     assembly_seconds = seconds_since(start);
     auto result = softtissue::solve_mass_spring(model, bc, local);
+    require_at_rest(result, local, "mass-spring model");
     return {result.displacement, result.iterations};
   }
   const auto blocks = softtissue::assemble_stiffness_blocks(mesh, material);
@@ -66,6 +78,7 @@ Solved solve(const softtissue::TetMesh& mesh, const softtissue::BoundaryConditio
   const auto model = softtissue::make_mass_tensor_model(blocks);
   assembly_seconds = seconds_since(start);
   auto result = softtissue::solve_mass_tensor(model, bc, local);
+  require_at_rest(result, local, "mass tensor model");
   return {result.displacement, result.iterations};
 }
 

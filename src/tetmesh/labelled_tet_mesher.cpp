@@ -109,6 +109,10 @@ softtissue::TetMesh to_tet_mesh(const Complex& complex, const VolumeGeometry& g,
 
 }  // namespace
 
+// Each attempt re-meshes with cells grown by the cube root of the overshoot, which lands within
+// a few percent of the budget in one or two attempts; six bound the loop.
+constexpr int kMaxAttempts = 6;
+
 TetMeshingResult mesh_label(const LabelVolume& volume, uint8_t label, const TetMeshingOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   const Crop crop = crop_around(volume, label);
@@ -122,7 +126,10 @@ TetMeshingResult mesh_label(const LabelVolume& volume, uint8_t label, const TetM
     Complex complex = run_mesh_3(domain, options, result.cell_size_mm);
     ++result.attempts;
     const auto cells = int(complex.number_of_cells_in_complex());
-    if (cells <= options.max_tets || result.attempts >= 6) {
+    if (cells <= options.max_tets || result.attempts >= kMaxAttempts) {
+      if (cells > options.max_tets)  // said, with the numbers: the caller asked for a budget
+        log::warning("tet mesh: ", cells, " tetrahedra after ", result.attempts, " attempts, over the budget of ",
+                     options.max_tets, " (cell size ", result.cell_size_mm, " mm)");
       result.mesh = to_tet_mesh(complex, volume.geometry, crop);
       break;
     }
