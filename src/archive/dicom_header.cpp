@@ -3,6 +3,7 @@
 #include <dcmtk/config/osconfig.h>
 #include <dcmtk/dcmdata/dccodec.h>
 #include <dcmtk/dcmdata/dcdatset.h>
+#include <dcmtk/dcmdata/dcobject.h>
 #include <dcmtk/dcmdata/dcdeftag.h>
 #include <dcmtk/dcmdata/dcfilefo.h>
 #include <dcmtk/dcmdata/dcistrmb.h>
@@ -110,6 +111,10 @@ void initialise_dicom_toolkit() {
   static std::once_flag once;
   std::call_once(once, [] {
     OFLog::configure(OFLogger::FATAL_LOG_LEVEL);
+    // The end of the file meta group is where its elements end (as dicom_structure.h finds it),
+    // not where (0002,0000) claims: a damaged group length sent DCMTK reading the data set as
+    // meta elements and allocating gigabytes (a fuzzing finding).
+    dcmIgnoreFileMetaInformationGroupLength.set(OFTrue);
     DJDecoderRegistration::registerCodecs();
     DJLSDecoderRegistration::registerCodecs();
     DcmRLEDecoderRegistration::registerCodecs();

@@ -159,7 +159,9 @@ void read_pixels(const Reading& r, DicomSlice& slice, const std::string& photome
   DcmElement* element = nullptr;
   if (r.dataset.findAndGetElement(DCM_PixelData, element).bad() || element == nullptr)
     r.fail(ErrorCode::kMissingAttribute, "Pixel Data is missing");
-  auto* pixel_data = static_cast<DcmPixelData*>(element);
+  // A damaged VR makes DCMTK read (7FE0,0010) as some other kind of element.
+  auto* pixel_data = dynamic_cast<DcmPixelData*>(element);
+  if (pixel_data == nullptr) r.fail(ErrorCode::kNotDicom, "Pixel Data (7FE0,0010) is not encoded as pixel data");
   const size_t count = size_t(slice.rows) * slice.columns;
   check_frame_size(r, *pixel_data, count * (layout.bits_allocated / 8));
   std::vector<uint8_t> frame(count * (layout.bits_allocated / 8) + 1);  // even size for DCMTK
@@ -184,11 +186,14 @@ void read_pixels(const Reading& r, DicomSlice& slice, const std::string& photome
 }  // namespace
 
 DicomSlice read_dicom_slice(const std::filesystem::path& path) {
-  register_decoders_once();
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error))
     throw Error(ErrorCode::kFileNotFound, path.string(), "no such file");
-  const std::vector<std::byte> bytes = read_file(path);
+  return decode_dicom_slice(read_file(path), path);
+}
+
+DicomSlice decode_dicom_slice(std::span<const std::byte> bytes, const std::filesystem::path& path) {
+  register_decoders_once();
   check_dicom_structure(bytes, path);  // lengths and nesting checked before DCMTK reads them
   DcmInputBufferStream stream;
   stream.setBuffer(bytes.data(), static_cast<offile_off_t>(bytes.size()));

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -45,5 +46,8 @@ struct DicomSlice {
 // Reads and decodes one file. Throws Error naming `path`: FileNotFound, NotDicom,
 // MissingAttribute, UnsupportedSyntax, BadValue (e.g. pixel data shorter than rows*columns).
 DicomSlice read_dicom_slice(const std::filesystem::path& path);
+
+// The same, for a file already in memory; `path` only names it in errors.
+DicomSlice decode_dicom_slice(std::span<const std::byte> bytes, const std::filesystem::path& path);
 
 }  // namespace maxillo

@@ -7,21 +7,19 @@
 #include <vtkLogger.h>
 #include <vtkPointData.h>
 #include <vtkOutputWindow.h>
-#include <vtkPLYReader.h>
 #include <vtkPLYWriter.h>
-#include <vtkSTLReader.h>
 #include <vtkSTLWriter.h>
 #include <vtkXMLPolyDataReader.h>
 #include <vtkXMLPolyDataWriter.h>
 
 #include <algorithm>
 #include <cctype>
-#include <cstdint>
-#include <cstring>
 #include <system_error>
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "mesh/ply_file.h"
+#include "mesh/stl_file.h"
 #include "mesh/vtk_bridge.h"
 
 namespace maxillo {
@@ -103,29 +101,13 @@ TriangleMesh run_reader(const std::filesystem::path& path) {
   return mesh;
 }
 
-bool looks_like_text(const std::vector<std::byte>& bytes) {
-  for (std::byte b : bytes) {
-    const auto c = std::to_integer<unsigned char>(b);
-    if (c >= 0x7F || (c < 0x20 && c != '\n' && c != '\r' && c != '\t')) return false;
-  }
-  return true;
-}
-
-// VTK's STL reader takes anything: it reads random bytes as a binary STL of garbage triangles.
-// A binary STL is exactly 84 + 50 n bytes for the n triangles its header declares; an ASCII
-// one is text beginning with "solid".
-void require_stl_layout(const std::filesystem::path& path) {
-  const std::vector<std::byte> bytes = read_file(path);
-  const bool starts_solid = bytes.size() >= 5 && std::memcmp(bytes.data(), "solid", 5) == 0;
-  if (starts_solid && looks_like_text(bytes)) return;
-  if (bytes.size() < 84) throw Error(ErrorCode::kBadValue, path.string(), "not an STL file (shorter than its header)");
-  uint32_t triangles = 0;
-  std::memcpy(&triangles, bytes.data() + 80, 4);  // little endian, as the format and x86 are
-  const uint64_t expected = 84 + 50 * uint64_t(triangles);
-  if (expected != bytes.size())
-    throw Error(ErrorCode::kBadValue, path.string(),
-                "not an STL file: a binary STL of " + std::to_string(triangles) + " triangles is " +
-                    std::to_string(expected) + " bytes, this file " + std::to_string(bytes.size()));
+// Our own parsers for the formats that come from outside (scanners, other planning tools):
+// VTK's accept garbage (STL) or crash on it (PLY). Both are checked the same way afterwards.
+TriangleMesh read_with(TriangleMesh (*parse)(std::span<const std::byte>, const std::string&),
+                       const std::filesystem::path& path) {
+  TriangleMesh mesh = parse(read_file(path), path.string());
+  if (mesh.face_count() == 0) throw Error(ErrorCode::kBadValue, path.string(), "no triangles in the file");
+  return mesh;
 }
 
 }  // namespace
@@ -181,8 +163,8 @@ TriangleMesh read_mesh(const std::filesystem::path& path) {
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error)) throw Error(ErrorCode::kFileNotFound, path.string(), "no such file");
   switch (format) {
-    case MeshFormat::Stl: require_stl_layout(path); return run_reader<vtkSTLReader>(path);
-    case MeshFormat::Ply: return run_reader<vtkPLYReader>(path);
+    case MeshFormat::Stl: return read_with(parse_stl, path);
+    case MeshFormat::Ply: return read_with(parse_ply, path);
     case MeshFormat::Obj: return run_reader<vtkOBJReader>(path);
     case MeshFormat::Vtp: return run_reader<vtkXMLPolyDataReader>(path);
   }

@@ -1,7 +1,7 @@
 #pragma once
 // Mesh files, format chosen by extension (case-insensitive):
-//   .stl  binary STL (vertices are merged on reading)
-//   .ply  binary little-endian PLY
+//   .stl  binary STL written; binary or ASCII read (stl_file.h: vertices merged)
+//   .ply  binary little-endian PLY written; ASCII or binary read (ply_file.h)
 //   .obj  Wavefront OBJ (text; v and f records)
 //   .vtp  VTK XML PolyData (binary, compressed)
 // Coordinates are written as they are (patient LPS mm for maxillo surfaces); no unit or frame
