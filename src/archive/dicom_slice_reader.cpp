@@ -12,32 +12,20 @@
 #include <dcmtk/dcmdata/dcfilefo.h>
 #include <dcmtk/dcmdata/dcistrmb.h>
 #include <dcmtk/dcmdata/dcpixel.h>
-#include <dcmtk/dcmdata/dcrledrg.h>
 #include <dcmtk/dcmdata/dcxfer.h>
-#include <dcmtk/dcmjpeg/djdecode.h>
-#include <dcmtk/dcmjpls/djdecode.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
-#include <mutex>
 
+#include "archive/dicom_header.h"
 #include "archive/dicom_structure.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 
 namespace maxillo {
 namespace {
-
-void register_decoders_once() {
-  static std::once_flag once;
-  std::call_once(once, [] {
-    DJDecoderRegistration::registerCodecs();
-    DJLSDecoderRegistration::registerCodecs();
-    DcmRLEDecoderRegistration::registerCodecs();
-  });
-}
 
 struct Reading {
   const std::filesystem::path& path;
@@ -193,7 +181,7 @@ DicomSlice read_dicom_slice(const std::filesystem::path& path) {
 }
 
 DicomSlice decode_dicom_slice(std::span<const std::byte> bytes, const std::filesystem::path& path) {
-  register_decoders_once();
+  initialise_dicom_toolkit();  // decoders, and DCMTK told how we read the file meta group
   check_dicom_structure(bytes, path);  // lengths and nesting checked before DCMTK reads them
   DcmInputBufferStream stream;
   stream.setBuffer(bytes.data(), static_cast<offile_off_t>(bytes.size()));

@@ -150,6 +150,10 @@ TEST_F(ValidationEndToEnd, ValidateFindsTheKnownAnswerAndNightlySummarisesEveryC
   EXPECT_NE(first.out.find("1 validated, 1 up to date, 0 failed"), std::string::npos) << first.out;
   const auto pdf = dir_ / "night" / "validation-summary.pdf";
   ASSERT_TRUE(std::filesystem::exists(pdf));
+  // Issue 14: the log names the report a reader opens, not a temporary file.
+  EXPECT_NE(first.err.find("validation-summary.pdf"), std::string::npos) << first.err;
+  EXPECT_EQ(first.err.find(".partial"), std::string::npos) << first.err;
+  EXPECT_EQ(first.err.find(".tmp-"), std::string::npos) << first.err;
   const std::string text = testing::pdf_text(pdf);
   for (const char* needle : {"Validation summary", "case 1", "case 2", "lower lip", "Error map", "Mid-sagittal"})
     EXPECT_NE(text.find(needle), std::string::npos) << needle;
