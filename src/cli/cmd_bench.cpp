@@ -110,6 +110,7 @@ void attach_bench_cube(CLI::App& bench, CommandContext& ctx);  // cmd_bench_cube
 void attach_bench_occlusion(CLI::App& bench, CommandContext& ctx);  // cmd_bench_occlusion.cpp
 void attach_bench_face(CLI::App& bench, CommandContext& ctx);       // cmd_bench_face.cpp
 void attach_bench_register(CLI::App& bench, CommandContext& ctx);   // cmd_bench_register.cpp
+void attach_bench_surfaces(CLI::App& bench, CommandContext& ctx);   // cmd_bench_surfaces.cpp
 
 void attach_bench(CLI::App& app, CommandContext& ctx) {
   app.require_subcommand(1);
@@ -123,6 +124,7 @@ void attach_bench(CLI::App& app, CommandContext& ctx) {
   attach_bench_occlusion(app, ctx);
   attach_bench_face(app, ctx);
   attach_bench_register(app, ctx);
+  attach_bench_surfaces(app, ctx);
 }
 
 }  // namespace maxillo::cli

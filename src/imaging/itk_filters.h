@@ -1,6 +1,6 @@
 #pragma once
-// Internal to src/imaging: the ITK operations segmentation and volume files need, on plain
-// buffers. The ITK translation units (itk_filters.cpp, itk_volume_io.cpp) include this header
+// Internal to src/imaging: the ITK operations volume files and registration need, on plain
+// buffers. The ITK translation units (itk_volume_io.cpp, itk_registration.cpp) include this header
 // and ITK only, never Eigen: ITK 5.2 bundles its own Eigen 3.3 whose include guards collide
 // with the system Eigen 3.4 that maxillo uses.
 #include <array>
@@ -8,23 +8,13 @@
 #include <string>
 #include <vector>
 
+#include "imaging/mask_grid.h"
+
 namespace maxillo::itk_filters {
 
 // A regular grid, x fastest: index = i + size[0] * (j + size[1] * k).
-struct Grid {
-  std::array<size_t, 3> size{};
-  std::array<double, 3> spacing{1, 1, 1};  // mm
-};
-using Mask = std::vector<uint8_t>;  // 0 / 1 per voxel
-
-// 6-connected components.
-Mask largest_component(const Mask& mask, const Grid& grid);
-Mask components_of_at_least(const Mask& mask, const Grid& grid, int64_t min_voxels);
-// Ball-shaped structuring element of radius_mm (at least one voxel along each axis).
-Mask opened(const Mask& mask, const Grid& grid, double radius_mm);
-Mask dilated(const Mask& mask, const Grid& grid, double radius_mm);
-// Background regions not connected to the border of the grid become foreground.
-Mask holes_filled(const Mask& mask, const Grid& grid);
+using Grid = MaskGrid;
+using maxillo::Mask;
 
 struct RawVolume {
   Grid grid;

@@ -1,5 +1,7 @@
 #include "pipeline/case_surfaces.h"
 
+#include <chrono>
+
 #include "core/log.h"
 #include "imaging/volume_assembly.h"
 #include "pipeline/archived_series.h"
@@ -17,24 +19,35 @@ Json surface_json(const SurfaceOptions& o) {
           {"min_component_fraction", o.min_component_fraction},
           {"smoothing_iterations", o.smoothing_iterations},
           {"smoothing_passband", o.smoothing_passband},
-          {"target_triangles", o.target_triangles}};
-}
-
-// Skin: the body mask's boundary (head rest and table removed by the segmentation), drawn
-// through the CT's own sub-voxel values. Bone: all bone including teeth.
-CaseSurfaces extract_case_surfaces(const Volume& volume, const SurfaceRecipe& recipe) {
-  auto labels = segment_tissues(volume, recipe.segmentation);
-  CaseSurfaces surfaces;
-  auto body = select_labels(labels, kSoftTissue, kTeeth);
-  surfaces.skin = extract_surface(restrict_to_mask(volume, body, recipe.segmentation.skin_hu),
-                                  recipe.segmentation.skin_hu, recipe.skin);
-  auto bone = select_labels(labels, kBone, kTeeth);
-  surfaces.bone = extract_surface(restrict_to_mask(volume, bone, recipe.segmentation.bone_hu),
-                                  recipe.segmentation.bone_hu, recipe.bone);
-  return surfaces;
+          {"target_triangles", o.target_triangles},
+          {"grid", o.grid == SurfaceGrid::Native ? "native" : "for-budget"}};
 }
 
 }  // namespace
+
+// Skin: the body mask's boundary (head rest and table removed by the segmentation), drawn
+// through the CT's own sub-voxel values. Bone: all bone including teeth.
+CaseSurfaces extract_case_surfaces(const Volume& volume, const SurfaceRecipe& recipe, SurfaceTimes* times) {
+  SurfaceTimes spent;
+  auto clock = std::chrono::steady_clock::now();
+  auto lap = [&clock] {
+    const auto now = std::chrono::steady_clock::now();
+    const double seconds = std::chrono::duration<double>(now - clock).count();
+    clock = now;
+    return seconds;
+  };
+  const auto labels = segment_tissues(volume, recipe.segmentation);
+  spent.segmentation = lap();
+  CaseSurfaces surfaces;
+  surfaces.skin = extract_surface(restrict_to_mask(volume, select_labels(labels, kSoftTissue, kTeeth), recipe.segmentation.skin_hu),
+                                  recipe.segmentation.skin_hu, recipe.skin);
+  spent.skin = lap();
+  surfaces.bone = extract_surface(restrict_to_mask(volume, select_labels(labels, kBone, kTeeth), recipe.segmentation.bone_hu),
+                                  recipe.segmentation.bone_hu, recipe.bone);
+  spent.bone = lap();
+  if (times) *times = spent;
+  return surfaces;
+}
 
 Json SurfaceRecipe::to_json() const {
   return {{"segmentation",

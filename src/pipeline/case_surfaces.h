@@ -27,6 +27,14 @@ struct CaseSurfaces {
   bool reused = false;  // true when both came from the archive
 };
 
+// Seconds each step of extract_case_surfaces took.
+struct SurfaceTimes {
+  double segmentation = 0, skin = 0, bone = 0;
+};
+
+// The surfaces of a volume, computed (no archive): segmentation, then skin and bone.
+CaseSurfaces extract_case_surfaces(const Volume& volume, const SurfaceRecipe& recipe = {}, SurfaceTimes* times = nullptr);
+
 // Surfaces of `series` (a CT series of the case). Throws what volume loading and
 // segmentation throw (Error naming the file or series).
 CaseSurfaces case_surfaces(Archive& archive, int64_t case_id, int64_t series, const SurfaceRecipe& recipe = {});

@@ -83,6 +83,7 @@ std::vector<planning::SegmentSurface> segment_bone_surfaces(const PlannedCase& p
   SurfaceOptions options;
   options.keep_largest_components = 0;  // a segment may be several pieces
   options.target_triangles = 80000;
+  options.grid = SurfaceGrid::Native;  // the fit's precision: every voxel of the bone's edge
   std::vector<planning::SegmentSurface> surfaces;
   for (const auto& stats : planned.cut.stats) {
     const bool fitted =

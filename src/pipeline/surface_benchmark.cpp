@@ -1,0 +1,47 @@
+#include "pipeline/surface_benchmark.h"
+
+#include <sys/resource.h>
+
+#include "mesh/mesh_measures.h"
+
+namespace maxillo::pipeline {
+namespace {
+
+SurfacePair pair_of(const CaseSurfaces& surfaces, const SurfaceTimes& times) {
+  return {times.skin, times.bone, surfaces.skin.face_count(), surfaces.bone.face_count(),
+          connected_components(surfaces.bone).face_counts.size()};
+}
+
+}  // namespace
+
+long peak_memory_kb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss;
+}
+
+SurfaceBenchmark benchmark_surfaces(const Volume& volume, double load_seconds, bool compare_native,
+                                    const SurfaceRecipe& recipe) {
+  SurfaceBenchmark result;
+  result.geometry = volume.geometry;
+  result.load_seconds = load_seconds;
+  SurfaceTimes times;
+  const CaseSurfaces surfaces = extract_case_surfaces(volume, recipe, &times);
+  result.segmentation_seconds = times.segmentation;
+  result.surfaces = pair_of(surfaces, times);
+  result.peak_memory_kb = peak_memory_kb();
+  if (!compare_native) return result;
+
+  SurfaceRecipe native_recipe = recipe;
+  native_recipe.skin.grid = native_recipe.bone.grid = SurfaceGrid::Native;
+  SurfaceTimes native_times;
+  const CaseSurfaces native = extract_case_surfaces(volume, native_recipe, &native_times);
+  NativeComparison comparison;
+  comparison.native = pair_of(native, native_times);
+  comparison.skin = validation::distance_statistics(validation::signed_surface_distances(surfaces.skin, native.skin));
+  comparison.bone = validation::distance_statistics(validation::signed_surface_distances(surfaces.bone, native.bone));
+  result.native = comparison;
+  return result;
+}
+
+}  // namespace maxillo::pipeline

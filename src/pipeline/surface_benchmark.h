@@ -1,0 +1,44 @@
+#pragma once
+// What `maxillo bench surfaces` measures (issue 16): a clinical-size volume through segmentation,
+// skin and bone, with seconds per stage and the process's peak memory; optionally the same
+// surfaces traced on the CT's own grid (SurfaceGrid::Native, the former path) for comparison:
+// their time, and how far the default surfaces lie from them.
+#include <optional>
+#include <string>
+
+#include "core/volume.h"
+#include "pipeline/case_surfaces.h"
+#include "validation/distance_statistics.h"
+
+namespace maxillo::pipeline {
+
+struct SurfacePair {
+  double skin_seconds = 0, bone_seconds = 0;
+  int64_t skin_triangles = 0, bone_triangles = 0;
+  size_t bone_pieces = 0;
+};
+
+struct NativeComparison {
+  SurfacePair native;
+  // Signed distance of the default surfaces' vertices to the native ones (mm, + outside).
+  validation::DistanceStatistics skin, bone;
+};
+
+struct SurfaceBenchmark {
+  VolumeGeometry geometry;
+  double load_seconds = 0;  // reading or generating the volume
+  double segmentation_seconds = 0;
+  SurfacePair surfaces;
+  long peak_memory_kb = 0;  // of the process after the default path (before any comparison)
+  std::optional<NativeComparison> native;
+};
+
+// Runs the default path on `volume` (already loaded, in load_seconds), then the native one when
+// asked. The recipe is the one case_surfaces uses.
+SurfaceBenchmark benchmark_surfaces(const Volume& volume, double load_seconds, bool compare_native,
+                                    const SurfaceRecipe& recipe = {});
+
+// Peak resident memory of this process so far, kB (getrusage).
+long peak_memory_kb();
+
+}  // namespace maxillo::pipeline
