@@ -27,26 +27,26 @@ struct RigidMap {
   std::array<double, 3> centre{};
 };
 
+using Samples = std::vector<std::array<double, 3>>;  // LPS mm, in the order the metric sums them
+
 struct Settings {
-  int levels = 3;                  // pyramid of 2x2x2 block means: 2^(levels-1) ... 1
+  std::vector<Samples> samples;     // per pyramid level, [0] = full resolution; their number = the levels
   int histogram_bins = 32;
-  double sampling_fraction = 0.01; // of the full-resolution voxels; f^2 times that on a level shrunk by f
+  double low = -1000, high = 2000;  // both CTs clamped to [low, high], the histograms' range
   int max_iterations_per_level = 200;
-  double fine_convergence = 1e-6;   // full resolution: stop when the metric's normalised slope over
-  int fine_window = 6;              // the last fine_window iterations falls below this
-  double coarse_convergence = 1e-3; // the same on the shrunk levels (they only need to get close)
-  bool regular_sampling = true;     // samples on a jittered regular grid instead of at random
-  uint32_t seed = 1;
-  int threads = 0;  // 0 = ITK's default
-  const itk_filters::Mask* fixed_mask = nullptr;  // on the fixed grid; null = whole image
-  RigidMap initial;                                // fixed -> moving
+  double fine_step_mm = 1e-4;       // full resolution: stop when `window` steps in a row each moved the
+                                    // fixed domain's corners by less than this
+  double coarse_convergence = 1e-3; // shrunk levels (they only need to get close): stop when the metric's
+  int window = 3;                   // normalised slope over the last `window` iterations falls below this
+  int threads = 0;  // 0 = ITK's default; the answer does not depend on it
+  RigidMap initial;                 // fixed -> moving
 };
 
 struct Outcome {
   RigidMap fixed_to_moving;
   double metric = 0;  // Mattes mutual information, negated (lower is better)
   int iterations = 0;  // over all levels
-  int last_level_iterations = 0;  // on the finest level (== the limit: not converged)
+  bool converged = true;  // false: the finest level stopped at max_iterations_per_level
 };
 
 // Throws maxillo::Error(kProcessing, "registration", reason) when ITK fails.

@@ -11,6 +11,7 @@
 
 #include "core/error.h"
 #include "imaging/itk_registration.h"
+#include "imaging/registration_samples.h"
 
 namespace maxillo {
 namespace {
@@ -220,24 +221,29 @@ RigidRegistrationResult register_rigid(const Volume& fixed, const Volume& moving
 
   const Eigen::Isometry3d initial =
       options.initial.isApprox(Eigen::Isometry3d::Identity()) ? centroid_start(fixed, moving, box) : options.initial;
-  itk_registration::Settings settings;
-  settings.levels = std::max(1, options.levels);
-  settings.histogram_bins = options.histogram_bins;
-  settings.sampling_fraction = options.sampling_fraction;
-  settings.max_iterations_per_level = options.max_iterations_per_level;
-  settings.fine_convergence = options.convergence;
-  settings.fine_window = options.convergence_window;
-  settings.coarse_convergence = options.coarse_convergence;
-  settings.regular_sampling = options.regular_sampling;
-  settings.seed = options.seed;
-  settings.threads = options.threads;
   keep_informative_voxels(fixed, mask);
-  settings.fixed_mask = &mask;
+  itk_registration::Settings settings;
+  // Level l has voxels 2^l times the CT's; the same seed gives each level its own pattern.
+  for (int level = 0; level < std::max(1, options.levels); ++level)
+    settings.samples.push_back(metric_samples(
+        fixed.geometry, mask,
+        {.fraction = options.sampling_fraction,
+         .level_factor = 1 << level,
+         .pattern = options.regular_sampling ? SamplePattern::kJitteredGrid : SamplePattern::kRandom,
+         .seed = options.seed}));
+  settings.histogram_bins = options.histogram_bins;
+  settings.low = options.intensity_low;
+  settings.high = options.intensity_high;
+  settings.max_iterations_per_level = options.max_iterations_per_level;
+  settings.fine_step_mm = options.convergence;
+  settings.window = options.convergence_window;
+  settings.coarse_convergence = options.coarse_convergence;
+  settings.threads = options.threads;
   settings.initial = to_itk_map(initial, 0.5 * (box.min + box.max));
 
   const itk_registration::Outcome outcome =
       itk_registration::register_rigid(to_plain_image(fixed), to_plain_image(moving), settings);
-  if (outcome.last_level_iterations >= settings.max_iterations_per_level)
+  if (!outcome.converged)
     throw Error(ErrorCode::kProcessing, "registration",
                 "did not converge: the finest level used all " + std::to_string(settings.max_iterations_per_level) +
                     " iterations (the CTs may not overlap, or the start is too far off)");
