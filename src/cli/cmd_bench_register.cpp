@@ -150,17 +150,17 @@ void attach_bench_register(CLI::App& bench, CommandContext& ctx) {
   sub->add_flag("!--no-elastix", args->elastix, "run only ours");
   sub->add_option("--sampling-fraction", args->ours.sampling_fraction, "ours: fraction of each level's voxels sampled")
       ->check(CLI::Range(1e-4, 1.0))->capture_default_str();
-  sub->add_option("--convergence", args->ours.convergence, "ours: convergence threshold at full resolution")
+  sub->add_option("--convergence", args->ours.convergence, "ours: full resolution stops when the last --window steps each moved the image less than this (mm)")
       ->check(CLI::Range(1e-12, 1.0))->capture_default_str();
-  sub->add_option("--coarse-convergence", args->ours.coarse_convergence, "ours: convergence threshold, shrunk levels")
+  sub->add_option("--coarse-convergence", args->ours.coarse_convergence, "ours: shrunk levels stop when the metric's normalised slope over the window falls below this")
       ->check(CLI::Range(1e-12, 1.0))->capture_default_str();
   sub->add_flag("!--random-sampling", args->ours.regular_sampling, "ours: random samples instead of a jittered grid");
   sub->add_option("--bins", args->ours.histogram_bins, "ours: Mattes histogram bins")->check(CLI::Range(8, 256))
       ->capture_default_str();
-  sub->add_option("--window", args->ours.convergence_window, "ours: convergence window (iterations)")
+  sub->add_option("--window", args->ours.convergence_window, "ours: convergence window (steps)")
       ->check(CLI::Range(3, 100))->capture_default_str();
   sub->add_flag("--same-seed", args->same_seed, "every run samples alike: the spread is then non-determinism");
-  sub->add_option("--threads", args->ours.threads, "ours: threads (0 = the default)")
+  sub->add_option("--threads", args->ours.threads, "ours: threads (0 = one per core; the answer is the same)")
       ->check(CLI::Range(0, 64))
       ->capture_default_str();
   sub->add_option("--levels", args->ours.levels, "ours: resolution levels")->check(CLI::Range(1, 5))->capture_default_str();
