@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "core/log.h"
+#include "core/parallel_slabs.h"
 #include "imaging/volume_assembly.h"
 #include "pipeline/archived_series.h"
 #include "pipeline/derivation.h"
@@ -28,23 +29,24 @@ Json surface_json(const SurfaceOptions& o) {
 // Skin: the body mask's boundary (head rest and table removed by the segmentation), drawn
 // through the CT's own sub-voxel values. Bone: all bone including teeth.
 CaseSurfaces extract_case_surfaces(const Volume& volume, const SurfaceRecipe& recipe, SurfaceTimes* times) {
+  using Clock = std::chrono::steady_clock;
+  auto seconds_since = [](Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); };
   SurfaceTimes spent;
-  auto clock = std::chrono::steady_clock::now();
-  auto lap = [&clock] {
-    const auto now = std::chrono::steady_clock::now();
-    const double seconds = std::chrono::duration<double>(now - clock).count();
-    clock = now;
-    return seconds;
-  };
+  const auto started = Clock::now();
   const auto labels = segment_tissues(volume, recipe.segmentation);
-  spent.segmentation = lap();
+  spent.segmentation = seconds_since(started);
+  // Skin and bone read the same volume and labels and write nothing shared: they are traced at
+  // once, one per core, each into its own mesh (same result as one after the other).
   CaseSurfaces surfaces;
-  surfaces.skin = extract_surface(restrict_to_mask(volume, select_labels(labels, kSoftTissue, kTeeth), recipe.segmentation.skin_hu),
-                                  recipe.segmentation.skin_hu, recipe.skin);
-  spent.skin = lap();
-  surfaces.bone = extract_surface(restrict_to_mask(volume, select_labels(labels, kBone, kTeeth), recipe.segmentation.bone_hu),
-                                  recipe.segmentation.bone_hu, recipe.bone);
-  spent.bone = lap();
+  auto trace = [&](TriangleMesh& mesh, double& seconds, double hu, const SurfaceOptions& options, uint8_t tissue) {
+    const auto start = Clock::now();
+    mesh = extract_surface(restrict_to_mask(volume, select_labels(labels, tissue, kTeeth), hu), hu, options);
+    seconds = seconds_since(start);
+  };
+  const auto& seg = recipe.segmentation;
+  run_concurrently({[&] { trace(surfaces.skin, spent.skin, seg.skin_hu, recipe.skin, kSoftTissue); },
+                    [&] { trace(surfaces.bone, spent.bone, seg.bone_hu, recipe.bone, kBone); }});
+  spent.total = seconds_since(started);
   if (times) *times = spent;
   return surfaces;
 }

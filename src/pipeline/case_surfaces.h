@@ -27,9 +27,10 @@ struct CaseSurfaces {
   bool reused = false;  // true when both came from the archive
 };
 
-// Seconds each step of extract_case_surfaces took.
+// Seconds each step of extract_case_surfaces took; skin and bone run at the same time, so the
+// total (wall clock) is about segmentation + the longer of the two on a machine with two cores.
 struct SurfaceTimes {
-  double segmentation = 0, skin = 0, bone = 0;
+  double segmentation = 0, skin = 0, bone = 0, total = 0;
 };
 
 // The surfaces of a volume, computed (no archive): segmentation, then skin and bone.

@@ -7,6 +7,7 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/log.h"
+#include "core/parallel_slabs.h"
 #include "core/sha256.h"
 #include "imaging/segmentation.h"
 #include "imaging/volume_assembly.h"
@@ -85,15 +86,21 @@ std::vector<planning::SegmentSurface> segment_bone_surfaces(const PlannedCase& p
   options.target_triangles = 80000;
   options.grid = SurfaceGrid::Native;  // the fit's precision: every voxel of the bone's edge
   std::vector<planning::SegmentSurface> surfaces;
-  for (const auto& stats : planned.cut.stats) {
-    const bool fitted =
-        stats.segment == planning::Segment::kCranium || planned.planned_moves.count(uint8_t(stats.segment)) > 0;
-    if (!fitted) continue;
-    LabelVolume mask{planned.cut.segments.geometry, planned.cut.segments.labels};
-    for (auto& label : mask.labels) label = label == uint8_t(stats.segment);
-    surfaces.push_back(
-        {stats.segment, extract_surface(restrict_to_mask(planned.preop_ct, mask, bone_hu), bone_hu, options)});
-  }
+  for (const auto& stats : planned.cut.stats)
+    if (stats.segment == planning::Segment::kCranium || planned.planned_moves.count(uint8_t(stats.segment)) > 0)
+      surfaces.push_back({stats.segment, {}});
+  // One segment per thread, each into its own slot.
+  for_each_slab(
+      0, int(surfaces.size()),
+      [&](int first, int last) {
+        for (int s = first; s < last; ++s) {
+          auto& surface = surfaces[size_t(s)];
+          LabelVolume mask{planned.cut.segments.geometry, planned.cut.segments.labels};
+          for (auto& label : mask.labels) label = label == uint8_t(surface.segment);
+          surface.mesh = extract_surface(restrict_to_mask(planned.preop_ct, mask, bone_hu), bone_hu, options);
+        }
+      },
+      {.min_slab_size = 1});
   return surfaces;
 }
 

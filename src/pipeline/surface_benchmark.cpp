@@ -28,6 +28,7 @@ SurfaceBenchmark benchmark_surfaces(const Volume& volume, double load_seconds, b
   SurfaceTimes times;
   const CaseSurfaces surfaces = extract_case_surfaces(volume, recipe, &times);
   result.segmentation_seconds = times.segmentation;
+  result.total_seconds = times.total;
   result.surfaces = pair_of(surfaces, times);
   result.peak_memory_kb = peak_memory_kb();
   if (!compare_native) return result;

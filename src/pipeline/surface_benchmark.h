@@ -28,6 +28,7 @@ struct SurfaceBenchmark {
   VolumeGeometry geometry;
   double load_seconds = 0;  // reading or generating the volume
   double segmentation_seconds = 0;
+  double total_seconds = 0;  // wall clock of segmentation and both surfaces (traced at once)
   SurfacePair surfaces;
   long peak_memory_kb = 0;  // of the process after the default path (before any comparison)
   std::optional<NativeComparison> native;

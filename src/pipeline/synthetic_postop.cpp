@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "core/log.h"
+#include "core/parallel_slabs.h"
 #include "imaging/segmentation.h"
 #include "imaging/volume_resample.h"
 #include "mesh/surface_extraction.h"
@@ -214,12 +215,15 @@ SyntheticPostop make_synthetic_postop(const PlannedCase& planned, const Syntheti
   result.ct.geometry = planned.preop_ct.geometry;
   result.ct.hu.resize(size_t(result.ct.geometry.voxel_count()));
   const auto& g = result.ct.geometry;
-  for (int k = 0; k < g.size.z(); ++k)
-    for (int j = 0; j < g.size.y(); ++j)
-      for (int i = 0; i < g.size.x(); ++i) {
-        const Eigen::Vector3d y = result.postop_to_preop * g.world(Eigen::Vector3d(i, j, k));
-        result.ct.at(i, j, k) = int16_t(std::lround(std::clamp(voxels.hu(y), -1024.0, 3071.0)));
-      }
+  // Every voxel is computed on its own from read-only inputs: slabs of slices run in parallel.
+  for_each_slab(0, g.size.z(), [&](int k0, int k1) {
+    for (int k = k0; k < k1; ++k)
+      for (int j = 0; j < g.size.y(); ++j)
+        for (int i = 0; i < g.size.x(); ++i) {
+          const Eigen::Vector3d y = result.postop_to_preop * g.world(Eigen::Vector3d(i, j, k));
+          result.ct.at(i, j, k) = int16_t(std::lround(std::clamp(voxels.hu(y), -1024.0, 3071.0)));
+        }
+  });
   return result;
 }
 

@@ -2,6 +2,7 @@
 
 #include <deque>
 
+#include "core/parallel_slabs.h"
 #include "mesh/mesh_transform.h"
 #include "mesh/surface_extraction.h"
 
@@ -33,9 +34,17 @@ std::vector<SegmentSurface> segment_surfaces(const OsteotomyResult& cut, int64_t
   SurfaceOptions options;
   options.keep_largest_components = 0;  // a segment may be several pieces (nasal bones, rami)
   options.target_triangles = target_triangles;
-  std::vector<SegmentSurface> surfaces;
-  for (const auto& stats : cut.stats)
-    surfaces.push_back({stats.segment, extract_surface(cut.segments, uint8_t(stats.segment), options)});
+  // One segment per thread, each into its own slot: the same surfaces as one after the other.
+  std::vector<SegmentSurface> surfaces(cut.stats.size());
+  for_each_slab(
+      0, int(cut.stats.size()),
+      [&](int first, int last) {
+        for (int s = first; s < last; ++s) {
+          const Segment segment = cut.stats[size_t(s)].segment;
+          surfaces[size_t(s)] = {segment, extract_surface(cut.segments, uint8_t(segment), options)};
+        }
+      },
+      {.min_slab_size = 1});
   return surfaces;
 }
 

@@ -1,27 +1,13 @@
 #include "sample/phantom_voxelize.h"
 
+#include "core/parallel_slabs.h"
+
 #include <algorithm>
 #include <cmath>
 #include <random>
-#include <thread>
 
 namespace maxillo::sample {
 namespace {
-
-// Runs body(k_begin, k_end) on disjoint slabs of [k0, k1) in parallel.
-template <typename Body>
-void for_slabs(int k0, int k1, Body body) {
-  int count = k1 - k0;
-  if (count <= 0) return;
-  int threads = std::clamp(int(std::thread::hardware_concurrency()), 1, 8);
-  threads = std::min(threads, std::max(1, count / 8));
-  std::vector<std::thread> pool;
-  for (int t = 0; t < threads; ++t) {
-    int b = k0 + count * t / threads, e = k0 + count * (t + 1) / threads;
-    pool.emplace_back([=] { body(b, e); });
-  }
-  for (auto& th : pool) th.join();
-}
 
 void paint_part(const Part& part, PaintedGrid& grid) {
   const VolumeGeometry& g = grid.geometry;
@@ -32,7 +18,7 @@ void paint_part(const Part& part, PaintedGrid& grid) {
     last[axis] = std::min(g.size[axis] - 1, int(std::floor(std::max(lo[axis], hi[axis]))));
     if (first[axis] > last[axis]) return;
   }
-  for_slabs(first.z(), last.z() + 1, [&](int k0, int k1) {
+  for_each_slab(first.z(), last.z() + 1, [&](int k0, int k1) {
     for (int k = k0; k < k1; ++k)
       for (int j = first.y(); j <= last.y(); ++j)
         for (int i = first.x(); i <= last.x(); ++i) {
@@ -101,7 +87,7 @@ void blur_axis(std::vector<float>& values, const VolumeGeometry& g, int axis) {
     float right = c < n[axis] - 1 ? values[v + stride] : values[v];
     out[v] = 0.25f * left + 0.5f * values[v] + 0.25f * right;
   };
-  for_slabs(0, n.z(), [&](int k0, int k1) {
+  for_each_slab(0, n.z(), [&](int k0, int k1) {
     for (int k = k0; k < k1; ++k)
       for (int j = 0; j < n.y(); ++j)
         for (int i = 0; i < n.x(); ++i) line(i, j, k);
@@ -113,7 +99,7 @@ void blur_axis(std::vector<float>& values, const VolumeGeometry& g, int axis) {
 // so the result does not depend on the number of threads.
 void add_noise(std::vector<float>& values, const VolumeGeometry& g, double sigma, uint32_t seed) {
   const int64_t slice = int64_t(g.size.x()) * g.size.y();
-  for_slabs(0, g.size.z(), [&](int k0, int k1) {
+  for_each_slab(0, g.size.z(), [&](int k0, int k1) {
     for (int k = k0; k < k1; ++k) {
       std::mt19937_64 random(uint64_t(seed) * 0x9E3779B97F4A7C15ull + uint64_t(k));
       const double to_unit = 1.0 / 18446744073709551616.0;  // 2^-64
