@@ -7,9 +7,8 @@
 // region above the iso-value.
 //
 // Pipeline: block means for the budget (SurfaceGrid) -> pad -> vtkFlyingEdges3D in index*spacing space -> keep the largest components ->
-// vtkWindowedSincPolyDataFilter -> vtkDecimatePro (topology kept) -> direction matrix + origin -> orient.
-// Cost on the 256x256x113 cadaver head at 1x1x2 mm, 200k triangles: skin ~3 s, bone ~5-7 s on
-// a busy 2-core machine (tests/imaging/cthead_test.cpp prints it).
+// vtkWindowedSincPolyDataFilter -> quadric edge collapse (mesh/quadric_decimation.h, topology kept) ->
+// direction matrix + origin -> orient. `maxillo bench surfaces` gives the cost of each step.
 #include <cstdint>
 
 #include "core/triangle_mesh.h"
