@@ -84,8 +84,9 @@ class CandidateBuckets {
   static constexpr int kPerOctave = 8, kOctaves = 96, kLowestOctave = -64;  // 2^-64 .. 2^32 mm^4
   static size_t bucket(double cost) {
     if (!(cost > 0)) return 0;
-    const int b = int(std::floor(kPerOctave * (std::log2(cost) - kLowestOctave))) + 1;
-    return size_t(std::clamp(b, 1, kPerOctave * kOctaves - 1));
+    // Clamped as a double first: an infinite cost must not reach the conversion to int.
+    const double b = std::floor(kPerOctave * (std::log2(cost) - kLowestOctave)) + 1;
+    return size_t(std::clamp(b, 1.0, double(kPerOctave * kOctaves - 1)));
   }
   std::vector<std::vector<Candidate>> buckets_ = std::vector<std::vector<Candidate>>(kPerOctave * kOctaves);
   size_t lowest_ = buckets_.size();
