@@ -33,6 +33,10 @@ struct SyntheticPostopOptions {
   double reposition_deg = 2.0;      // the head turned about the scanner's vertical axis ...
   double reposition_mm = 3.0;       // ... and shifted along each axis, in the post-operative scan
   SoftTissueOptions soft_tissue;    // the model whose prediction the "real" face starts from
+  int skin_block_voxels = 4;        // the CT is filled in cubes of this many voxels a side; one distance query
+                                    // at a cube's centre settles every voxel of it that is far from the skin
+                                    // (1: a query per voxel; the same CT wherever the moved skin does not
+                                    // pass through itself)
 };
 
 struct SyntheticPostop {
