@@ -61,8 +61,12 @@ vtkSmartPointer<vtkRenderer> build_scene_renderer(const Scene& scene, const Rend
 
   if (has_translucency(scene)) {
     renderer->SetUseDepthPeeling(true);
-    renderer->SetMaximumNumberOfPeels(12);
-    renderer->SetOcclusionRatio(0.0);  // exact peeling: results independent of timing
+    // Each peel draws every translucent mesh again, and llvmpipe draws on the CPU. On the demo's plan views
+    // (translucent skull, segments and their ghosts) 6 peels differ from 12 by at most 0.008 grey levels on average
+    // (13 of 255 at worst, on fewer than 0.005 % of the values) and save 2.5 s of a 12 s `plan apply`; 3 peels
+    // would differ by 0.24 on average.
+    renderer->SetMaximumNumberOfPeels(6);
+    renderer->SetOcclusionRatio(0.0);  // peel to the limit, never stop on a timing-dependent count
   }
   renderer->SetUseFXAA(true);  // smooth silhouettes (single-sample buffer, see OffscreenContext)
   return renderer;
