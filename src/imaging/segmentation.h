@@ -33,6 +33,8 @@ struct SegmentationOptions {
   double teeth_hu = 1500;
   double headrest_gap_mm = 3;        // opening radius (step 2 above); 0 disables the opening
   double min_bone_island_mm3 = 200;  // smaller bone pieces are noise, metal streaks or debris
+
+  bool operator==(const SegmentationOptions&) const = default;
 };
 
 // One label per voxel (TissueLabel values), same geometry as `volume`.

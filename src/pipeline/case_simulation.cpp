@@ -149,7 +149,9 @@ SimulationResult simulate_case(Archive& archive, int64_t case_id, const Simulati
   for (const auto& s : cut.stats) log::info("bone segment ", planning::segment_name(s.segment), ": ", s.volume_ml, " ml");
 
   SimulationResult result;
-  result.skin_before = case_surfaces(archive, case_id, series).skin;
+  const SurfaceRecipe recipe;
+  result.skin_before =
+      case_surfaces(archive, case_id, series, recipe, case_tissues.ct_labels_for(recipe.segmentation)).skin;
   SoftTissueInput input{&tissues, &cut.segments, &result.skin_before, landmarks, moves_by_segment(applied)};
   result.prediction = predict_soft_tissue(input, request.options);
   if (request.uncertainty) result.uncertainty = prediction_uncertainty(result.prediction, result.skin_before, request.options);

@@ -28,12 +28,14 @@ Json surface_json(const SurfaceOptions& o) {
 
 // Skin: the body mask's boundary (head rest and table removed by the segmentation), drawn
 // through the CT's own sub-voxel values. Bone: all bone including teeth.
-CaseSurfaces extract_case_surfaces(const Volume& volume, const SurfaceRecipe& recipe, SurfaceTimes* times) {
+CaseSurfaces extract_case_surfaces(const Volume& volume, const SurfaceRecipe& recipe, SurfaceTimes* times,
+                                   const LabelVolume* segmented) {
   using Clock = std::chrono::steady_clock;
   auto seconds_since = [](Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); };
   SurfaceTimes spent;
   const auto started = Clock::now();
-  const auto labels = segment_tissues(volume, recipe.segmentation);
+  const LabelVolume made = segmented ? LabelVolume{} : segment_tissues(volume, recipe.segmentation);
+  const LabelVolume& labels = segmented ? *segmented : made;
   spent.segmentation = seconds_since(started);
   // Skin and bone read the same volume and labels and write nothing shared: they are traced at
   // once, one per core, each into its own mesh (same result as one after the other).
@@ -62,20 +64,29 @@ Json SurfaceRecipe::to_json() const {
           {"bone", surface_json(bone)}};
 }
 
-CaseSurfaces case_surfaces(Archive& archive, int64_t case_id, int64_t series, const SurfaceRecipe& recipe) {
-  auto parameters = recipe.to_json();
-  auto key = derivation_key({series_content_hash(archive, series)}, parameters);
+std::optional<CaseSurfaces> stored_case_surfaces(Archive& archive, int64_t case_id, int64_t series,
+                                                 const SurfaceRecipe& recipe) {
+  auto key = derivation_key({series_content_hash(archive, series)}, recipe.to_json());
   auto skin = archive.find_artefact(case_id, kSkinKind, key);
   auto bone = archive.find_artefact(case_id, kBoneKind, key);
-  if (skin && bone) {
-    log::info("surfaces up to date, reusing them");
-    return CaseSurfaces{load_mesh_artefact(archive, *skin), load_mesh_artefact(archive, *bone), key, true};
-  }
-  auto volume = load_archived_series(archive, series);
-  auto surfaces = extract_case_surfaces(volume, recipe);
-  surfaces.key = key;
-  store_mesh_artefact(archive, case_id, kSkinKind, key, parameters, surfaces.skin);
-  store_mesh_artefact(archive, case_id, kBoneKind, key, parameters, surfaces.bone);
+  if (!skin || !bone) return std::nullopt;
+  log::info("surfaces up to date, reusing them");
+  return CaseSurfaces{load_mesh_artefact(archive, *skin), load_mesh_artefact(archive, *bone), key, true};
+}
+
+void store_case_surfaces(Archive& archive, int64_t case_id, int64_t series, CaseSurfaces& surfaces,
+                         const SurfaceRecipe& recipe) {
+  auto parameters = recipe.to_json();
+  surfaces.key = derivation_key({series_content_hash(archive, series)}, parameters);
+  store_mesh_artefact(archive, case_id, kSkinKind, surfaces.key, parameters, surfaces.skin);
+  store_mesh_artefact(archive, case_id, kBoneKind, surfaces.key, parameters, surfaces.bone);
+}
+
+CaseSurfaces case_surfaces(Archive& archive, int64_t case_id, int64_t series, const SurfaceRecipe& recipe,
+                           const LabelVolume* segmented) {
+  if (auto stored = stored_case_surfaces(archive, case_id, series, recipe)) return std::move(*stored);
+  auto surfaces = extract_case_surfaces(load_archived_series(archive, series), recipe, nullptr, segmented);
+  store_case_surfaces(archive, case_id, series, surfaces, recipe);
   return surfaces;
 }
 

@@ -3,6 +3,7 @@
 // removed) -> iso-surfaces -> smoothing and decimation. Stored in the archive as artefacts
 // keyed by the series content and the recipe, so a second request reuses them.
 #include <cstdint>
+#include <optional>
 
 #include "archive/archive.h"
 #include "core/json.h"
@@ -33,11 +34,22 @@ struct SurfaceTimes {
   double segmentation = 0, skin = 0, bone = 0, total = 0;
 };
 
-// The surfaces of a volume, computed (no archive): segmentation, then skin and bone.
-CaseSurfaces extract_case_surfaces(const Volume& volume, const SurfaceRecipe& recipe = {}, SurfaceTimes* times = nullptr);
+// The surfaces of a volume, computed (no archive): segmentation, then skin and bone. `segmented`, when given, is
+// segment_tissues(volume, recipe.segmentation) made earlier; the segmentation is then not repeated.
+CaseSurfaces extract_case_surfaces(const Volume& volume, const SurfaceRecipe& recipe = {}, SurfaceTimes* times = nullptr,
+                                   const LabelVolume* segmented = nullptr);
 
 // Surfaces of `series` (a CT series of the case). Throws what volume loading and
-// segmentation throw (Error naming the file or series).
-CaseSurfaces case_surfaces(Archive& archive, int64_t case_id, int64_t series, const SurfaceRecipe& recipe = {});
+// segmentation throw (Error naming the file or series). `segmented` as above, for that series.
+CaseSurfaces case_surfaces(Archive& archive, int64_t case_id, int64_t series, const SurfaceRecipe& recipe = {},
+                           const LabelVolume* segmented = nullptr);
+
+// The two halves of case_surfaces, for callers that extract the surfaces on another thread while
+// the archive stays on theirs: the stored surfaces of `series` if they are up to date (reused set),
+// and storing what extract_case_surfaces made of the series' volume (sets the key).
+std::optional<CaseSurfaces> stored_case_surfaces(Archive& archive, int64_t case_id, int64_t series,
+                                                 const SurfaceRecipe& recipe = {});
+void store_case_surfaces(Archive& archive, int64_t case_id, int64_t series, CaseSurfaces& surfaces,
+                         const SurfaceRecipe& recipe = {});
 
 }  // namespace maxillo::pipeline

@@ -19,8 +19,8 @@ CaseTissues segment_case_tissues(const Volume& ct, const LandmarkSet& landmarks)
   log::info("segmenting the CT (soft tissue, sinus air, bone, teeth, jaws)");
   const SegmentationOptions segmentation;
   CaseTissues tissues;
-  tissues.segmentation =
-      planning::with_enclosed_air(segment_tissues(ct, segmentation), ct, segmentation.skin_hu, kEnclosedAir);
+  tissues.ct_labels = segment_tissues(ct, segmentation);
+  tissues.segmentation = planning::with_enclosed_air(tissues.ct_labels, ct, segmentation.skin_hu, kEnclosedAir);
   tissues.jaws = planning::separate_jaws(tissues.segmentation, landmarks);
   return tissues;
 }

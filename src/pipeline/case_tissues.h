@@ -8,12 +8,21 @@
 #include "archive/archive.h"
 #include "ceph/landmark.h"
 #include "core/volume.h"
+#include "imaging/segmentation.h"
 
 namespace maxillo::pipeline {
 
 struct CaseTissues {
   LabelVolume segmentation;  // 0 background, 1 soft tissue, 2 enclosed air (sinus), 3 bone, 4 teeth
   LabelVolume jaws;          // phantom Tissue values: upper/lower teeth, mandible apart
+  // segment_tissues' own labels (default options), before the sinus air is told apart: what the case's skin and
+  // bone surfaces are traced in, kept so that they need not segment the CT again.
+  LabelVolume ct_labels;
+
+  // ct_labels if they are what segment_tissues would make with `options`, else nullptr.
+  const LabelVolume* ct_labels_for(const SegmentationOptions& options) const {
+    return !ct_labels.labels.empty() && options == SegmentationOptions{} ? &ct_labels : nullptr;
+  }
 };
 
 // The case's primary CT series, segmented. Throws what volume loading and jaw separation throw.

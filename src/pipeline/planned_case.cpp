@@ -33,7 +33,8 @@ PlannedCase load_planned_case(Archive& archive, int64_t case_id, const CaseTissu
       planning::apply_plan(c.plan.plan, c.tissues.segmentation, c.landmarks, planning::segmentation_anatomy_labels());
   c.cut = planning::cut_skeleton(c.tissues.jaws, planning::resolve_osteotomies(c.plan.plan.osteotomies, c.landmarks));
   c.planned_moves = moves_by_segment(c.applied);
-  c.skin = case_surfaces(archive, case_id, c.preop_series).skin;
+  const SurfaceRecipe recipe;
+  c.skin = case_surfaces(archive, case_id, c.preop_series, recipe, c.tissues.ct_labels_for(recipe.segmentation)).skin;
   return c;
 }
 
