@@ -2,11 +2,9 @@
 // gives; stored, they come back from the archive unchanged.
 #include <gtest/gtest.h>
 
-#include "archive_fixture.h"
-#include "pipeline/case_landmarks.h"
+#include "phantom_case.h"
 #include "pipeline/case_surfaces.h"
 #include "pipeline/case_tissues.h"
-#include "pipeline/sample_case.h"
 #include "sample/phantom.h"
 
 namespace maxillo::pipeline {
@@ -46,10 +44,7 @@ TEST(CaseSurfaces, LabelsOfOtherSegmentationOptionsAreNotOffered) {
 
 TEST(CaseSurfaces, StoredOnceTheyComeBackFromTheArchive) {
   TemporaryFolder folder;
-  const SampleCase sample = write_sample_case(SkeletalClass::I, 3.0, folder / "sample");
-  Archive archive = Archive::open(folder / "archive", OpenMode::CreateIfMissing);
-  ASSERT_TRUE(archive.import_paths({sample.ct_folder}, testing::quiet()).all_ok());
-  const int64_t case_id = archive.resolve_case(kPhantomPatientId);
+  auto [archive, case_id] = testing_support::archived_phantom(folder.path(), 3.0);
   const int64_t series = archive.case_contents(case_id).series.front().series.id;
   EXPECT_FALSE(stored_case_surfaces(archive, case_id, series).has_value());
 

@@ -3,11 +3,9 @@
 // moved skin passes through itself the two may differ: not on this 2 mm phantom, which therefore must match exactly.)
 #include <gtest/gtest.h>
 
-#include "archive_fixture.h"
-#include "pipeline/case_landmarks.h"
+#include "phantom_case.h"
 #include "pipeline/plan_archive.h"
 #include "pipeline/planned_case.h"
-#include "pipeline/sample_case.h"
 #include "pipeline/synthetic_postop.h"
 
 namespace maxillo::pipeline {
@@ -17,11 +15,7 @@ using testing::TemporaryFolder;
 
 TEST(SyntheticPostop, CubesOfVoxelsGiveTheCtOfOneQueryPerVoxel) {
   TemporaryFolder folder;
-  const SampleCase sample = write_sample_case(SkeletalClass::I, 2.0, folder / "sample");
-  Archive archive = Archive::open(folder / "archive", OpenMode::CreateIfMissing);
-  ASSERT_TRUE(archive.import_paths({sample.ct_folder}, testing::quiet()).all_ok());
-  const int64_t case_id = archive.resolve_case(kPhantomPatientId);
-  attach_landmarks(archive, case_id, sample.landmarks, "phantom");
+  auto [archive, case_id] = testing_support::archived_phantom(folder.path(), 2.0);
   store_plan(archive, case_id, planning::distraction_plan({.advancement_mm = 6, .widening_mm = 0}, "test"));
   const PlannedCase planned = load_planned_case(archive, case_id);
 

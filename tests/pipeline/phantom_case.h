@@ -1,0 +1,27 @@
+#pragma once
+// The phantom as an archived case: written as DICOM at the given spacing, imported into a new
+// archive in `folder`, its analytic landmarks attached.
+#include <gtest/gtest.h>
+
+#include "archive_fixture.h"
+#include "pipeline/case_landmarks.h"
+#include "pipeline/sample_case.h"
+
+namespace maxillo::pipeline::testing_support {
+
+struct PhantomCase {
+  Archive archive;
+  int64_t case_id = 0;
+};
+
+inline PhantomCase archived_phantom(const std::filesystem::path& folder, double spacing_mm) {
+  const SampleCase sample = write_sample_case(SkeletalClass::I, spacing_mm, folder / "sample");
+  Archive archive = Archive::open(folder / "archive", OpenMode::CreateIfMissing);
+  if (!archive.import_paths({sample.ct_folder}, testing::quiet()).all_ok())
+    throw std::runtime_error("the phantom did not import");
+  const int64_t case_id = archive.resolve_case(kPhantomPatientId);
+  attach_landmarks(archive, case_id, sample.landmarks, "phantom");
+  return {std::move(archive), case_id};
+}
+
+}  // namespace maxillo::pipeline::testing_support
