@@ -71,10 +71,10 @@ Json describe_surface(const std::string& name, const TriangleMesh& mesh, const s
           {"seconds", seconds}};
 }
 
-Json make_surface(const std::string& name, const Volume& volume, const LabelVolume& region, double iso_hu,
-                  const SurfaceOptions& surface_options, const SurfacesOptions& options) {
+Json make_surface(const std::string& name, const Volume& volume, const LabelVolume& labels, LabelRange region,
+                  double iso_hu, const SurfaceOptions& surface_options, const SurfacesOptions& options) {
   Stopwatch clock;
-  TriangleMesh mesh = extract_surface(restrict_to_mask(volume, region, iso_hu), iso_hu, surface_options);
+  TriangleMesh mesh = extract_region_surface(volume, labels, region, iso_hu, surface_options);
   if (mesh.face_count() == 0)
     throw Error(ErrorCode::kEmptyResult, name, "no " + name + " surface at " + std::to_string(int(iso_hu)) + " HU");
   const std::filesystem::path file = options.out / (name + "." + options.format);
@@ -126,10 +126,8 @@ void run_surfaces(const SurfacesOptions& options, CommandContext& ctx) {
       {"frame", "patient LPS; lengths mm, areas mm2, volumes mm3"},
       {"segmentation_seconds", segmentation_seconds},
       {"surfaces", Json::array()}};
-  result["surfaces"].push_back(make_surface("skin", volume, select_labels(labels, kSoftTissue, kTeeth),
-                                            options.skin_hu, skin, options));
-  result["surfaces"].push_back(make_surface("bone", volume, select_labels(labels, kBone, kTeeth),
-                                            options.bone_hu, bone, options));
+  result["surfaces"].push_back(make_surface("skin", volume, labels, {kSoftTissue, kTeeth}, options.skin_hu, skin, options));
+  result["surfaces"].push_back(make_surface("bone", volume, labels, {kBone, kTeeth}, options.bone_hu, bone, options));
   result["seconds"] = total.seconds();
   if (ctx.global.json) std::cout << result.dump(2) << "\n";
   else print_text(result);

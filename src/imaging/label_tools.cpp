@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cmath>
 
+#include "core/iso_restriction.h"
 #include "imaging/segmentation.h"
 
 namespace maxillo {
@@ -17,14 +18,9 @@ LabelVolume select_labels(const LabelVolume& labels, uint8_t first, uint8_t last
 
 Volume restrict_to_mask(const Volume& volume, const LabelVolume& mask, double iso_hu) {
   assert(mask.labels.size() == volume.hu.size() && "mask and volume must share the grid");
-  const int inside_floor = int(std::floor(iso_hu)) + 1;
-  const int outside_ceiling = int(std::ceil(iso_hu)) - 1;
+  const IsoRestriction restrict_at(iso_hu);
   Volume out{volume.geometry, std::vector<int16_t>(volume.hu.size())};
-  for (size_t n = 0; n < volume.hu.size(); ++n) {
-    int value = volume.hu[n];
-    value = mask.labels[n] ? std::max(value, inside_floor) : std::min(value, outside_ceiling);
-    out.hu[n] = int16_t(std::clamp(value, -32768, 32767));
-  }
+  for (size_t n = 0; n < volume.hu.size(); ++n) out.hu[n] = restrict_at(volume.hu[n], mask.labels[n] != 0);
   return out;
 }
 

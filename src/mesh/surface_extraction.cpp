@@ -15,6 +15,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/iso_restriction.h"
 #include "core/log.h"
 #include "mesh/mesh_measures.h"
 #include "mesh/mesh_repair.h"
@@ -33,18 +34,17 @@ constexpr double kOversampling = 2.5;
 
 // Edges of the voxel grid where the value crosses iso: flying edges makes about two triangles
 // per crossing.
-int64_t crossing_edges(const Volume& volume, double iso) {
-  const VolumeGeometry& g = volume.geometry;
+int64_t crossing_edges(const VolumeGeometry& g, auto value_at, double iso) {
   const int64_t stride[3] = {1, g.size.x(), int64_t(g.size.x()) * g.size.y()};
   int64_t crossings = 0;
   for (int k = 0; k < g.size.z(); ++k)
     for (int j = 0; j < g.size.y(); ++j)
       for (int i = 0; i < g.size.x(); ++i) {
         const int64_t n = g.index(i, j, k);
-        const bool above = volume.hu[size_t(n)] >= iso;
+        const bool above = value_at(n) >= iso;
         const int ijk[3] = {i, j, k};
         for (int a = 0; a < 3; ++a)
-          if (ijk[a] + 1 < g.size[a]) crossings += (volume.hu[size_t(n + stride[a])] >= iso) != above;
+          if (ijk[a] + 1 < g.size[a]) crossings += (value_at(n + stride[a]) >= iso) != above;
       }
   return crossings;
 }
@@ -57,13 +57,13 @@ int64_t crossing_edges(const Volume& volume, double iso) {
 constexpr double kBlockClampHu = 250;
 
 // Voxels per block along each axis for the grid the triangle budget needs (1 = the CT's own).
-std::array<int, 3> sampling_factors(const Volume& volume, double iso, int64_t target_triangles) {
+std::array<int, 3> sampling_factors(const VolumeGeometry& g, auto value_at, double iso, int64_t target_triangles) {
   std::array<int, 3> factor{1, 1, 1};
   if (target_triangles <= 0) return factor;
-  const double native_triangles = 2.0 * double(crossing_edges(volume, iso));
+  const double native_triangles = 2.0 * double(crossing_edges(g, value_at, iso));
   const double coarsening = std::sqrt(native_triangles / (kOversampling * double(target_triangles)));
   if (coarsening < 1.5) return factor;
-  const Eigen::Vector3d& spacing = volume.geometry.spacing;
+  const Eigen::Vector3d& spacing = g.spacing;
   const double block_mm = coarsening * spacing.minCoeff();
   for (int a = 0; a < 3; ++a) factor[size_t(a)] = std::max(1, int(std::lround(block_mm / spacing[a])));
   return factor;
@@ -170,20 +170,35 @@ TriangleMesh finish_surface(vtkImageData* image, double iso, const VolumeGeometr
   return mesh;
 }
 
-}  // namespace
-
-TriangleMesh extract_surface(const Volume& volume, double iso_hu, const SurfaceOptions& options) {
-  const VolumeGeometry& g = volume.geometry;
-  assert(volume.hu.size() == size_t(g.voxel_count()) && "volume.hu must hold size.x*size.y*size.z values");
+// The iso-surface of the values value_at(n) (n: voxel index of g), on the grid options.grid asks for.
+TriangleMesh extract_iso_surface(const VolumeGeometry& g, auto value_at, double iso_hu, const SurfaceOptions& options) {
   assert(iso_hu > std::numeric_limits<int16_t>::min() && "iso_hu must be above the padding value");
-  const auto factor = options.grid == SurfaceGrid::ForBudget ? sampling_factors(volume, iso_hu, options.target_triangles)
-                                                             : std::array<int, 3>{1, 1, 1};
+  const auto factor = options.grid == SurfaceGrid::ForBudget
+                          ? sampling_factors(g, value_at, iso_hu, options.target_triangles)
+                          : std::array<int, 3>{1, 1, 1};
   if (factor != std::array<int, 3>{1, 1, 1})
     log::debug("iso-surface on blocks of ", factor[0], " x ", factor[1], " x ", factor[2], " voxels for ",
                options.target_triangles, " triangles");
-  auto image = padded_image<int16_t, vtkShortArray>(g, std::numeric_limits<int16_t>::min(),
-                                                    [&](int64_t n) { return volume.hu[size_t(n)]; }, factor, iso_hu);
+  auto image = padded_image<int16_t, vtkShortArray>(g, std::numeric_limits<int16_t>::min(), value_at, factor, iso_hu);
   return finish_surface(image, iso_hu, g, options);
+}
+
+}  // namespace
+
+TriangleMesh extract_surface(const Volume& volume, double iso_hu, const SurfaceOptions& options) {
+  assert(volume.hu.size() == size_t(volume.geometry.voxel_count()) && "volume.hu must hold one value per voxel");
+  return extract_iso_surface(volume.geometry, [&](int64_t n) { return volume.hu[size_t(n)]; }, iso_hu, options);
+}
+
+TriangleMesh extract_region_surface(const Volume& volume, const LabelVolume& labels, LabelRange region, double iso_hu,
+                                    const SurfaceOptions& options) {
+  assert(labels.labels.size() == volume.hu.size() && "labels and volume must share the grid");
+  const IsoRestriction restrict_at(iso_hu);
+  auto value_at = [&](int64_t n) {
+    const uint8_t label = labels.labels[size_t(n)];
+    return restrict_at(volume.hu[size_t(n)], label >= region.first && label <= region.last);
+  };
+  return extract_iso_surface(volume.geometry, value_at, iso_hu, options);
 }
 
 TriangleMesh extract_surface(const LabelVolume& mask, uint8_t label, const SurfaceOptions& options) {

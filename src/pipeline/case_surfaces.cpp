@@ -42,7 +42,7 @@ CaseSurfaces extract_case_surfaces(const Volume& volume, const SurfaceRecipe& re
   CaseSurfaces surfaces;
   auto trace = [&](TriangleMesh& mesh, double& seconds, double hu, const SurfaceOptions& options, uint8_t tissue) {
     const auto start = Clock::now();
-    mesh = extract_surface(restrict_to_mask(volume, select_labels(labels, tissue, kTeeth), hu), hu, options);
+    mesh = extract_region_surface(volume, labels, {tissue, kTeeth}, hu, options);
     seconds = seconds_since(start);
   };
   const auto& seg = recipe.segmentation;

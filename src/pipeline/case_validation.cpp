@@ -95,9 +95,8 @@ std::vector<planning::SegmentSurface> segment_bone_surfaces(const PlannedCase& p
       [&](int first, int last) {
         for (int s = first; s < last; ++s) {
           auto& surface = surfaces[size_t(s)];
-          LabelVolume mask{planned.cut.segments.geometry, planned.cut.segments.labels};
-          for (auto& label : mask.labels) label = label == uint8_t(surface.segment);
-          surface.mesh = extract_surface(restrict_to_mask(planned.preop_ct, mask, bone_hu), bone_hu, options);
+          const uint8_t label = uint8_t(surface.segment);
+          surface.mesh = extract_region_surface(planned.preop_ct, planned.cut.segments, {label, label}, bone_hu, options);
         }
       },
       {.min_slab_size = 1});

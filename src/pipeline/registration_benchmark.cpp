@@ -143,8 +143,9 @@ Eigen::Isometry3d known_rigid_move(const VolumeGeometry& geometry, double rotati
 
 Eigen::MatrixX3d skin_vertices(const Volume& ct) {
   const LabelVolume labels = segment_tissues(ct);
-  const TriangleMesh skin = extract_surface(restrict_to_mask(ct, select_labels(labels, kSoftTissue, kTeeth), -400), -400,
-                                            {.keep_largest_components = 1, .target_triangles = 50000, .grid = SurfaceGrid::Native});
+  const TriangleMesh skin =
+      extract_region_surface(ct, labels, {kSoftTissue, kTeeth}, -400,
+                             {.keep_largest_components = 1, .target_triangles = 50000, .grid = SurfaceGrid::Native});
   if (skin.vertex_count() == 0) throw Error(ErrorCode::kEmptyResult, "skin", "no skin surface in the CT");
   return skin.vertices;
 }

@@ -216,8 +216,7 @@ class PostopVoxels {
 TriangleMesh raw_skin(const PlannedCase& planned) {
   const double skin_hu = SegmentationOptions{}.skin_hu;
   const SurfaceOptions unsmoothed{.keep_largest_components = 1, .smoothing_iterations = 0, .target_triangles = 0};
-  return extract_surface(restrict_to_mask(planned.preop_ct, planned.tissues.segmentation, skin_hu), skin_hu,
-                         unsmoothed);
+  return extract_region_surface(planned.preop_ct, planned.tissues.segmentation, LabelRange{}, skin_hu, unsmoothed);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 
 #include <iostream>
 
+#include "core/iso_restriction.h"
 #include "imaging/segmentation.h"
 #include "mesh/mesh_measures.h"
 #include "mesh/surface_extraction.h"
@@ -58,6 +59,36 @@ TEST(SurfaceGrid, TheBudgetsGridGivesTheSameSkinAndBoneAsTheNativeGrid) {
   const LabelVolume labels = segment_tissues(phantom.ct);
   expect_alike(both_ways(phantom.ct, labels, kSoftTissue, kTeeth, -400), "skin", 0.08, 0.2);
   expect_alike(both_ways(phantom.ct, labels, kBone, kTeeth, 300), "bone", 0.1, 0.3);
+}
+
+// Reading the CT through the region's labels is the same as tracing a restricted copy of it, on either grid; and a
+// restriction that makes no difference to a voxel (the rule of core/iso_restriction.h) leaves it as it is.
+TEST(RegionSurface, IsTheSurfaceOfTheRestrictedCopyWithoutMakingIt) {
+  PhantomSpec spec;
+  spec.spacing_mm = 1.5;
+  const Phantom phantom = make_phantom(spec);
+  const LabelVolume labels = segment_tissues(phantom.ct);
+  struct Case {
+    LabelRange region;
+    double iso;
+    SurfaceGrid grid;
+  };
+  for (const Case& c : {Case{{kSoftTissue, kTeeth}, -400, SurfaceGrid::ForBudget}, Case{{kBone, kTeeth}, 300, SurfaceGrid::Native},
+                        Case{{kBone, kBone}, 300, SurfaceGrid::ForBudget}}) {
+    SurfaceOptions options{.keep_largest_components = 0, .target_triangles = 20000, .grid = c.grid};
+    const TriangleMesh direct = extract_region_surface(phantom.ct, labels, c.region, c.iso, options);
+    const TriangleMesh copied =
+        extract_surface(restrict_to_mask(phantom.ct, select_labels(labels, c.region.first, c.region.last), c.iso), c.iso,
+                        options);
+    ASSERT_GT(direct.face_count(), 1000) << int(c.region.first) << "-" << int(c.region.last);
+    EXPECT_EQ(direct.faces, copied.faces);
+    EXPECT_EQ(direct.vertices, copied.vertices);
+  }
+  const IsoRestriction restrict_at(300);
+  EXPECT_EQ(restrict_at(900, true), 900);
+  EXPECT_EQ(restrict_at(100, true), 301);
+  EXPECT_EQ(restrict_at(900, false), 299);
+  EXPECT_EQ(restrict_at(-1000, false), -1000);
 }
 
 }  // namespace
