@@ -2,6 +2,11 @@
 
 #include <sys/resource.h>
 
+#include <algorithm>
+#include <fstream>
+#include <limits>
+#include <string>
+
 #include "mesh/mesh_measures.h"
 
 namespace maxillo::pipeline {
@@ -20,17 +25,36 @@ long peak_memory_kb() {
   return usage.ru_maxrss;
 }
 
+bool reset_resident_peak() {
+  std::ofstream clear_refs("/proc/self/clear_refs");
+  return bool(clear_refs << "5" << std::flush);
+}
+
+long resident_peak_kb() {
+  std::ifstream status("/proc/self/status");
+  std::string key;
+  long value = 0;
+  while (status >> key) {
+    if (key == "VmHWM:" && status >> value) return value;
+    status.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
+  }
+  return 0;
+}
+
 SurfaceBenchmark benchmark_surfaces(const Volume& volume, double load_seconds, bool compare_native,
                                     const SurfaceRecipe& recipe) {
   SurfaceBenchmark result;
   result.geometry = volume.geometry;
   result.load_seconds = load_seconds;
   SurfaceTimes times;
+  const long peak_before = peak_memory_kb();  // the reset below clears getrusage's maximum too
+  const bool step_peak = reset_resident_peak();
   const CaseSurfaces surfaces = extract_case_surfaces(volume, recipe, &times);
+  if (step_peak) result.surfaces_peak_memory_kb = resident_peak_kb();
   result.segmentation_seconds = times.segmentation;
   result.total_seconds = times.total;
   result.surfaces = pair_of(surfaces, times);
-  result.peak_memory_kb = peak_memory_kb();
+  result.peak_memory_kb = std::max(peak_before, peak_memory_kb());
   if (!compare_native) return result;
 
   SurfaceRecipe native_recipe = recipe;

@@ -31,6 +31,10 @@ struct SurfaceBenchmark {
   double total_seconds = 0;  // wall clock of segmentation and both surfaces (traced at once)
   SurfacePair surfaces;
   long peak_memory_kb = 0;  // of the process after the default path (before any comparison)
+  // The highest resident memory while segmenting and tracing (the volume included), when the
+  // kernel's high-water mark could be reset before (Linux); 0 otherwise. The process peak can come
+  // from reading or generating the volume instead.
+  long surfaces_peak_memory_kb = 0;
   std::optional<NativeComparison> native;
 };
 
@@ -41,5 +45,11 @@ SurfaceBenchmark benchmark_surfaces(const Volume& volume, double load_seconds, b
 
 // Peak resident memory of this process so far, kB (getrusage).
 long peak_memory_kb();
+
+// Resets the kernel's high-water mark of this process's resident memory to what it holds now
+// ("5" written to /proc/self/clear_refs), so that resident_peak_kb() then measures one step.
+// False where that cannot be done.
+bool reset_resident_peak();
+long resident_peak_kb();  // VmHWM of /proc/self/status, kB; 0 if unreadable
 
 }  // namespace maxillo::pipeline
