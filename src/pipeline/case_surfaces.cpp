@@ -24,6 +24,11 @@ Json surface_json(const SurfaceOptions& o) {
           {"grid", o.grid == SurfaceGrid::Native ? "native" : "for-budget"}};
 }
 
+// The derivation key of a series' surfaces: its content and every parameter of the recipe.
+std::string surfaces_key(Archive& archive, int64_t series, const Json& parameters) {
+  return derivation_key({series_content_hash(archive, series)}, parameters);
+}
+
 }  // namespace
 
 // Skin: the body mask's boundary (head rest and table removed by the segmentation), drawn
@@ -66,7 +71,7 @@ Json SurfaceRecipe::to_json() const {
 
 std::optional<CaseSurfaces> stored_case_surfaces(Archive& archive, int64_t case_id, int64_t series,
                                                  const SurfaceRecipe& recipe) {
-  auto key = derivation_key({series_content_hash(archive, series)}, recipe.to_json());
+  auto key = surfaces_key(archive, series, recipe.to_json());
   auto skin = archive.find_artefact(case_id, kSkinKind, key);
   auto bone = archive.find_artefact(case_id, kBoneKind, key);
   if (!skin || !bone) return std::nullopt;
@@ -77,7 +82,7 @@ std::optional<CaseSurfaces> stored_case_surfaces(Archive& archive, int64_t case_
 void store_case_surfaces(Archive& archive, int64_t case_id, int64_t series, CaseSurfaces& surfaces,
                          const SurfaceRecipe& recipe) {
   auto parameters = recipe.to_json();
-  surfaces.key = derivation_key({series_content_hash(archive, series)}, parameters);
+  surfaces.key = surfaces_key(archive, series, parameters);
   store_mesh_artefact(archive, case_id, kSkinKind, surfaces.key, parameters, surfaces.skin);
   store_mesh_artefact(archive, case_id, kBoneKind, surfaces.key, parameters, surfaces.bone);
 }
