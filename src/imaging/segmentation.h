@@ -1,6 +1,7 @@
 #pragma once
 // Threshold segmentation of a head CT into tissue labels on the volume's own grid.
-// ITK does the morphology (itk_filters.cpp); this header speaks maxillo types only.
+// The morphology runs on exact distance maps and run-length components (distance_morphology.h,
+// mask_components.h), without ITK; this header speaks maxillo types only.
 //
 // Body (everything inside the skin):
 //   1. HU >= skin_hu (air ~ -1000, fat ~ -100, skin/soft tissue ~ 0..+80; -400 sits midway);
