@@ -28,6 +28,8 @@ void attach_validate(CLI::App&, CommandContext&);
 void attach_nightly(CLI::App&, CommandContext&);
 void attach_sample_postop(CLI::App&, CommandContext&);
 void attach_role(CLI::App&, CommandContext&);
+void attach_serve(CLI::App&, CommandContext&);
+void attach_echo(CLI::App&, CommandContext&);
 
 std::span<const CommandSpec> command_table() {
   static const std::array kCommands = {
@@ -40,6 +42,8 @@ std::span<const CommandSpec> command_table() {
       CommandSpec{"role", "Archive", "set a series' role in its case (preop, postop, follow-up, unassigned)", attach_role},
       CommandSpec{"export", "Archive", "write a series' original files into a folder", attach_export},
       CommandSpec{"bench", "Archive", "benchmarks (bench import, bench cube, bench occlusion)", attach_bench},
+      CommandSpec{"serve", "Network", "DICOM storage server: archive what scanners and PACS send (C-STORE, C-ECHO)", attach_serve},
+      CommandSpec{"echo", "Network", "C-ECHO a DICOM peer: AE@HOST:PORT", attach_echo},
       CommandSpec{"surfaces", "Imaging", "skin and bone surfaces from a DICOM series", attach_surfaces},
       CommandSpec{"convert", "Imaging", "wrap a MetaImage/NRRD volume as a DICOM CT series", attach_convert},
       CommandSpec{"register", "Imaging", "rigid registration of a post-operative CT to the pre-operative CT (mutual information)", attach_register},

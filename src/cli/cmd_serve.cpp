@@ -1,0 +1,117 @@
+// maxillo serve --aet AET --port PORT --allow AE[@HOST]...: a DICOM storage server that archives
+// what scanners and PACS push (net/storage_server.h). Runs until SIGTERM or SIGINT, then lets the
+// associations in flight finish and prints what it did.
+#include <signal.h>
+#include <unistd.h>
+
+#include <cerrno>
+
+#include <iostream>
+#include <thread>
+
+#include "archive/archive_json.h"
+#include "cli/command.h"
+#include "core/error.h"
+#include "core/log.h"
+#include "net/storage_server.h"
+
+namespace maxillo::cli {
+namespace {
+
+struct ServeArguments {
+  std::string ae_title = "MAXILLO";
+  int port = 11112;
+  std::vector<std::string> allowed;
+  int max_associations = 8;
+  int timeout_seconds = 30;
+};
+
+// SIGTERM and SIGINT ask the server to stop. Libraries start threads of their own before main
+// (OpenBLAS), so blocking the signals cannot cover every thread: a handler takes the signal in
+// whichever thread it lands and only writes a byte into a pipe (async-signal-safe); a thread
+// reading the pipe does the rest.
+int stop_pipe[2] = {-1, -1};
+
+extern "C" void on_stop_signal(int) {
+  const char byte = 's';
+  [[maybe_unused]] const auto written = write(stop_pipe[1], &byte, 1);
+}
+
+class StopOnSignal {
+ public:
+  explicit StopOnSignal(net::StorageServer& server) {
+    if (pipe(stop_pipe) != 0) throw Error(ErrorCode::kProcessing, "serve", "cannot create the stop pipe");
+    struct sigaction action {};
+    action.sa_handler = on_stop_signal;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGTERM, &action, nullptr);
+    sigaction(SIGINT, &action, nullptr);
+    waiter_ = std::thread([&server] {
+      char byte = 0;
+      while (read(stop_pipe[0], &byte, 1) < 0 && errno == EINTR) {
+      }
+      if (byte == 's') log::info("serve: stop requested: finishing the associations in flight");
+      server.stop();
+    });
+  }
+  ~StopOnSignal() {
+    const char byte = 'x';  // wakes the waiter when no signal came
+    [[maybe_unused]] const auto written = write(stop_pipe[1], &byte, 1);
+    waiter_.join();
+    signal(SIGTERM, SIG_DFL);
+    signal(SIGINT, SIG_DFL);
+    close(stop_pipe[0]);
+    close(stop_pipe[1]);
+  }
+
+ private:
+  std::thread waiter_;
+};
+
+void run_serve(const ServeArguments& a, CommandContext& ctx) {
+  net::StorageServerOptions options;
+  options.archive = resolve_archive_dir(ctx.global);
+  options.ae_title = a.ae_title;
+  options.port = uint16_t(a.port);
+  for (const auto& text : a.allowed) options.allowed.push_back(net::parse_allowed_peer(text));
+  options.max_associations = a.max_associations;
+  options.timeout_seconds = a.timeout_seconds;
+  if (options.allowed.empty()) log::warning("serve: no --allow given: every association will be refused");
+  net::StorageServer server(options);
+  {
+    StopOnSignal stop_on_signal(server);
+    if (!ctx.global.quiet) std::cerr << "serve: " << a.ae_title << " listening on port " << a.port << "\n";
+    server.run();
+  }
+  const auto counts = server.counts();
+  if (ctx.global.json) {
+    std::cout << json_text(Json{{"associations", counts.associations},
+                                {"refused_associations", counts.refused},
+                                {"stored", counts.stored},
+                                {"already_archived", counts.already_archived},
+                                {"failed", counts.failed}})
+              << "\n";
+  } else {
+    std::cout << "serve stopped: " << counts.associations << " associations (" << counts.refused << " refused), "
+              << counts.stored << " instances archived, " << counts.already_archived << " already archived, "
+              << counts.failed << " refused\n";
+  }
+}
+
+}  // namespace
+
+void attach_serve(CLI::App& app, CommandContext& ctx) {
+  auto a = std::make_shared<ServeArguments>();
+  app.add_option("--aet", a->ae_title, "our AE title (peers call it)")->capture_default_str();
+  app.add_option("--port", a->port, "TCP port to listen on")->check(CLI::Range(1, 65535))->capture_default_str();
+  app.add_option("--allow", a->allowed, "a peer that may store: AE title, or AE@ADDRESS (repeatable; others are refused)");
+  app.add_option("--max-associations", a->max_associations, "associations served at once (more are refused as busy)")
+      ->check(CLI::Range(1, 64))
+      ->capture_default_str();
+  app.add_option("--timeout", a->timeout_seconds, "seconds a peer may stay silent before it is dropped")
+      ->check(CLI::Range(1, 3600))
+      ->capture_default_str();
+  app.callback([a, &ctx] { run_serve(*a, ctx); });
+}
+
+}  // namespace maxillo::cli

@@ -1,0 +1,235 @@
+#include "net/storage_server.h"
+
+#include <dcmtk/config/osconfig.h>
+#include <dcmtk/dcmdata/dcdeftag.h>
+#include <dcmtk/dcmdata/dcuid.h>
+#include <dcmtk/dcmnet/diutil.h>
+#include <dcmtk/dcmnet/scppool.h>
+
+#include <chrono>
+#include <optional>
+#include <thread>
+#include <unistd.h>
+
+#include "archive/archive.h"
+#include "core/error.h"
+#include "core/log.h"
+#include "net/no_nagle_delay.h"
+#include "net/storage_classes.h"
+
+namespace maxillo::net {
+
+struct StorageServer::Shared {
+  StorageServerOptions options;
+  std::filesystem::path incoming;  // ARCHIVE/incoming: datasets being received
+  std::atomic<int64_t> associations{0}, refused{0}, stored{0}, already_archived{0}, failed{0};
+  std::atomic<int64_t> next_file{0};
+  std::atomic<bool> stop_requested{false};
+};
+
+namespace {
+
+// The C-STORE status for one received file's import, and the reason for a failure.
+struct StoreAnswer {
+  Uint16 status = STATUS_Success;
+  std::string reason;
+};
+
+StoreAnswer answer_for(const ImportReport& report) {
+  if (report.imported + report.already_archived == 1) return {};
+  if (report.problems.empty()) return {STATUS_STORE_Refused_OutOfResources, "the archive did not take the instance"};
+  const ImportProblem& problem = report.problems.front();
+  const int exit_code = exit_code_for(problem.code);
+  // Input errors (20-39) and conflicts are the sender's data; anything else is ours.
+  const bool senders_data = (exit_code >= 20 && exit_code < 40) || problem.outcome == ImportOutcome::Conflict;
+  return {Uint16(senders_data ? STATUS_STORE_Error_CannotUnderstand : STATUS_STORE_Refused_OutOfResources),
+          problem.reason};
+}
+
+// One association: checks who calls, archives each C-STORE before answering it.
+class ArchivingSCP : public DcmThreadSCP {
+ public:
+  explicit ArchivingSCP(StorageServer::Shared& shared) : shared_(shared) {}
+
+ protected:
+  OFBool checkCalledAETitleAccepted(const OFString& called_ae) override {
+    if (called_ae == shared_.options.ae_title.c_str()) return OFTrue;
+    log::warning("serve: association refused: called AE title '", called_ae.c_str(), "' is not ours");
+    ++shared_.refused;
+    return OFFalse;
+  }
+
+  OFBool checkCallingAETitleAccepted(const OFString& calling_ae) override {
+    const std::string address = getPeerIP().c_str();
+    if (is_allowed(shared_.options.allowed, calling_ae.c_str(), address)) return OFTrue;
+    log::warning("serve: association refused: calling AE title '", calling_ae.c_str(), "' from ", address,
+                 " is not allowed (--allow)");
+    ++shared_.refused;
+    return OFFalse;
+  }
+
+  void notifyAssociationAcknowledge() override {
+    ++shared_.associations;
+    calling_ae_ = getPeerAETitle().c_str();
+    stored_ = failed_ = 0;
+    log::info("serve: association from ", calling_ae_, " (", getPeerIP().c_str(), ")");
+  }
+
+  void notifyAssociationTermination() override {
+    if (!calling_ae_.empty())
+      log::info("serve: association from ", calling_ae_, " ended: ", stored_, " instances archived, ", failed_, " refused");
+    calling_ae_.clear();
+    archive_.reset();
+  }
+
+  OFCondition handleIncomingCommand(T_DIMSE_Message* message, const DcmPresentationContextInfo& context) override {
+    if (message->CommandField != DIMSE_C_STORE_RQ) return DcmThreadSCP::handleIncomingCommand(message, context);
+    T_DIMSE_C_StoreRQ& request = message->msg.CStoreRQ;
+    const std::filesystem::path file = incoming_file();
+    const OFCondition received = receiveSTORERequest(request, context.presentationContextID, file.c_str());
+    if (received.bad()) {
+      // The peer went away or broke the protocol mid-transfer: nothing was archived, and the
+      // association ends (DcmSCP aborts it on a bad condition).
+      std::filesystem::remove(file);
+      log::warning("serve: a C-STORE from ", calling_ae_, " was not received whole: ", received.text());
+      ++shared_.failed;
+      return received;
+    }
+    const StoreAnswer answer = archive_file(file);
+    std::filesystem::remove(file);
+    if (answer.status != STATUS_Success) {
+      ++failed_;
+      ++shared_.failed;
+      log::warning("serve: C-STORE from ", calling_ae_, " refused (status 0x", std::hex, answer.status, std::dec,
+                   "): ", answer.reason);
+      DcmDataset detail;
+      detail.putAndInsertString(DCM_ErrorComment, answer.reason.substr(0, 64).c_str());
+      return sendSTOREResponse(context.presentationContextID, request.MessageID, request.AffectedSOPClassUID,
+                               request.AffectedSOPInstanceUID, answer.status, &detail);
+    }
+    ++stored_;
+    return sendSTOREResponse(context.presentationContextID, request, STATUS_Success);
+  }
+
+ private:
+  std::filesystem::path incoming_file() {
+    return shared_.incoming / ("received-" + std::to_string(getpid()) + "-" + std::to_string(++shared_.next_file) + ".dcm");
+  }
+
+  StoreAnswer archive_file(const std::filesystem::path& file) {
+    try {
+      // One archive connection per association: SQLite serialises the writers, the hashing and
+      // parsing of several associations run side by side.
+      if (!archive_) archive_.emplace(Archive::open(shared_.options.archive));
+      const ImportReport report = archive_->import_paths({file}, {.progress = ProgressDisplay::Never, .batch_files = 1});
+      shared_.stored += int64_t(report.imported);
+      shared_.already_archived += int64_t(report.already_archived);
+      return answer_for(report);
+    } catch (const std::exception& error) {
+      return {STATUS_STORE_Refused_OutOfResources, error.what()};
+    }
+  }
+
+  StorageServer::Shared& shared_;
+  std::optional<Archive> archive_;
+  std::string calling_ae_;
+  int64_t stored_ = 0, failed_ = 0;
+};
+
+// DcmSCPPool constructs its SCPs without arguments; this pool hands each the shared state.
+class ArchivingPool : public DcmBaseSCPPool {
+ public:
+  explicit ArchivingPool(StorageServer::Shared& shared) : shared_(shared) {}
+
+ protected:
+  class Worker : public DcmBaseSCPWorker, private ArchivingSCP {
+   public:
+    Worker(DcmBaseSCPPool& pool, StorageServer::Shared& shared) : DcmBaseSCPWorker(pool), ArchivingSCP(shared) {}
+    OFCondition setSharedConfig(const DcmSharedSCPConfig& config) override { return ArchivingSCP::setSharedConfig(config); }
+    OFBool busy() override { return ArchivingSCP::isConnected(); }
+
+   protected:
+    OFCondition workerListen(T_ASC_Association* const association) override { return ArchivingSCP::run(association); }
+  };
+
+  DcmBaseSCPWorker* createSCPWorker() override { return new Worker(*this, shared_); }
+
+ private:
+  StorageServer::Shared& shared_;
+};
+
+void configure(DcmSCPConfig& config, const StorageServerOptions& options) {
+  no_nagle_delay();
+  config.setAETitle(options.ae_title.c_str());
+  config.setPort(options.port);
+  config.setRespondWithCalledAETitle(OFFalse);
+  config.setHostLookupEnabled(OFFalse);
+  // Non-blocking accept with a 1 s timeout: the listening loop notices stop() within a second.
+  config.setConnectionBlockingMode(DUL_NOBLOCK);
+  config.setConnectionTimeout(1);
+  config.setDIMSEBlockingMode(DIMSE_NONBLOCKING);
+  config.setDIMSETimeout(Uint32(options.timeout_seconds));
+  config.setACSETimeout(Uint32(options.timeout_seconds));
+  config.setMaxReceivePDULength(ASC_DEFAULTMAXPDU * 8);
+  OFList<OFString> syntaxes;
+  for (const auto& uid : accepted_transfer_syntaxes()) syntaxes.push_back(uid.c_str());
+  OFList<OFString> verification;
+  verification.push_back(UID_LittleEndianExplicitTransferSyntax);
+  verification.push_back(UID_LittleEndianImplicitTransferSyntax);
+  config.addPresentationContext(UID_VerificationSOPClass, verification);
+  for (const auto& storage : accepted_storage_classes()) config.addPresentationContext(storage.sop_class_uid.c_str(), syntaxes);
+}
+
+// What a killed server left in incoming/ was never acknowledged: the sender still has it.
+void clear_incoming(const std::filesystem::path& incoming) {
+  std::filesystem::create_directories(incoming);
+  for (const auto& entry : std::filesystem::directory_iterator(incoming)) std::filesystem::remove(entry.path());
+}
+
+}  // namespace
+
+StorageServer::StorageServer(StorageServerOptions options) : shared_(std::make_unique<Shared>()) {
+  check_ae_title(options.ae_title, "--aet");
+  if (options.port == 0) throw Error(ErrorCode::kUsage, "--port", "the port must be from 1 to 65535");
+  if (options.max_associations < 1 || options.max_associations > 64)
+    throw Error(ErrorCode::kUsage, "--max-associations", "from 1 to 64");
+  if (options.timeout_seconds < 1 || options.timeout_seconds > 3600)
+    throw Error(ErrorCode::kUsage, "--timeout", "from 1 to 3600 seconds");
+  Archive::open(options.archive, OpenMode::CreateIfMissing);  // create it, or refuse a damaged one, before listening
+  shared_->incoming = options.archive / "incoming";
+  clear_incoming(shared_->incoming);
+  shared_->options = std::move(options);
+}
+
+StorageServer::~StorageServer() = default;
+
+void StorageServer::run() {
+  ArchivingPool pool(*shared_);
+  configure(pool.getConfig(), shared_->options);
+  pool.setMaxThreads(Uint16(shared_->options.max_associations));
+  // DcmBaseSCPPool::listen() starts by setting its mode to "listen", so a stop requested just
+  // before would be lost: it is passed on until the listening loop has ended.
+  std::atomic<bool> listening{true};
+  std::thread pass_stop_on([&] {
+    while (listening) {
+      if (shared_->stop_requested) pool.stopAfterCurrentAssociations();
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+  });
+  const OFCondition result = pool.listen();
+  listening = false;
+  pass_stop_on.join();
+  if (result.bad())
+    throw Error(ErrorCode::kWriteFailed, "port " + std::to_string(shared_->options.port),
+                std::string("cannot listen: ") + result.text());
+}
+
+void StorageServer::stop() {
+  shared_->stop_requested = true;
+}
+
+StorageServerCounts StorageServer::counts() const {
+  return {shared_->associations, shared_->refused, shared_->stored, shared_->already_archived, shared_->failed};
+}
+
+}  // namespace maxillo::net

@@ -1,0 +1,64 @@
+#pragma once
+// The DICOM storage server behind `maxillo serve`: C-ECHO and C-STORE from the peers allowed to
+// call, every received instance archived through Archive::import_paths (hashed, deduplicated by
+// SOP Instance UID, atomic, identity flags), as `maxillo import` would archive the same file.
+//
+// A C-STORE is answered with success only after the object and its index row are durable (the
+// import's syncfs and commit); anything else is answered with a failure status and a reason in
+// the Error Comment, never a success. Several associations are served at once, one thread each,
+// up to max_associations; a peer silent for timeout_seconds is dropped without holding up the
+// others. stop() lets the associations in flight finish, then run() returns.
+//
+// Received datasets are written bit for bit (as the peer encoded them) into ARCHIVE/incoming/
+// and removed once archived or refused; what a killed server leaves there was never
+// acknowledged and is removed at the next start.
+#include <atomic>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "net/dicom_peer.h"
+
+namespace maxillo::net {
+
+struct StorageServerOptions {
+  std::filesystem::path archive;  // an existing archive, or a folder to create one in
+  std::string ae_title = "MAXILLO";
+  uint16_t port = 11112;
+  std::vector<AllowedPeer> allowed;  // calling AE titles (and addresses) that may associate; empty: none
+  int max_associations = 8;
+  int timeout_seconds = 30;  // association negotiation and each DIMSE message
+};
+
+// What the server did since it started.
+struct StorageServerCounts {
+  int64_t associations = 0;      // accepted
+  int64_t refused = 0;           // associations refused (unknown calling AE or address, wrong called AE)
+  int64_t stored = 0;            // instances archived anew
+  int64_t already_archived = 0;  // identical instances received again
+  int64_t failed = 0;            // C-STOREs answered with a failure status
+};
+
+class StorageServer {
+ public:
+  // Checks the options (AE titles, port, limits: Error(kUsage)) and opens or creates the archive.
+  explicit StorageServer(StorageServerOptions options);
+  ~StorageServer();
+  StorageServer(const StorageServer&) = delete;
+  StorageServer& operator=(const StorageServer&) = delete;
+
+  // Listens on 0.0.0.0:port until stop(). Error(kWriteFailed) when the port cannot be opened.
+  void run();
+  // Stops accepting associations; run() returns once those in flight have ended. Any thread.
+  void stop();
+  StorageServerCounts counts() const;
+
+  struct Shared;  // what every association's thread reads and counts into (storage_server.cpp)
+
+ private:
+  std::unique_ptr<Shared> shared_;
+};
+
+}  // namespace maxillo::net

@@ -1,0 +1,222 @@
+// Issue 15: `maxillo serve` as the real program, on a free loopback port, against DCMTK's own
+// network tools (echoscu, storescu) as independent clients: echo, refused AE titles, 1,000
+// instances pushed over 4 associations at once (each sent twice) archived once and byte-exact,
+// bad input answered with a failure status while the server goes on, SIGTERM ends it cleanly.
+// Skips when the DCMTK tools are absent (scripts/setup installs them).
+#include <arpa/inet.h>
+#include <gtest/gtest.h>
+#include <netinet/in.h>
+#include <signal.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <dcmtk/config/osconfig.h>
+#include <dcmtk/dcmdata/dcdeftag.h>
+#include <dcmtk/dcmdata/dcfilefo.h>
+#include <dcmtk/dcmdata/dcmetinf.h>
+#include <dcmtk/dcmdata/dcuid.h>
+
+#include <chrono>
+#include <thread>
+
+#include "archive/archive.h"
+#include "archive/dicom_series_writer.h"
+#include "support/run_command.h"
+#include "support/run_maxillo.h"
+#include "support/temporary_folder.h"
+
+namespace maxillo {
+namespace {
+
+using testing::quote;
+using testing::run_command;
+
+uint16_t free_loopback_port() {
+  const int s = socket(AF_INET, SOCK_STREAM, 0);
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  bind(s, reinterpret_cast<sockaddr*>(&address), sizeof address);
+  socklen_t length = sizeof address;
+  getsockname(s, reinterpret_cast<sockaddr*>(&address), &length);
+  close(s);
+  return ntohs(address.sin_port);
+}
+
+Volume slices(int count, int16_t base) {
+  Volume volume;
+  volume.geometry.size = {16, 16, count};
+  volume.geometry.spacing = {0.5, 0.5, 1.0};
+  volume.hu.resize(size_t(volume.geometry.voxel_count()));
+  for (size_t n = 0; n < volume.hu.size(); ++n) volume.hu[n] = int16_t(base + int(n % 2000) - 1000);
+  return volume;
+}
+
+WrittenSeries write_series(const std::filesystem::path& folder, const std::string& patient_id, int count, int16_t base) {
+  SeriesMetadata metadata;
+  metadata.patient_id = patient_id;
+  metadata.patient_name = "Network^Test";
+  metadata.study_date = "20261125";
+  return write_ct_series(slices(count, base), metadata, folder);
+}
+
+// A copy of a DICOM file changed by `edit` (DCMTK), written with its own transfer syntax.
+void edited_copy(const std::filesystem::path& from, const std::filesystem::path& to, auto edit) {
+  DcmFileFormat file;
+  ASSERT_TRUE(file.loadFile(from.c_str()).good());
+  edit(file);
+  ASSERT_TRUE(file.saveFile(to.c_str(), EXS_LittleEndianExplicit).good());
+}
+
+std::string pixel_data(const std::filesystem::path& path) {
+  DcmFileFormat file;
+  if (!file.loadFile(path.c_str()).good()) return {};
+  const Uint8* bytes = nullptr;
+  unsigned long length = 0;
+  if (!file.getDataset()->findAndGetUint8Array(DCM_PixelData, bytes, &length).good()) return {};
+  return std::string(reinterpret_cast<const char*>(bytes), length);
+}
+
+class Serve : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!testing::tool_available("echoscu") || !testing::tool_available("storescu"))
+      GTEST_SKIP() << "DCMTK's echoscu/storescu are not installed (scripts/setup installs the dcmtk package)";
+    port_ = free_loopback_port();
+    server_ = testing::start_maxillo({"--archive", archive().string(), "serve", "--aet", "MAXILLO", "--port",
+                                      std::to_string(port_), "--allow", "STORESCU", "--allow", "ECHOSCU@127.0.0.1",
+                                      "--max-associations", "6", "--timeout", "10"},
+                                     folder_ / "serve.out", folder_ / "serve.err");
+    ASSERT_GT(server_, 0);
+    for (int attempt = 0; attempt < 200 && echo("ECHOSCU").exit_code != 0; ++attempt) {
+      int status = 0;
+      if (waitpid(server_, &status, WNOHANG) == server_) {
+        server_ = -1;
+        FAIL() << "the server exited: " << server_errors();
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    ASSERT_EQ(echo("ECHOSCU").exit_code, 0) << "the server did not come up: " << server_errors();
+  }
+
+  void TearDown() override {
+    if (server_ > 0) stop_server();
+  }
+
+  // SIGTERM to the server we started (by its PID), and its exit code.
+  int stop_server() {
+    kill(server_, SIGTERM);
+    for (int waited = 0; waited < 300; ++waited) {
+      int status = 0;
+      if (waitpid(server_, &status, WNOHANG) == server_) {
+        server_ = -1;
+        return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    kill(server_, SIGKILL);
+    testing::wait_exit_code(server_);
+    server_ = -1;
+    return -1;
+  }
+
+  std::filesystem::path archive() const { return folder_ / "archive"; }
+  std::string server_errors() const { return testing::slurp(folder_ / "serve.err"); }
+  std::string server_output() const { return testing::slurp(folder_ / "serve.out"); }
+
+  testing::CommandResult echo(const std::string& calling_ae) const {
+    return run_command("echoscu -aet " + calling_ae + " -aec MAXILLO 127.0.0.1 " + std::to_string(port_) + " 2>&1");
+  }
+  std::string storescu(const std::string& calling_ae, const std::vector<std::filesystem::path>& files) const {
+    std::string line = "storescu -aet " + calling_ae + " -aec MAXILLO 127.0.0.1 " + std::to_string(port_);
+    for (const auto& f : files) line += " " + quote(f);
+    return line + " 2>&1";
+  }
+
+  TemporaryFolder folder_{"serve"};
+  uint16_t port_ = 0;
+  pid_t server_ = -1;
+};
+
+TEST_F(Serve, AnswersAnEchoFromAnAllowedPeerAndRefusesAStranger) {
+  const auto stranger = echo("STRANGER");
+  EXPECT_NE(stranger.exit_code, 0);
+  EXPECT_NE(stranger.output.find("Association Rejected"), std::string::npos) << stranger.output;
+  // The same from an allowed title calling from an address it is not allowed from is covered by the
+  // unit tests of is_allowed; here, our own client against our own server.
+  const std::string peer = "MAXILLO@127.0.0.1:" + std::to_string(port_);
+  const auto ours = testing::run_maxillo({"echo", peer, "--aet", "ECHOSCU"}, folder_.path());
+  EXPECT_EQ(ours.exit_code, 0) << ours.err;
+  EXPECT_NE(ours.out.find("answered in"), std::string::npos);
+  const auto refused = testing::run_maxillo({"echo", peer, "--aet", "STRANGER"}, folder_.path());
+  EXPECT_EQ(refused.exit_code, exit_code_for(ErrorCode::kNetwork));
+  EXPECT_NE(refused.err.find("association failed"), std::string::npos) << refused.err;
+  EXPECT_NE(server_errors().find("'STRANGER' from 127.0.0.1 is not allowed"), std::string::npos) << server_errors();
+  EXPECT_EQ(stop_server(), 0);
+}
+
+TEST_F(Serve, ArchivesWhatFourAssociationsPushOnceAndByteExact) {
+  std::vector<WrittenSeries> series;
+  for (int s = 0; s < 4; ++s)
+    series.push_back(write_series(folder_ / ("series" + std::to_string(s)), "NET" + std::to_string(s % 2), 250, int16_t(s)));
+  // Four senders at once, each pushing two series, so that every instance arrives twice.
+  std::vector<std::thread> senders;
+  std::vector<testing::CommandResult> results(4);
+  for (int s = 0; s < 4; ++s)
+    senders.emplace_back([&, s] {
+      std::vector<std::filesystem::path> files = series[size_t(s)].files;
+      const auto& next = series[size_t((s + 1) % 4)].files;
+      files.insert(files.end(), next.begin(), next.end());
+      results[size_t(s)] = run_command(storescu("STORESCU", files));
+    });
+  for (auto& sender : senders) sender.join();
+  for (const auto& result : results) EXPECT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_EQ(stop_server(), 0) << server_errors();
+  EXPECT_NE(server_output().find("1000 instances archived, 1000 already archived, 0 refused"), std::string::npos)
+      << server_output() << server_errors();
+
+  Archive archive = Archive::open(this->archive());
+  int64_t instances = 0;
+  for (const auto& record : archive.series()) instances += int64_t(archive.instances(record.id).size());
+  EXPECT_EQ(instances, 1000);
+  EXPECT_EQ(archive.series().size(), 4u);
+  EXPECT_EQ(archive.patients().size(), 2u);
+  EXPECT_TRUE(archive.verify(RepairMode::ReportOnly, ProgressDisplay::Never).consistent());
+  const auto stored = archive.series_instance_files(archive.resolve_series(series[2].series_instance_uid));
+  ASSERT_EQ(stored.size(), 250u);
+  EXPECT_EQ(pixel_data(stored[17]), pixel_data(series[2].files[17]));
+  EXPECT_FALSE(pixel_data(stored[17]).empty());
+  EXPECT_TRUE(std::filesystem::is_empty(this->archive() / "incoming"));
+}
+
+TEST_F(Serve, AnswersBadInstancesWithAFailureAndGoesOn) {
+  const auto good = write_series(folder_ / "good", "NETBAD", 3, 0);
+  const auto no_study = folder_ / "no-study.dcm";
+  edited_copy(good.files[0], no_study, [](DcmFileFormat& f) { f.getDataset()->findAndDeleteElement(DCM_StudyInstanceUID); });
+  const auto rt_plan = folder_ / "rt-plan.dcm";
+  edited_copy(good.files[1], rt_plan, [](DcmFileFormat& f) {
+    f.getDataset()->putAndInsertString(DCM_SOPClassUID, UID_RTPlanStorage);
+    f.getMetaInfo()->putAndInsertString(DCM_MediaStorageSOPClassUID, UID_RTPlanStorage);
+  });
+
+  const auto missing = run_command(storescu("STORESCU", {no_study}));
+  EXPECT_NE(missing.exit_code, 0) << missing.output;
+  const auto unsupported = run_command(storescu("STORESCU", {rt_plan}));
+  EXPECT_NE(unsupported.exit_code, 0) << unsupported.output;
+  // The server goes on: the good instances are archived afterwards.
+  const auto stored = run_command(storescu("STORESCU", good.files));
+  EXPECT_EQ(stored.exit_code, 0) << stored.output;
+  EXPECT_EQ(stop_server(), 0);
+  EXPECT_NE(server_errors().find("refused (status 0xc000)"), std::string::npos) << server_errors();
+  EXPECT_NE(server_output().find("3 instances archived, 0 already archived, 1 refused"), std::string::npos)
+      << server_output();
+  Archive archive = Archive::open(this->archive());
+  EXPECT_EQ(archive.instances(archive.resolve_series(good.series_instance_uid)).size(), 3u);
+  EXPECT_TRUE(archive.verify(RepairMode::ReportOnly, ProgressDisplay::Never).consistent());
+  // No patient name or ID in the server's log at the default level.
+  EXPECT_EQ(server_errors().find("NETBAD"), std::string::npos) << server_errors();
+  EXPECT_EQ(server_errors().find("Network^Test"), std::string::npos) << server_errors();
+}
+
+}  // namespace
+}  // namespace maxillo
