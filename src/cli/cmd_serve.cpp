@@ -7,23 +7,31 @@
 #include <cerrno>
 
 #include <iostream>
+#include <map>
 #include <thread>
 
 #include "archive/archive_json.h"
 #include "cli/command.h"
 #include "core/error.h"
 #include "core/log.h"
+#include "net/serve_config.h"
 #include "net/storage_server.h"
 
 namespace maxillo::cli {
 namespace {
 
 struct ServeArguments {
+  std::filesystem::path config;
   std::string ae_title = "MAXILLO";
   int port = 11112;
   std::vector<std::string> allowed;
   int max_associations = 8;
   int timeout_seconds = 30;
+  std::string on_stable_study;
+  int stable_seconds = 60;
+  // The options given on the command line (they override the configuration file).
+  std::map<std::string, CLI::Option*> given;
+  bool on_command_line(const std::string& name) const { return given.at(name)->count() > 0; }
 };
 
 // SIGTERM and SIGINT ask the server to stop. Libraries start threads of their own before main
@@ -68,19 +76,28 @@ class StopOnSignal {
   std::thread waiter_;
 };
 
+// The options: the configuration file's (net/serve_config.h), then those given on the command line.
+net::StorageServerOptions server_options(const ServeArguments& a, const GlobalOptions& global) {
+  net::StorageServerOptions options = a.config.empty() ? net::StorageServerOptions{} : net::read_serve_config(a.config);
+  options.archive = resolve_archive_dir(global);
+  if (a.config.empty() || a.on_command_line("--aet")) options.ae_title = a.ae_title;
+  if (a.config.empty() || a.on_command_line("--port")) options.port = uint16_t(a.port);
+  if (a.on_command_line("--allow"))
+    for (const auto& text : a.allowed) options.allowed.push_back(net::parse_allowed_peer(text));
+  if (a.config.empty() || a.on_command_line("--max-associations")) options.max_associations = a.max_associations;
+  if (a.config.empty() || a.on_command_line("--timeout")) options.timeout_seconds = a.timeout_seconds;
+  if (a.config.empty() || a.on_command_line("--on-stable-study")) options.on_stable_study = a.on_stable_study;
+  if (a.config.empty() || a.on_command_line("--stable-seconds")) options.stable_seconds = a.stable_seconds;
+  return options;
+}
+
 void run_serve(const ServeArguments& a, CommandContext& ctx) {
-  net::StorageServerOptions options;
-  options.archive = resolve_archive_dir(ctx.global);
-  options.ae_title = a.ae_title;
-  options.port = uint16_t(a.port);
-  for (const auto& text : a.allowed) options.allowed.push_back(net::parse_allowed_peer(text));
-  options.max_associations = a.max_associations;
-  options.timeout_seconds = a.timeout_seconds;
+  const net::StorageServerOptions options = server_options(a, ctx.global);
   if (options.allowed.empty()) log::warning("serve: no --allow given: every association will be refused");
   net::StorageServer server(options);
   {
     StopOnSignal stop_on_signal(server);
-    if (!ctx.global.quiet) std::cerr << "serve: " << a.ae_title << " listening on port " << a.port << "\n";
+    if (!ctx.global.quiet) std::cerr << "serve: " << options.ae_title << " listening on port " << options.port << "\n";
     server.run();
   }
   const auto counts = server.counts();
@@ -89,12 +106,15 @@ void run_serve(const ServeArguments& a, CommandContext& ctx) {
                                 {"refused_associations", counts.refused},
                                 {"stored", counts.stored},
                                 {"already_archived", counts.already_archived},
-                                {"failed", counts.failed}})
+                                {"failed", counts.failed},
+                                {"stable_study_actions", counts.stable_actions},
+                                {"failed_stable_study_actions", counts.failed_actions}})
               << "\n";
   } else {
     std::cout << "serve stopped: " << counts.associations << " associations (" << counts.refused << " refused), "
               << counts.stored << " instances archived, " << counts.already_archived << " already archived, "
-              << counts.failed << " refused\n";
+              << counts.failed << " refused; " << counts.stable_actions << " stable-study actions ("
+              << counts.failed_actions << " failed)\n";
   }
 }
 
@@ -102,15 +122,28 @@ void run_serve(const ServeArguments& a, CommandContext& ctx) {
 
 void attach_serve(CLI::App& app, CommandContext& ctx) {
   auto a = std::make_shared<ServeArguments>();
-  app.add_option("--aet", a->ae_title, "our AE title (peers call it)")->capture_default_str();
-  app.add_option("--port", a->port, "TCP port to listen on")->check(CLI::Range(1, 65535))->capture_default_str();
-  app.add_option("--allow", a->allowed, "a peer that may store: AE title, or AE@ADDRESS (repeatable; others are refused)");
-  app.add_option("--max-associations", a->max_associations, "associations served at once (more are refused as busy)")
-      ->check(CLI::Range(1, 64))
-      ->capture_default_str();
-  app.add_option("--timeout", a->timeout_seconds, "seconds a peer may stay silent before it is dropped")
-      ->check(CLI::Range(1, 3600))
-      ->capture_default_str();
+  auto& given = a->given;
+  app.add_option("--config", a->config, "JSON configuration (README: Receiving from scanners and PACS); options given here override it")
+      ->check(CLI::ExistingFile);
+  given["--aet"] = app.add_option("--aet", a->ae_title, "our AE title (peers call it)")->capture_default_str();
+  given["--port"] =
+      app.add_option("--port", a->port, "TCP port to listen on")->check(CLI::Range(1, 65535))->capture_default_str();
+  given["--allow"] =
+      app.add_option("--allow", a->allowed, "a peer that may store: AE title, or AE@ADDRESS (repeatable; others are refused)");
+  given["--max-associations"] =
+      app.add_option("--max-associations", a->max_associations, "associations served at once (more are refused as busy)")
+          ->check(CLI::Range(1, 64))
+          ->capture_default_str();
+  given["--timeout"] = app.add_option("--timeout", a->timeout_seconds, "seconds a peer may stay silent before it is dropped")
+                           ->check(CLI::Range(1, 3600))
+                           ->capture_default_str();
+  given["--on-stable-study"] = app.add_option(
+      "--on-stable-study", a->on_stable_study,
+      "shell command run once a study has had nothing new for --stable-seconds (again after each change); "
+      "environment: MAXILLO_ARCHIVE, MAXILLO_STUDY_UID, MAXILLO_CASE");
+  given["--stable-seconds"] = app.add_option("--stable-seconds", a->stable_seconds, "quiet time after which a study is stable")
+                                  ->check(CLI::Range(1, 86400))
+                                  ->capture_default_str();
   app.callback([a, &ctx] { run_serve(*a, ctx); });
 }
 

@@ -30,6 +30,7 @@ void attach_sample_postop(CLI::App&, CommandContext&);
 void attach_role(CLI::App&, CommandContext&);
 void attach_serve(CLI::App&, CommandContext&);
 void attach_echo(CLI::App&, CommandContext&);
+void attach_send(CLI::App&, CommandContext&);
 
 std::span<const CommandSpec> command_table() {
   static const std::array kCommands = {
@@ -43,6 +44,7 @@ std::span<const CommandSpec> command_table() {
       CommandSpec{"export", "Archive", "write a series' original files into a folder", attach_export},
       CommandSpec{"bench", "Archive", "benchmarks (bench import, bench cube, bench occlusion)", attach_bench},
       CommandSpec{"serve", "Network", "DICOM storage server: archive what scanners and PACS send (C-STORE, C-ECHO)", attach_serve},
+      CommandSpec{"send", "Network", "C-STORE series, studies or a case's reports to a PACS (--deidentify for copies)", attach_send},
       CommandSpec{"echo", "Network", "C-ECHO a DICOM peer: AE@HOST:PORT", attach_echo},
       CommandSpec{"surfaces", "Imaging", "skin and bone surfaces from a DICOM series", attach_surfaces},
       CommandSpec{"convert", "Imaging", "wrap a MetaImage/NRRD volume as a DICOM CT series", attach_convert},

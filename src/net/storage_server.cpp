@@ -15,6 +15,8 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "net/no_nagle_delay.h"
+#include "net/stable_studies.h"
+#include "net/stable_study_action.h"
 #include "net/storage_classes.h"
 
 namespace maxillo::net {
@@ -25,6 +27,8 @@ struct StorageServer::Shared {
   std::atomic<int64_t> associations{0}, refused{0}, stored{0}, already_archived{0}, failed{0};
   std::atomic<int64_t> next_file{0};
   std::atomic<bool> stop_requested{false};
+  std::unique_ptr<StableStudies> stable;  // set when there is a stable-study action
+  std::atomic<int64_t> stable_actions{0}, failed_actions{0};
 };
 
 namespace {
@@ -95,7 +99,7 @@ class ArchivingSCP : public DcmThreadSCP {
       ++shared_.failed;
       return received;
     }
-    const StoreAnswer answer = archive_file(file);
+    const StoreAnswer answer = archive_file(file, request.AffectedSOPInstanceUID);
     std::filesystem::remove(file);
     if (answer.status != STATUS_Success) {
       ++failed_;
@@ -116,12 +120,20 @@ class ArchivingSCP : public DcmThreadSCP {
     return shared_.incoming / ("received-" + std::to_string(getpid()) + "-" + std::to_string(++shared_.next_file) + ".dcm");
   }
 
-  StoreAnswer archive_file(const std::filesystem::path& file) {
+  std::string study_of(const std::string& sop_instance_uid) const {
+    const ResolvedItem item = archive_->resolve(sop_instance_uid);
+    if (item.kind != ItemKind::Instance) throw Error(ErrorCode::kNotFound, sop_instance_uid, "not an archived instance");
+    const auto instance = archive_->instance(item.id);
+    return archive_->study(archive_->series_by_id(instance->series)->study)->study_uid;
+  }
+
+  StoreAnswer archive_file(const std::filesystem::path& file, const std::string& sop_instance_uid) {
     try {
       // One archive connection per association: SQLite serialises the writers, the hashing and
       // parsing of several associations run side by side.
       if (!archive_) archive_.emplace(Archive::open(shared_.options.archive));
       const ImportReport report = archive_->import_paths({file}, {.progress = ProgressDisplay::Never, .batch_files = 1});
+      if (report.imported == 1 && shared_.stable) shared_.stable->archived(study_of(sop_instance_uid), StableStudies::Clock::now());
       shared_.stored += int64_t(report.imported);
       shared_.already_archived += int64_t(report.already_archived);
       return answer_for(report);
@@ -196,6 +208,11 @@ StorageServer::StorageServer(StorageServerOptions options) : shared_(std::make_u
   if (options.timeout_seconds < 1 || options.timeout_seconds > 3600)
     throw Error(ErrorCode::kUsage, "--timeout", "from 1 to 3600 seconds");
   Archive::open(options.archive, OpenMode::CreateIfMissing);  // create it, or refuse a damaged one, before listening
+  if (!options.on_stable_study.empty()) {
+    if (options.stable_seconds < 1 || options.stable_seconds > 86400)
+      throw Error(ErrorCode::kUsage, "--stable-seconds", "from 1 to 86400 seconds");
+    shared_->stable = std::make_unique<StableStudies>(std::chrono::seconds(options.stable_seconds));
+  }
   shared_->incoming = options.archive / "incoming";
   clear_incoming(shared_->incoming);
   shared_->options = std::move(options);
@@ -216,9 +233,21 @@ void StorageServer::run() {
       std::this_thread::sleep_for(std::chrono::milliseconds(100));
     }
   });
+  std::thread stable_actions([&] {
+    if (!shared_->stable) return;
+    while (listening) {
+      for (const auto& study : shared_->stable->take_due(StableStudies::Clock::now())) {
+        const int status = run_stable_study_action(shared_->options.on_stable_study, shared_->options.archive, study);
+        ++shared_->stable_actions;
+        if (status != 0) ++shared_->failed_actions;
+      }
+      for (int tick = 0; tick < 10 && listening; ++tick) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+  });
   const OFCondition result = pool.listen();
   listening = false;
   pass_stop_on.join();
+  stable_actions.join();
   if (result.bad())
     throw Error(ErrorCode::kWriteFailed, "port " + std::to_string(shared_->options.port),
                 std::string("cannot listen: ") + result.text());
@@ -229,7 +258,9 @@ void StorageServer::stop() {
 }
 
 StorageServerCounts StorageServer::counts() const {
-  return {shared_->associations, shared_->refused, shared_->stored, shared_->already_archived, shared_->failed};
+  return {shared_->associations, shared_->refused,        shared_->stored,
+          shared_->already_archived, shared_->failed, shared_->stable_actions,
+          shared_->failed_actions};
 }
 
 }  // namespace maxillo::net

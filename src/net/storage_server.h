@@ -9,6 +9,9 @@
 // up to max_associations; a peer silent for timeout_seconds is dropped without holding up the
 // others. stop() lets the associations in flight finish, then run() returns.
 //
+// Stable studies (options.on_stable_study): a thread looks once a second for studies quiet for
+// stable_seconds (net/stable_studies.h) and runs the command for each, one at a time.
+//
 // Received datasets are written bit for bit (as the peer encoded them) into ARCHIVE/incoming/
 // and removed once archived or refused; what a killed server leaves there was never
 // acknowledged and is removed at the next start.
@@ -30,6 +33,11 @@ struct StorageServerOptions {
   std::vector<AllowedPeer> allowed;  // calling AE titles (and addresses) that may associate; empty: none
   int max_associations = 8;
   int timeout_seconds = 30;  // association negotiation and each DIMSE message
+  // When a study has had nothing new archived for stable_seconds, this shell command runs once
+  // (again after each later change), with MAXILLO_ARCHIVE, MAXILLO_STUDY_UID and MAXILLO_CASE (the
+  // archive id of the patient's default case) in its environment. Empty: no action.
+  std::string on_stable_study;
+  int stable_seconds = 60;
 };
 
 // What the server did since it started.
@@ -39,6 +47,8 @@ struct StorageServerCounts {
   int64_t stored = 0;            // instances archived anew
   int64_t already_archived = 0;  // identical instances received again
   int64_t failed = 0;            // C-STOREs answered with a failure status
+  int64_t stable_actions = 0;    // stable-study commands run
+  int64_t failed_actions = 0;    // ... of which exited non-zero
 };
 
 class StorageServer {

@@ -17,6 +17,7 @@
 #include <dcmtk/dcmdata/dcuid.h>
 
 #include <chrono>
+#include <fstream>
 #include <thread>
 
 #include "archive/archive.h"
@@ -83,10 +84,11 @@ class Serve : public ::testing::Test {
     if (!testing::tool_available("echoscu") || !testing::tool_available("storescu"))
       GTEST_SKIP() << "DCMTK's echoscu/storescu are not installed (scripts/setup installs the dcmtk package)";
     port_ = free_loopback_port();
-    server_ = testing::start_maxillo({"--archive", archive().string(), "serve", "--aet", "MAXILLO", "--port",
-                                      std::to_string(port_), "--allow", "STORESCU", "--allow", "ECHOSCU@127.0.0.1",
-                                      "--max-associations", "6", "--timeout", "10"},
-                                     folder_ / "serve.out", folder_ / "serve.err");
+    std::vector<std::string> arguments = {"--archive", archive().string(), "serve", "--aet", "MAXILLO", "--port",
+                                          std::to_string(port_), "--allow", "STORESCU", "--allow", "ECHOSCU@127.0.0.1",
+                                          "--max-associations", "6", "--timeout", "10"};
+    for (auto& extra : extra_arguments()) arguments.push_back(std::move(extra));
+    server_ = testing::start_maxillo(arguments, folder_ / "serve.out", folder_ / "serve.err");
     ASSERT_GT(server_, 0);
     for (int attempt = 0; attempt < 200 && echo("ECHOSCU").exit_code != 0; ++attempt) {
       int status = 0;
@@ -102,6 +104,8 @@ class Serve : public ::testing::Test {
   void TearDown() override {
     if (server_ > 0) stop_server();
   }
+
+  virtual std::vector<std::string> extra_arguments() { return {}; }
 
   // SIGTERM to the server we started (by its PID), and its exit code.
   int stop_server() {
@@ -216,6 +220,125 @@ TEST_F(Serve, AnswersBadInstancesWithAFailureAndGoesOn) {
   // No patient name or ID in the server's log at the default level.
   EXPECT_EQ(server_errors().find("NETBAD"), std::string::npos) << server_errors();
   EXPECT_EQ(server_errors().find("Network^Test"), std::string::npos) << server_errors();
+}
+
+// A pushed instance the sender abandons half-way (storescu killed while the server receives it)
+// leaves nothing: no row, no file in incoming/; the server goes on. Instances already answered
+// survive a kill -9 of the server.
+TEST_F(Serve, LosesNothingAcknowledgedAndKeepsNothingHalfReceived) {
+  Volume large;
+  large.geometry.size = {8192, 8192, 1};
+  large.geometry.spacing = {0.1, 0.1, 1.0};
+  large.hu.assign(size_t(large.geometry.voxel_count()), 40);
+  const auto huge = write_ct_series(large, {}, folder_ / "huge");
+  std::string storescu_path = run_command("command -v storescu").output;
+  storescu_path.erase(storescu_path.find_last_not_of('\n') + 1);
+  const pid_t sender = testing::start_process({storescu_path, "-aet", "STORESCU", "-aec", "MAXILLO", "127.0.0.1",
+                                               std::to_string(port_), huge.files[0].string()},
+                                              folder_ / "sender.out", folder_ / "sender.err");
+  bool receiving = false;
+  for (int waited = 0; waited < 20000 && !receiving; ++waited) {
+    for (const auto& entry : std::filesystem::directory_iterator(archive() / "incoming"))
+      receiving |= entry.is_regular_file() && entry.file_size() > 0;
+    if (!receiving) std::this_thread::sleep_for(std::chrono::microseconds(500));
+  }
+  kill(sender, SIGKILL);
+  testing::wait_exit_code(sender);
+  ASSERT_TRUE(receiving) << "the transfer was never seen in progress";
+  for (int waited = 0; waited < 100 && !std::filesystem::is_empty(archive() / "incoming"); ++waited)
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  EXPECT_TRUE(std::filesystem::is_empty(archive() / "incoming"));
+  EXPECT_EQ(echo("ECHOSCU").exit_code, 0) << "the server goes on";
+
+  const auto small = write_series(folder_ / "small", "NETKILL", 20, 0);
+  ASSERT_EQ(run_command(storescu("STORESCU", small.files)).exit_code, 0);
+  kill(server_, SIGKILL);
+  testing::wait_exit_code(server_);
+  server_ = -1;
+  Archive archive = Archive::open(this->archive());
+  EXPECT_EQ(archive.series().size(), 1u) << "the abandoned instance made no series";
+  EXPECT_EQ(archive.instances(archive.resolve_series(small.series_instance_uid)).size(), 20u);
+  EXPECT_TRUE(archive.verify(RepairMode::ReportOnly, ProgressDisplay::Never).consistent());
+}
+
+// `maxillo send` from another archive into this server: the archived series arrives with its
+// UIDs and pixel data; --deidentify sends pseudonymised copies (new UIDs, an ANON- patient).
+TEST_F(Serve, ReceivesWhatMaxilloSendsOriginalAndDeidentified) {
+  const auto written = write_series(folder_ / "source-files", "NETSEND", 12, 5);
+  const auto source = folder_ / "source";
+  Archive::open(source, OpenMode::CreateIfMissing).import_paths({folder_ / "source-files"}, {.progress = ProgressDisplay::Never});
+  const std::string peer = "MAXILLO@127.0.0.1:" + std::to_string(port_);
+  const auto original = testing::run_maxillo(
+      {"--archive", source.string(), "send", written.series_instance_uid, "--to", peer, "--aet", "STORESCU"}, folder_.path());
+  EXPECT_EQ(original.exit_code, 0) << original.err;
+  EXPECT_NE(original.out.find("sent 12 instances"), std::string::npos) << original.out;
+  const auto anonymous = testing::run_maxillo(
+      {"--archive", source.string(), "send", "NETSEND", "--deidentify", "--to", peer, "--aet", "STORESCU"}, folder_.path());
+  EXPECT_EQ(anonymous.exit_code, 0) << anonymous.err;
+  const auto stranger = testing::run_maxillo(
+      {"--archive", source.string(), "send", "NETSEND", "--to", peer, "--aet", "STRANGER"}, folder_.path());
+  EXPECT_EQ(stranger.exit_code, exit_code_for(ErrorCode::kNetwork)) << stranger.err;
+  EXPECT_EQ(stop_server(), 0);
+
+  Archive archive = Archive::open(this->archive());
+  const auto received = archive.series_instance_files(archive.resolve_series(written.series_instance_uid));
+  ASSERT_EQ(received.size(), 12u);
+  for (size_t i = 0; i < received.size(); ++i) EXPECT_EQ(pixel_data(received[i]), pixel_data(written.files[i])) << i;
+  ASSERT_EQ(archive.patients().size(), 2u);
+  bool pseudonym = false;
+  for (const auto& patient : archive.patients()) pseudonym |= patient.patient_id.rfind("ANON-", 0) == 0;
+  EXPECT_TRUE(pseudonym);
+  EXPECT_EQ(archive.series().size(), 2u);
+}
+
+// The stable-study action, configured in a configuration file beside command-line options: run
+// once when a study has been quiet for a second, not again for instances received again, again
+// when a new series arrives in the study.
+class ServeWithStableAction : public Serve {
+ protected:
+  std::vector<std::string> extra_arguments() override {
+    std::ofstream(folder_ / "serve.json")
+        << R"({"ae_title": "IGNORED", "stable_study": {"after_seconds": 1, "command": "echo \"$MAXILLO_STUDY_UID case:$MAXILLO_CASE\" >> )"
+        << (folder_ / "stable.txt").string() << R"("}})";
+    return {"--config", (folder_ / "serve.json").string()};
+  }
+
+  std::vector<std::string> actions_after(size_t count) const {
+    std::vector<std::string> lines;
+    for (int waited = 0; waited < 100; ++waited) {
+      lines.clear();
+      std::ifstream in(folder_ / "stable.txt");
+      for (std::string line; std::getline(in, line);) lines.push_back(line);
+      if (lines.size() >= count) break;
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    return lines;
+  }
+};
+
+TEST_F(ServeWithStableAction, RunsOncePerChangeOfAStudy) {
+  const auto first = write_series(folder_ / "first", "NETSTABLE", 3, 0);
+  ASSERT_EQ(run_command(storescu("STORESCU", first.files)).exit_code, 0);
+  auto lines = actions_after(1);
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_EQ(lines[0].rfind(first.study_instance_uid + " case:", 0), 0u) << lines[0];
+  EXPECT_GT(lines[0].size(), first.study_instance_uid.size() + 6) << "the case id is given";
+
+  ASSERT_EQ(run_command(storescu("STORESCU", first.files)).exit_code, 0);  // already archived: no change
+  std::this_thread::sleep_for(std::chrono::milliseconds(2500));
+  EXPECT_EQ(actions_after(1).size(), 1u);
+
+  SeriesMetadata metadata;
+  metadata.patient_id = "NETSTABLE";
+  metadata.study_instance_uid = first.study_instance_uid;
+  metadata.series_number = 2;
+  const auto second = write_ct_series(slices(2, 7), metadata, folder_ / "second");
+  ASSERT_EQ(run_command(storescu("STORESCU", second.files)).exit_code, 0);
+  lines = actions_after(2);
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_EQ(lines[1], lines[0]);
+  EXPECT_EQ(stop_server(), 0);
+  EXPECT_NE(server_output().find("2 stable-study actions (0 failed)"), std::string::npos) << server_output();
 }
 
 }  // namespace

@@ -21,11 +21,10 @@ struct RunResult {
   std::string err;
 };
 
-// Starts maxillo with args; stdout and stderr go to the given files. Returns the child's pid.
-inline pid_t start_maxillo(const std::vector<std::string>& args, const std::filesystem::path& out,
+// Starts the program argv[0] (a path) with its arguments; stdout and stderr go to the given
+// files. Returns the child's pid.
+inline pid_t start_process(std::vector<std::string> all, const std::filesystem::path& out,
                            const std::filesystem::path& err) {
-  std::vector<std::string> all = {MAXILLO_BINARY};
-  all.insert(all.end(), args.begin(), args.end());
   std::vector<char*> argv;
   for (auto& a : all) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -37,6 +36,14 @@ inline pid_t start_maxillo(const std::vector<std::string>& args, const std::file
   posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
   return pid;
+}
+
+// Starts maxillo with args, as start_process.
+inline pid_t start_maxillo(const std::vector<std::string>& args, const std::filesystem::path& out,
+                           const std::filesystem::path& err) {
+  std::vector<std::string> all = {MAXILLO_BINARY};
+  all.insert(all.end(), args.begin(), args.end());
+  return start_process(std::move(all), out, err);
 }
 
 inline int wait_exit_code(pid_t pid) {

@@ -1,0 +1,28 @@
+#include "net/association_requestor.h"
+
+#include "core/error.h"
+#include "net/no_nagle_delay.h"
+
+namespace maxillo::net {
+
+void configure_requestor(DcmSCU& scu, const DicomPeer& peer, const std::string& calling_ae, int timeout_seconds) {
+  check_ae_title(calling_ae, "--aet");
+  no_nagle_delay();
+  scu.setAETitle(calling_ae.c_str());
+  scu.setPeerAETitle(peer.ae_title.c_str());
+  scu.setPeerHostName(peer.host.c_str());
+  scu.setPeerPort(peer.port);
+  scu.setConnectionTimeout(timeout_seconds);
+  scu.setACSETimeout(Uint32(timeout_seconds));
+  scu.setDIMSEBlockingMode(DIMSE_NONBLOCKING);
+  scu.setDIMSETimeout(Uint32(timeout_seconds));
+}
+
+void request_association(DcmSCU& scu, const DicomPeer& peer) {
+  if (OFCondition c = scu.initNetwork(); c.bad())
+    throw Error(ErrorCode::kNetwork, to_string(peer), std::string("cannot set up the network: ") + c.text());
+  if (OFCondition c = scu.negotiateAssociation(); c.bad())
+    throw Error(ErrorCode::kNetwork, to_string(peer), std::string("association failed: ") + c.text());
+}
+
+}  // namespace maxillo::net
