@@ -82,17 +82,20 @@ int run_demo(const DemoOptions& options, const GlobalOptions& global) {
                                                   "TS-MD distraction: 10 mm advancement, 6 mm widening"));
   auto plan = pipeline::apply_case_plan(archive, case_id, options.out / "plan");
   clock.mark("plan");
-  // The face for the planned move (issue #3): the plan's maxillary move, mass tensor model.
+  // The face for the planned move (issue #3): the plan's maxillary move, mass tensor model. The
+  // face's tet model is built once here and serves the synthetic post-operative CT and the
+  // validation too.
+  const auto planned = pipeline::load_planned_case(archive, case_id, &plan.tissues);
   pipeline::SimulationRequest simulation;
   simulation.plan = plan.plan.plan;
   simulation.out = options.out / "soft-tissue";
   simulation.uncertainty = true;
+  simulation.face_model = planned.face_model(simulation.options);
   auto predicted = pipeline::simulate_case(archive, case_id, simulation, &plan.tissues);
   report_options.soft_tissue = predicted.section;
   clock.mark("soft tissue");
   // Validation (issue #7): a synthetic post-operative CT with a known error, registered, the
   // bone moves found by ICP, the face predicted for them and compared; then the nightly summary.
-  const auto planned = pipeline::load_planned_case(archive, case_id, &plan.tissues);
   auto postop = pipeline::make_synthetic_postop_case(archive, case_id, {}, options.out / "postop", true, "", &planned);
   clock.mark("synthetic post-operative CT");
   auto validation = pipeline::validate_case(archive, case_id, {}, options.out / "validation", &planned);

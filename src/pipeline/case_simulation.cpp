@@ -153,7 +153,7 @@ SimulationResult simulate_case(Archive& archive, int64_t case_id, const Simulati
   result.skin_before =
       case_surfaces(archive, case_id, series, recipe, case_tissues.ct_labels_for(recipe.segmentation)).skin;
   SoftTissueInput input{&tissues, &cut.segments, &result.skin_before, landmarks, moves_by_segment(applied)};
-  result.prediction = predict_soft_tissue(input, request.options);
+  result.prediction = predict_soft_tissue(input, request.options, request.face_model.get());
   if (request.uncertainty) result.uncertainty = prediction_uncertainty(result.prediction, result.skin_before, request.options);
 
   std::filesystem::create_directories(request.out);

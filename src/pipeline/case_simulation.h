@@ -4,6 +4,7 @@
 // segments, the face predicted (soft_tissue_prediction.h), optionally the uncertainty across
 // models and Poisson ratios, and the results written as files and pictures.
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,6 +24,9 @@ struct SimulationRequest {
   std::string plan_text;          // one line for the report, e.g. "maxilla 6.0 mm advancement"
   SoftTissueOptions options;
   bool uncertainty = false;       // also solve with every model and Poisson 0.45 and 0.49
+  // The case's face model when the caller has it (PlannedCase::face_model with these options);
+  // null: built here. A model of other tissues, landmarks or meshing options is refused.
+  std::shared_ptr<const FaceModel> face_model;
   std::filesystem::path out;      // folder (created) for the files and pictures
 };
 

@@ -264,7 +264,8 @@ CaseValidation validate_case(Archive& archive, int64_t case_id, const Validation
   SegmentMoves actual;
   for (const auto& s : v.segments) actual[s.segment] = s.actual;
   const SoftTissueInput input{&planned.tissues.jaws, &planned.cut.segments, &planned.skin, planned.landmarks, actual};
-  v.predicted_skin = predict_soft_tissue(input, options.soft_tissue).skin_after;
+  v.predicted_skin =
+      predict_soft_tissue(input, options.soft_tissue, planned.face_model(options.soft_tissue).get()).skin_after;
 
   log::info("validation: predicted against post-operative skin");
   v.regions = face_regions_of(planned.skin, planned.landmarks, options.regions);

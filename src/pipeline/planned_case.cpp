@@ -1,5 +1,7 @@
 #include "pipeline/planned_case.h"
 
+#include <mutex>
+
 #include "core/error.h"
 #include "imaging/volume_assembly.h"
 #include "pipeline/archived_series.h"
@@ -9,6 +11,12 @@
 #include "planning/distractor_checks.h"
 
 namespace maxillo::pipeline {
+
+struct PlannedCase::FaceModels {
+  std::mutex mutex;
+  std::map<std::string, std::shared_ptr<const FaceModel>> by_key;
+};
+
 
 SegmentMoves moves_by_segment(const planning::PlanResult& applied) {
   SegmentMoves moves;
@@ -27,6 +35,7 @@ PlannedCase load_planned_case(Archive& archive, int64_t case_id, const CaseTissu
   if (!plan) throw Error(ErrorCode::kNotFound, subject, "the case has no plan: make one first (maxillo plan create)");
   c.plan = std::move(*plan);
   c.preop_series = primary_series(archive.case_contents(case_id));
+  c.face_models = std::make_shared<PlannedCase::FaceModels>();
   c.preop_ct = load_archived_series(archive, c.preop_series);
   c.tissues = tissues ? *tissues : segment_case_tissues(c.preop_ct, c.landmarks);
   c.applied =
@@ -36,6 +45,15 @@ PlannedCase load_planned_case(Archive& archive, int64_t case_id, const CaseTissu
   const SurfaceRecipe recipe;
   c.skin = case_surfaces(archive, case_id, c.preop_series, recipe, c.tissues.ct_labels_for(recipe.segmentation)).skin;
   return c;
+}
+
+std::shared_ptr<const FaceModel> PlannedCase::face_model(const SoftTissueOptions& options) const {
+  if (!face_models) return std::make_shared<const FaceModel>(build_face_model(tissues.jaws, landmarks, options));
+  const std::string key = face_model_key(tissues.jaws, landmarks, options);
+  std::lock_guard lock(face_models->mutex);
+  auto& model = face_models->by_key[key];
+  if (!model) model = std::make_shared<const FaceModel>(build_face_model(tissues.jaws, landmarks, options));
+  return model;
 }
 
 }  // namespace maxillo::pipeline

@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 #include <cstdint>
 #include <map>
+#include <memory>
 
 #include "archive/archive.h"
 #include "ceph/landmark.h"
@@ -12,6 +13,7 @@
 #include "core/volume.h"
 #include "pipeline/case_tissues.h"
 #include "pipeline/plan_archive.h"
+#include "pipeline/soft_tissue_prediction.h"
 #include "planning/osteotomy.h"
 #include "planning/plan_application.h"
 
@@ -31,6 +33,15 @@ struct PlannedCase {
   planning::OsteotomyResult cut;  // bone segments of tissues.jaws
   SegmentMoves planned_moves;     // the segments the plan moves
   TriangleMesh skin;              // pre-operative skin (case_surfaces.h)
+
+  // The face's tet model of these tissues and landmarks (soft_tissue_prediction.h), built on first
+  // use for the options' meshing and shared by every prediction made from this case: the planned
+  // move of the synthetic post-operative scan, the moves the validation finds. Any thread. A
+  // PlannedCase not made by load_planned_case builds a new model at each call.
+  std::shared_ptr<const FaceModel> face_model(const SoftTissueOptions& options) const;
+
+  struct FaceModels;  // the models built so far, by key (planned_case.cpp); shared by copies
+  std::shared_ptr<FaceModels> face_models;
 };
 
 // Error(kNotFound) naming the case when it has no plan, no landmarks or no CT; what loading, segmentation and

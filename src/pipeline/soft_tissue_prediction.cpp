@@ -2,8 +2,10 @@
 
 #include <array>
 #include <chrono>
+#include <cstdio>
 
 #include "core/error.h"
+#include "core/sha256.h"
 #include "render/anatomical_views.h"
 #include "softtissue/linear_static_solve.h"
 #include "softtissue/mass_spring_model.h"
@@ -122,22 +124,63 @@ std::vector<softtissue::RegionPlane> default_face_region_planes(const LandmarkSe
           {*porion, frame.anterior}};                                // in front of the ears
 }
 
-SoftTissuePrediction predict_soft_tissue(const SoftTissueInput& input, const SoftTissueOptions& options) {
-  SoftTissuePrediction prediction;
+std::string face_model_key(const LabelVolume& tissues, const LandmarkSet& landmarks, const SoftTissueOptions& options) {
+  // Every field of the meshing options is in the key: a new field must be added here too.
+  static_assert(sizeof(tetmesh::TetMeshingOptions) == 64, "update face_model_key for the new meshing option");
+  Sha256 hash;
+  hash.update(std::string_view(reinterpret_cast<const char*>(tissues.labels.data()), tissues.labels.size()));
+  char text[512];
+  const auto& g = tissues.geometry;
+  std::snprintf(text, sizeof text, "grid %d %d %d %.17g %.17g %.17g %.17g %.17g %.17g\n", g.size.x(), g.size.y(),
+                g.size.z(), g.spacing.x(), g.spacing.y(), g.spacing.z(), g.origin.x(), g.origin.y(), g.origin.z());
+  hash.update(text);
+  for (const auto& plane : default_face_region_planes(landmarks)) {
+    std::snprintf(text, sizeof text, "plane %.17g %.17g %.17g %.17g %.17g %.17g\n", plane.point.x(), plane.point.y(),
+                  plane.point.z(), plane.normal.x(), plane.normal.y(), plane.normal.z());
+    hash.update(text);
+  }
+  for (uint8_t label : options.soft_labels) hash.update("label " + std::to_string(label) + "\n");
+  const auto& m = options.meshing;
+  std::snprintf(text, sizeof text, "meshing %.17g %.17g %.17g %.17g %d %.17g %.17g %d\n", m.cell_size_mm,
+                m.facet_distance_mm, m.facet_angle_deg, m.radius_edge_ratio, m.max_tets, m.optimise_seconds,
+                m.sliver_bound_deg, m.random_seed);
+  hash.update(text);
+  return hash.hex_digest();
+}
+
+FaceModel build_face_model(const LabelVolume& tissues, const LandmarkSet& landmarks, const SoftTissueOptions& options) {
+  FaceModel model;
+  model.key = face_model_key(tissues, landmarks, options);
   auto start = Clock::now();
-  const auto planes = default_face_region_planes(input.landmarks);
-  const auto region = softtissue::face_region(*input.tissues, options.soft_labels, planes);
-  prediction.seconds.region = seconds_since(start);
+  model.planes = default_face_region_planes(landmarks);
+  const auto region = softtissue::face_region(tissues, options.soft_labels, model.planes);
+  model.region_seconds = seconds_since(start);
 
   start = Clock::now();
   auto meshed = tetmesh::mesh_label(region, 1, options.meshing);
-  prediction.mesh = std::move(meshed.mesh);
-  prediction.cell_size_mm = meshed.cell_size_mm;
-  prediction.quality = softtissue::mesh_quality(prediction.mesh);
-  prediction.seconds.meshing = seconds_since(start);
+  model.mesh = std::move(meshed.mesh);
+  model.cell_size_mm = meshed.cell_size_mm;
+  model.quality = softtissue::mesh_quality(model.mesh);
+  model.meshing_seconds = seconds_since(start);
+  return model;
+}
 
-  start = Clock::now();
-  auto attachment = softtissue::attach_to_bone(prediction.mesh, *input.segments, input.moves, planes, options.attachment);
+SoftTissuePrediction predict_soft_tissue(const SoftTissueInput& input, const SoftTissueOptions& options,
+                                         const FaceModel* given) {
+  const FaceModel built = given ? FaceModel{} : build_face_model(*input.tissues, input.landmarks, options);
+  if (given && given->key != face_model_key(*input.tissues, input.landmarks, options))
+    throw Error(ErrorCode::kProcessing, "soft tissue model",
+                "the face model given was built from other tissues, landmarks or meshing options");
+  const FaceModel& model = given ? *given : built;
+  SoftTissuePrediction prediction;
+  prediction.mesh = model.mesh;
+  prediction.cell_size_mm = model.cell_size_mm;
+  prediction.quality = model.quality;
+  prediction.seconds.region = given ? 0 : model.region_seconds;
+  prediction.seconds.meshing = given ? 0 : model.meshing_seconds;
+
+  auto start = Clock::now();
+  auto attachment = softtissue::attach_to_bone(prediction.mesh, *input.segments, input.moves, model.planes, options.attachment);
   prediction.bc = std::move(attachment.bc);
   prediction.seconds.attachment = seconds_since(start);
   if (softtissue::count_nodes(prediction.bc, softtissue::NodeConstraint::kFixed) == 0)

@@ -11,6 +11,7 @@
 #include <Eigen/Geometry>
 #include <map>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -70,7 +71,27 @@ struct SoftTissuePrediction {
 // porions (each needs the landmark; missing ones -> Error naming them).
 std::vector<softtissue::RegionPlane> default_face_region_planes(const LandmarkSet& landmarks);
 
-SoftTissuePrediction predict_soft_tissue(const SoftTissueInput& input, const SoftTissueOptions& options = {});
+// Steps 1-2, which look at no move: the face region and its tet mesh. Built once for a case, one
+// model serves every move on the same tissues and landmarks (the planned move, the moves found after
+// surgery); `key` names what it was built from, and predict_soft_tissue refuses a model whose key
+// is not its input's.
+struct FaceModel {
+  std::vector<softtissue::RegionPlane> planes;
+  softtissue::TetMesh mesh;
+  softtissue::MeshQuality quality;
+  double cell_size_mm = 0;
+  double region_seconds = 0, meshing_seconds = 0;
+  std::string key;
+};
+FaceModel build_face_model(const LabelVolume& tissues, const LandmarkSet& landmarks, const SoftTissueOptions& options);
+// SHA-256 over the tissue labels, the region's planes, the soft labels and the meshing options.
+std::string face_model_key(const LabelVolume& tissues, const LandmarkSet& landmarks, const SoftTissueOptions& options);
+
+// `model`: the case's face model when the caller has it (build_face_model with the same tissues,
+// landmarks and options; Error(kProcessing) otherwise), else it is built here. The same answer
+// either way.
+SoftTissuePrediction predict_soft_tissue(const SoftTissueInput& input, const SoftTissueOptions& options = {},
+                                         const FaceModel* model = nullptr);
 
 // Re-solves an existing model (same mesh and boundary nodes) with another model or material,
 // for the uncertainty band; fills node_displacement, skin_after and skin_displacement.

@@ -240,7 +240,8 @@ SyntheticPostop make_synthetic_postop(const PlannedCase& planned, const Syntheti
 
   log::info("synthetic post-operative CT: predicting the face for the planned moves");
   SoftTissueInput input{&planned.tissues.jaws, &planned.cut.segments, &planned.skin, planned.landmarks, result.moves};
-  const SoftTissuePrediction prediction = predict_soft_tissue(input, options.soft_tissue);
+  const SoftTissuePrediction prediction =
+      predict_soft_tissue(input, options.soft_tissue, planned.face_model(options.soft_tissue).get());
   result.predicted_skin = prediction.skin_after;
 
   const Eigen::Vector3d centre_before = require_landmark(planned.landmarks, options.error_centre, "synthetic post-op");
