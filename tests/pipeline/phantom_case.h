@@ -5,6 +5,8 @@
 
 #include "archive_fixture.h"
 #include "pipeline/case_landmarks.h"
+#include "pipeline/plan_archive.h"
+#include "pipeline/planned_case.h"
 #include "pipeline/sample_case.h"
 
 namespace maxillo::pipeline::testing_support {
@@ -22,6 +24,13 @@ inline PhantomCase archived_phantom(const std::filesystem::path& folder, double 
   const int64_t case_id = archive.resolve_case(kPhantomPatientId);
   attach_landmarks(archive, case_id, sample.landmarks, "phantom");
   return {std::move(archive), case_id};
+}
+
+// The archived phantom with a distraction plan (advancement only) stored, loaded as a planned case.
+inline PlannedCase planned_phantom(const std::filesystem::path& folder, double spacing_mm, double advancement_mm) {
+  auto [archive, case_id] = archived_phantom(folder, spacing_mm);
+  store_plan(archive, case_id, planning::distraction_plan({.advancement_mm = advancement_mm, .widening_mm = 0}, "test"));
+  return load_planned_case(archive, case_id);
 }
 
 }  // namespace maxillo::pipeline::testing_support

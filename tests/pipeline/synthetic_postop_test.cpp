@@ -4,8 +4,6 @@
 #include <gtest/gtest.h>
 
 #include "phantom_case.h"
-#include "pipeline/plan_archive.h"
-#include "pipeline/planned_case.h"
 #include "pipeline/synthetic_postop.h"
 
 namespace maxillo::pipeline {
@@ -15,9 +13,7 @@ using testing::TemporaryFolder;
 
 TEST(SyntheticPostop, CubesOfVoxelsGiveTheCtOfOneQueryPerVoxel) {
   TemporaryFolder folder;
-  auto [archive, case_id] = testing_support::archived_phantom(folder.path(), 2.0);
-  store_plan(archive, case_id, planning::distraction_plan({.advancement_mm = 6, .widening_mm = 0}, "test"));
-  const PlannedCase planned = load_planned_case(archive, case_id);
+  const PlannedCase planned = testing_support::planned_phantom(folder.path(), 2.0, 6);
 
   SyntheticPostopOptions per_voxel;
   per_voxel.skin_block_voxels = 1;
