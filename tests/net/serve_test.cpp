@@ -3,11 +3,8 @@
 // instances pushed over 4 associations at once (each sent twice) archived once and byte-exact,
 // bad input answered with a failure status while the server goes on, SIGTERM ends it cleanly.
 // Skips when the DCMTK tools are absent (scripts/setup installs them).
-#include <arpa/inet.h>
 #include <gtest/gtest.h>
-#include <netinet/in.h>
 #include <signal.h>
-#include <sys/socket.h>
 #include <unistd.h>
 
 #include <dcmtk/config/osconfig.h>
@@ -25,41 +22,17 @@
 #include "support/run_command.h"
 #include "support/run_maxillo.h"
 #include "support/temporary_folder.h"
+#include "net_fixture.h"
 
 namespace maxillo {
 namespace {
 
+using testing::free_loopback_port;
+using testing::pixel_data;
 using testing::quote;
 using testing::run_command;
-
-uint16_t free_loopback_port() {
-  const int s = socket(AF_INET, SOCK_STREAM, 0);
-  sockaddr_in address{};
-  address.sin_family = AF_INET;
-  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  bind(s, reinterpret_cast<sockaddr*>(&address), sizeof address);
-  socklen_t length = sizeof address;
-  getsockname(s, reinterpret_cast<sockaddr*>(&address), &length);
-  close(s);
-  return ntohs(address.sin_port);
-}
-
-Volume slices(int count, int16_t base) {
-  Volume volume;
-  volume.geometry.size = {16, 16, count};
-  volume.geometry.spacing = {0.5, 0.5, 1.0};
-  volume.hu.resize(size_t(volume.geometry.voxel_count()));
-  for (size_t n = 0; n < volume.hu.size(); ++n) volume.hu[n] = int16_t(base + int(n % 2000) - 1000);
-  return volume;
-}
-
-WrittenSeries write_series(const std::filesystem::path& folder, const std::string& patient_id, int count, int16_t base) {
-  SeriesMetadata metadata;
-  metadata.patient_id = patient_id;
-  metadata.patient_name = "Network^Test";
-  metadata.study_date = "20261125";
-  return write_ct_series(slices(count, base), metadata, folder);
-}
+using testing::slices;
+using testing::write_series;
 
 // A copy of a DICOM file changed by `edit` (DCMTK), written with its own transfer syntax.
 void edited_copy(const std::filesystem::path& from, const std::filesystem::path& to, auto edit) {
@@ -67,15 +40,6 @@ void edited_copy(const std::filesystem::path& from, const std::filesystem::path&
   ASSERT_TRUE(file.loadFile(from.c_str()).good());
   edit(file);
   ASSERT_TRUE(file.saveFile(to.c_str(), EXS_LittleEndianExplicit).good());
-}
-
-std::string pixel_data(const std::filesystem::path& path) {
-  DcmFileFormat file;
-  if (!file.loadFile(path.c_str()).good()) return {};
-  const Uint8* bytes = nullptr;
-  unsigned long length = 0;
-  if (!file.getDataset()->findAndGetUint8Array(DCM_PixelData, bytes, &length).good()) return {};
-  return std::string(reinterpret_cast<const char*>(bytes), length);
 }
 
 class Serve : public ::testing::Test {
@@ -109,19 +73,9 @@ class Serve : public ::testing::Test {
 
   // SIGTERM to the server we started (by its PID), and its exit code.
   int stop_server() {
-    kill(server_, SIGTERM);
-    for (int waited = 0; waited < 300; ++waited) {
-      int status = 0;
-      if (waitpid(server_, &status, WNOHANG) == server_) {
-        server_ = -1;
-        return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-      }
-      std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    }
-    kill(server_, SIGKILL);
-    testing::wait_exit_code(server_);
+    const int code = testing::stop_process(server_);
     server_ = -1;
-    return -1;
+    return code;
   }
 
   std::filesystem::path archive() const { return folder_ / "archive"; }
@@ -171,7 +125,8 @@ TEST_F(Serve, ArchivesWhatFourAssociationsPushOnceAndByteExact) {
       std::vector<std::filesystem::path> files = series[size_t(s)].files;
       const auto& next = series[size_t((s + 1) % 4)].files;
       files.insert(files.end(), next.begin(), next.end());
-      results[size_t(s)] = run_command(storescu("STORESCU", files));
+      // The senders without Nagle's delay (no_nagle_delay.h), or each C-STORE waits ~40 ms for an ACK.
+      results[size_t(s)] = run_command("TCP_NODELAY=1 " + storescu("STORESCU", files));
     });
   for (auto& sender : senders) sender.join();
   for (const auto& result : results) EXPECT_EQ(result.exit_code, 0) << result.output;
@@ -231,9 +186,7 @@ TEST_F(Serve, LosesNothingAcknowledgedAndKeepsNothingHalfReceived) {
   large.geometry.spacing = {0.1, 0.1, 1.0};
   large.hu.assign(size_t(large.geometry.voxel_count()), 40);
   const auto huge = write_ct_series(large, {}, folder_ / "huge");
-  std::string storescu_path = run_command("command -v storescu").output;
-  storescu_path.erase(storescu_path.find_last_not_of('\n') + 1);
-  const pid_t sender = testing::start_process({storescu_path, "-aet", "STORESCU", "-aec", "MAXILLO", "127.0.0.1",
+  const pid_t sender = testing::start_process({testing::tool_path("storescu"), "-aet", "STORESCU", "-aec", "MAXILLO", "127.0.0.1",
                                                std::to_string(port_), huge.files[0].string()},
                                               folder_ / "sender.out", folder_ / "sender.err");
   bool receiving = false;
