@@ -3,6 +3,7 @@
 
 #include "archive/archive_json.h"
 #include "cli/command.h"
+#include "cli/network_options.h"
 #include "net/echo_client.h"
 
 namespace maxillo::cli {
@@ -25,10 +26,7 @@ void run_echo(const EchoArguments& a, CommandContext& ctx) {
 void attach_echo(CLI::App& app, CommandContext& ctx) {
   auto a = std::make_shared<EchoArguments>();
   app.add_option("PEER", a->peer, "AE@HOST:PORT, e.g. PACS@127.0.0.1:4242")->required();
-  app.add_option("--aet", a->options.calling_ae, "our (calling) AE title")->capture_default_str();
-  app.add_option("--timeout", a->options.timeout_seconds, "seconds for connecting and for each answer")
-      ->check(CLI::Range(1, 600))
-      ->capture_default_str();
+  add_requestor_options(app, a->options.calling_ae, a->options.timeout_seconds);
   app.callback([a, &ctx] { run_echo(*a, ctx); });
 }
 

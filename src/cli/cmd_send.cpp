@@ -7,6 +7,7 @@
 #include "archive/archive.h"
 #include "archive/archive_json.h"
 #include "cli/command.h"
+#include "cli/network_options.h"
 #include "core/error.h"
 #include "core/temporary_folder.h"
 #include "net/store_client.h"
@@ -91,10 +92,7 @@ void attach_send(CLI::App& app, CommandContext& ctx) {
   app.add_option("--report", a->report_case, "send the case's reports (Encapsulated PDF series)");
   app.add_option("--to", a->peer, "the peer: AE@HOST:PORT")->required();
   app.add_flag("--deidentify", a->deidentify, "send de-identified copies (as `export --deidentify`) instead of the archived bytes");
-  app.add_option("--aet", a->options.calling_ae, "our (calling) AE title")->capture_default_str();
-  app.add_option("--timeout", a->options.timeout_seconds, "seconds for connecting and for each answer")
-      ->check(CLI::Range(1, 3600))
-      ->capture_default_str();
+  add_requestor_options(app, a->options.calling_ae, a->options.timeout_seconds);
   app.callback([a, &ctx] { run_send(*a, ctx); });
 }
 

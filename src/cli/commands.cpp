@@ -31,6 +31,8 @@ void attach_role(CLI::App&, CommandContext&);
 void attach_serve(CLI::App&, CommandContext&);
 void attach_echo(CLI::App&, CommandContext&);
 void attach_send(CLI::App&, CommandContext&);
+void attach_find(CLI::App&, CommandContext&);
+void attach_retrieve(CLI::App&, CommandContext&);
 
 std::span<const CommandSpec> command_table() {
   static const std::array kCommands = {
@@ -45,6 +47,8 @@ std::span<const CommandSpec> command_table() {
       CommandSpec{"bench", "Archive", "benchmarks (bench import, bench cube, bench occlusion)", attach_bench},
       CommandSpec{"serve", "Network", "DICOM storage server: archive what scanners and PACS send (C-STORE, C-ECHO)", attach_serve},
       CommandSpec{"send", "Network", "C-STORE series, studies or a case's reports to a PACS (--deidentify for copies)", attach_send},
+      CommandSpec{"find", "Network", "C-FIND the studies a PACS holds (patient, name, date, modality)", attach_find},
+      CommandSpec{"retrieve", "Network", "C-GET studies from a PACS into the archive", attach_retrieve},
       CommandSpec{"echo", "Network", "C-ECHO a DICOM peer: AE@HOST:PORT", attach_echo},
       CommandSpec{"surfaces", "Imaging", "skin and bone surfaces from a DICOM series", attach_surfaces},
       CommandSpec{"convert", "Imaging", "wrap a MetaImage/NRRD volume as a DICOM CT series", attach_convert},

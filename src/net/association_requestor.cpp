@@ -25,4 +25,12 @@ void request_association(DcmSCU& scu, const DicomPeer& peer) {
     throw Error(ErrorCode::kNetwork, to_string(peer), std::string("association failed: ") + c.text());
 }
 
+T_ASC_PresentationContextID require_context(DcmSCU& scu, const DicomPeer& peer, const char* abstract_syntax,
+                                            const std::string& service) {
+  const T_ASC_PresentationContextID context = scu.findPresentationContextID(abstract_syntax, "");
+  if (context != 0) return context;
+  scu.releaseAssociation();
+  throw Error(ErrorCode::kNetwork, to_string(peer), "the peer does not offer " + service);
+}
+
 }  // namespace maxillo::net

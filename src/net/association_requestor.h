@@ -17,4 +17,9 @@ void configure_requestor(DcmSCU& scu, const DicomPeer& peer, const std::string& 
 // Connects and negotiates. Error(kNetwork) naming the peer: unreachable, or rejected and why.
 void request_association(DcmSCU& scu, const DicomPeer& peer);
 
+// The accepted presentation context for `abstract_syntax`; when there is none the association is
+// released and Error(kNetwork) says the peer does not offer `service`.
+T_ASC_PresentationContextID require_context(DcmSCU& scu, const DicomPeer& peer, const char* abstract_syntax,
+                                            const std::string& service);
+
 }  // namespace maxillo::net

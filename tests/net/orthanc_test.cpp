@@ -1,7 +1,7 @@
 // Issue 15: Orthanc (Debian's `orthanc`) as the PACS, started on free loopback ports in a
 // temporary folder and stopped by its PID: maxillo sends a series to it, Orthanc pushes a study to
-// `maxillo serve` (its modality store), and the case's report goes back as an Encapsulated PDF
-// that Orthanc files in the right study. Skips when Orthanc is not installed.
+// `maxillo serve` (its modality store), maxillo finds (C-FIND) and retrieves (C-GET) that study,
+// and the case's report goes back as an Encapsulated PDF that Orthanc files in the right study. Skips when Orthanc is not installed.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -83,7 +83,7 @@ class OrthancPeer : public ::testing::Test {
   pid_t orthanc_ = -1, server_ = -1;
 };
 
-TEST_F(OrthancPeer, SendReceiveAndTheReportBack) {
+TEST_F(OrthancPeer, SendReceiveFindRetrieveAndTheReportBack) {
   // maxillo -> Orthanc: an archived series.
   const auto ours = testing::write_series(folder_ / "ours", "NETPACS", 6, 3);
   const auto source = folder_ / "source";
@@ -109,6 +109,26 @@ TEST_F(OrthancPeer, SendReceiveAndTheReportBack) {
     ASSERT_EQ(files.size(), 4u);
     for (size_t i = 0; i < files.size(); ++i)
       EXPECT_EQ(testing::pixel_data(files[i]), testing::pixel_data(theirs.files[i])) << "byte-identical pixel data " << i;
+  }
+
+  // Query and retrieve: the study Orthanc holds, found by Patient ID, fetched by C-GET into a new archive.
+  const auto found_json = testing::run_maxillo({"--json", "find", "--from", orthanc_peer(), "--patient-id", "NETPACS2"},
+                                               folder_.path());
+  ASSERT_EQ(found_json.exit_code, 0) << found_json.err;
+  const Json studies = Json::parse(found_json.out);
+  ASSERT_EQ(studies.size(), 1u) << found_json.out;
+  EXPECT_EQ(studies[0]["study_uid"], theirs.study_instance_uid);
+  EXPECT_EQ(studies[0]["instances"], 4);
+  const auto fetched = folder_ / "fetched";
+  const auto retrieved = testing::run_maxillo(
+      {"--archive", fetched.string(), "retrieve", "--from", orthanc_peer(), theirs.study_instance_uid}, folder_.path());
+  ASSERT_EQ(retrieved.exit_code, 0) << retrieved.err;
+  {
+    Archive archive = Archive::open(fetched);
+    const auto files = archive.series_instance_files(archive.resolve_series(theirs.series_instance_uid));
+    ASSERT_EQ(files.size(), 4u);
+    for (size_t i = 0; i < files.size(); ++i) EXPECT_EQ(testing::pixel_data(files[i]), testing::pixel_data(theirs.files[i]));
+    EXPECT_TRUE(archive.verify(RepairMode::ReportOnly, ProgressDisplay::Never).consistent());
   }
 
   // The report back: an Encapsulated PDF in the study of the series sent first.
