@@ -46,9 +46,9 @@ pipeline::SimulationRequest make_request(const SimulateOptions& o) {
 }
 
 int run_simulate(const SimulateOptions& options, const GlobalOptions& global) {
+  const auto request = make_request(options);  // usage first: before the archive is looked at
   auto archive = Archive::open(resolve_archive_dir(global));
   const auto case_id = archive.resolve_case(options.case_text);
-  const auto request = make_request(options);
   const auto result = pipeline::simulate_case(archive, case_id, request);
   const auto& p = result.prediction;
   if (global.json) {

@@ -53,7 +53,8 @@ int write_cohort_report(const std::vector<ceph::CaseFollowUp>& cohort,
     write_wits_chart(cohort, *chart);
   }
   model.sections.push_back(cohort_follow_up_section(cohort, changes, chart));
-  return report::write_report(model, report::load_report_template(), pdf);
+  // Its own template: a cohort is not a patient, so no consultation title and no patient fields.
+  return report::write_report(model, report::load_report_template("templates/cohort-followup.json"), pdf);
 }
 
 }  // namespace maxillo::pipeline

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <string>
 
+#include "core/error.h"
 #include "pipeline/plan_outputs.h"
 #include "report/number_text.h"
 
@@ -120,6 +121,16 @@ void add_distraction(report::Section& section, const Json& d) {
       number(d["forward_simulation"], "max_error_mm", 2) + " mm."});
 }
 
+// Whether the stored plan result says the plan passed its checks. A result without the flag is
+// damaged: reading it as feasible would report a plan nobody checked as safe (issue 17).
+bool plan_feasible(const Json& result) {
+  const auto flag = result.find("feasible");
+  if (flag == result.end() || !flag->is_boolean())
+    throw Error(ErrorCode::kArchiveCorrupt, "plan result",
+                "no true/false \"feasible\": it cannot say whether the plan passed its checks");
+  return flag->get<bool>();
+}
+
 void add_renders(report::Section& section, const Json& files) {
   report::ImageGrid grid;
   grid.per_row = 2;
@@ -151,7 +162,7 @@ report::Section planning_section(const Json& result) {
     }});
   }
   if (result.contains("distraction")) add_distraction(section, result["distraction"]);
-  if (result.value("feasible", true))
+  if (plan_feasible(result))
     section.blocks.push_back(report::Paragraph{"All distractor checks passed."});
   else {
     std::string text = "Plan refused:";

@@ -104,11 +104,16 @@ int write_report(const ReportModel& model, const ReportTemplate& report_template
   for (const auto& entry : report_template.sections) {
     const Section* section = find_section(model, entry.id);
     if (entry.id != "patient" && !section) continue;
+    // A section whose content starts on a new page starts there with its heading, which would
+    // otherwise be left alone at the foot of the page before.
+    const bool starts_with_page_break =
+        section && !section->blocks.empty() && std::holds_alternative<PageBreak>(section->blocks.front());
+    if (starts_with_page_break) pdf.new_page();
     pdf.heading(entry.heading, HeadingLevel::Section);
     if (!entry.intro.empty()) pdf.paragraph(entry.intro);
     if (entry.id == "patient") patient_section(pdf, model);
     if (section)
-      for (const auto& block : section->blocks) draw_block(pdf, block);
+      for (size_t b = starts_with_page_break ? 1 : 0; b < section->blocks.size(); ++b) draw_block(pdf, section->blocks[b]);
   }
   pdf.save(out_pdf);
   log::debug("report for ", model.patient.id, " written to ", out_pdf.string());

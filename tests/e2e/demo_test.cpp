@@ -157,6 +157,10 @@ TEST_F(DemoTest, WritesTheSampleCohortFollowUpReport) {
   for (const char* expected : {"Cohort follow-up: 6 patients", "Change pre to post", "Change post to 6M",
                                "Stability from post to 6M", "Wits appraisal (mm) per patient", "Wits appraisal over months"})
     EXPECT_NE(text.find(expected), std::string::npos) << "missing text: " << expected;
+  // A cohort's report, not a patient's (issue 17): its own title, no empty patient fields.
+  EXPECT_NE(text.find("Cohort follow-up\n"), std::string::npos);
+  for (const char* absent : {"Consultation report", "Patient ID", "Birth date"})
+    EXPECT_EQ(text.find(absent), std::string::npos) << "should not be there: " << absent;
   auto images = testing::pdf_images(pdf, folder_->path() / "cohort-charts", 1100);
   ASSERT_EQ(images.size(), 1u);  // the chart, one line per patient
   EXPECT_GT(images[0].distinct_colours, 6u);
@@ -229,6 +233,15 @@ TEST_F(DemoTest, ReportHasTheValidationAndTheNightlySummary) {
   const auto summary = out / "nightly" / "validation-summary.pdf";
   EXPECT_GE(testing::pdf_page_count(summary), 2);
   EXPECT_NE(testing::pdf_text(summary).find("Validation summary"), std::string::npos);
+  // The "Cases" heading opens the page of the first case (issue 17: it stood alone at the foot of
+  // the page before). pdftotext separates pages with a form feed.
+  const std::string summary_text = testing::pdf_text(summary);
+  const size_t cases = summary_text.find("Cases\n");
+  ASSERT_NE(cases, std::string::npos);
+  const size_t page_start = summary_text.rfind('\f', cases), page_end = summary_text.find('\f', cases);
+  ASSERT_NE(page_start, std::string::npos) << "Cases is not on the first page";
+  EXPECT_NE(summary_text.substr(page_start, page_end - page_start).find("Closest-point distance"), std::string::npos)
+      << "the first case is on the page of its heading";
 }
 
 }  // namespace

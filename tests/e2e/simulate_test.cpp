@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/error.h"
 #include "core/json.h"
 #include "core/temporary_folder.h"
 #include "mesh/mesh_io.h"
@@ -73,12 +74,17 @@ TEST(Simulate, SixMillimetreAdvancementOfThePhantomGivesAPlausibleFace) {
     EXPECT_TRUE(std::filesystem::exists(dir / "plan" / file)) << file;
 }
 
+// Neither --plan nor --advance: a usage error that says so, before the archive is looked at (the
+// archive here does not even exist, which must not be what the command complains about).
 TEST(Simulate, WithoutAPlanOrAMoveItSaysWhatIsMissing) {
   TemporaryFolder folder("simulate-usage");
   auto run = run_maxillo({"--archive=" + (folder.path() / "a").string(), "simulate", "1", "--out",
                           (folder.path() / "sim").string()},
                          folder.path());
-  EXPECT_NE(run.exit_code, 0);
+  EXPECT_EQ(run.exit_code, exit_code_for(ErrorCode::kUsage)) << run.err;
+  EXPECT_NE(run.err.find("give a plan (--plan PLAN.json) or a Le Fort I advancement (--advance MM)"), std::string::npos)
+      << run.err;
+  EXPECT_FALSE(std::filesystem::exists(folder.path() / "a")) << "nothing created";
 }
 
 }  // namespace

@@ -82,5 +82,23 @@ TEST(PlanningSection, ShowsVectorsChecksScheduleAndSimulation) {
   for (const auto& row : simulation->rows) EXPECT_EQ(row[3], "0.00 mm") << row[0];
 }
 
+// A stored result that lost its "feasible" flag is an error naming it, never reported as feasible.
+TEST(PlanningSection, AResultWithoutItsFeasibleFlagIsAnError) {
+  const Phantom phantom = make_phantom(PhantomSpec{.spacing_mm = 2.0});
+  const planning::PlanResult result = planning::apply_plan(
+      planning::distraction_plan({.advancement_mm = 10, .widening_mm = 6}, "test"), phantom.labels, phantom.landmarks);
+  Json damaged = planning::plan_result_json(result);
+  damaged.erase("feasible");
+  try {
+    planning_section(damaged);
+    ADD_FAILURE() << "a result without \"feasible\" was reported";
+  } catch (const Error& error) {
+    EXPECT_EQ(error.code(), ErrorCode::kArchiveCorrupt);
+    EXPECT_NE(error.reason().find("feasible"), std::string::npos);
+  }
+  damaged["feasible"] = "yes";
+  EXPECT_THROW(planning_section(damaged), Error);
+}
+
 }  // namespace
 }  // namespace maxillo::pipeline
