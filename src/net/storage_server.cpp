@@ -133,12 +133,22 @@ class ArchivingSCP : public DcmThreadSCP {
       // parsing of several associations run side by side.
       if (!archive_) archive_.emplace(Archive::open(shared_.options.archive));
       const ImportReport report = archive_->import_paths({file}, {.progress = ProgressDisplay::Never, .batch_files = 1});
-      if (report.imported == 1 && shared_.stable) shared_.stable->archived(study_of(sop_instance_uid), StableStudies::Clock::now());
       shared_.stored += int64_t(report.imported);
       shared_.already_archived += int64_t(report.already_archived);
+      if (report.imported == 1 && shared_.stable) note_study_change(sop_instance_uid);
       return answer_for(report);
     } catch (const std::exception& error) {
       return {STATUS_STORE_Refused_OutOfResources, error.what()};
+    }
+  }
+
+  // The instance is archived whatever happens here: a failure to find its study costs the
+  // stable-study action, never the C-STORE's success.
+  void note_study_change(const std::string& sop_instance_uid) {
+    try {
+      shared_.stable->archived(study_of(sop_instance_uid), StableStudies::Clock::now());
+    } catch (const std::exception& error) {
+      log::warning("serve: an archived instance's study was not found, no stable-study action for it: ", error.what());
     }
   }
 
