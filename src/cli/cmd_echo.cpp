@@ -26,7 +26,7 @@ void run_echo(const EchoArguments& a, CommandContext& ctx) {
 void attach_echo(CLI::App& app, CommandContext& ctx) {
   auto a = std::make_shared<EchoArguments>();
   app.add_option("PEER", a->peer, "AE@HOST:PORT, e.g. PACS@127.0.0.1:4242")->required();
-  add_requestor_options(app, a->options.calling_ae, a->options.timeout_seconds);
+  add_requestor_options(app, a->options.calling_ae, a->options.timeout_seconds, a->options.tls);
   app.callback([a, &ctx] { run_echo(*a, ctx); });
 }
 

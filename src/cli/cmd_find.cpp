@@ -45,7 +45,7 @@ void attach_find(CLI::App& app, CommandContext& ctx) {
   app.add_option("--date", a->query.study_date, "study date YYYYMMDD or range YYYYMMDD-YYYYMMDD");
   app.add_option("--modality", a->query.modality, "a modality in the study, e.g. CT");
   app.add_option("--study", a->query.study_uid, "Study Instance UID");
-  add_requestor_options(app, a->options.calling_ae, a->options.timeout_seconds);
+  add_requestor_options(app, a->options.calling_ae, a->options.timeout_seconds, a->options.tls);
   app.callback([a, &ctx] { run_find(*a, ctx); });
 }
 

@@ -48,7 +48,7 @@ void attach_retrieve(CLI::App& app, CommandContext& ctx) {
   auto a = std::make_shared<RetrieveArguments>();
   app.add_option("--from", a->peer, "the PACS: AE@HOST:PORT")->required();
   app.add_option("STUDY", a->studies, "Study Instance UIDs (maxillo find lists them)")->required();
-  add_requestor_options(app, a->options.calling_ae, a->options.timeout_seconds);
+  add_requestor_options(app, a->options.calling_ae, a->options.timeout_seconds, a->options.tls);
   app.callback([a, &ctx] { run_retrieve(*a, ctx); });
 }
 

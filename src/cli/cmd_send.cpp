@@ -92,7 +92,7 @@ void attach_send(CLI::App& app, CommandContext& ctx) {
   app.add_option("--report", a->report_case, "send the case's reports (Encapsulated PDF series)");
   app.add_option("--to", a->peer, "the peer: AE@HOST:PORT")->required();
   app.add_flag("--deidentify", a->deidentify, "send de-identified copies (as `export --deidentify`) instead of the archived bytes");
-  add_requestor_options(app, a->options.calling_ae, a->options.timeout_seconds);
+  add_requestor_options(app, a->options.calling_ae, a->options.timeout_seconds, a->options.tls);
   app.callback([a, &ctx] { run_send(*a, ctx); });
 }
 

@@ -29,6 +29,7 @@ struct ServeArguments {
   int timeout_seconds = 30;
   std::string on_stable_study;
   int stable_seconds = 60;
+  net::TlsOptions tls;
   // The options given on the command line (they override the configuration file).
   std::map<std::string, CLI::Option*> given;
   bool on_command_line(const std::string& name) const { return given.at(name)->count() > 0; }
@@ -88,6 +89,12 @@ net::StorageServerOptions server_options(const ServeArguments& a, const GlobalOp
   if (a.config.empty() || a.on_command_line("--timeout")) options.timeout_seconds = a.timeout_seconds;
   if (a.config.empty() || a.on_command_line("--on-stable-study")) options.on_stable_study = a.on_stable_study;
   if (a.config.empty() || a.on_command_line("--stable-seconds")) options.stable_seconds = a.stable_seconds;
+  if (a.on_command_line("--tls-cert")) {
+    options.tls = {.enabled = true, .certificate = a.tls.certificate, .private_key = a.tls.private_key, .trusted = {}};
+    if (!a.on_command_line("--tls-key")) throw Error(ErrorCode::kUsage, "--tls-cert", "needs --tls-key");
+  }
+  if (a.on_command_line("--tls-trust"))
+    options.tls.trusted.insert(options.tls.trusted.end(), a.tls.trusted.begin(), a.tls.trusted.end());
   return options;
 }
 
@@ -97,7 +104,9 @@ void run_serve(const ServeArguments& a, CommandContext& ctx) {
   net::StorageServer server(options);
   {
     StopOnSignal stop_on_signal(server);
-    if (!ctx.global.quiet) std::cerr << "serve: " << options.ae_title << " listening on port " << options.port << "\n";
+    if (!ctx.global.quiet)
+      std::cerr << "serve: " << options.ae_title << " listening on port " << options.port
+                << (options.tls.enabled ? " (DICOM TLS)" : "") << "\n";
     server.run();
   }
   const auto counts = server.counts();
@@ -144,6 +153,14 @@ void attach_serve(CLI::App& app, CommandContext& ctx) {
   given["--stable-seconds"] = app.add_option("--stable-seconds", a->stable_seconds, "quiet time after which a study is stable")
                                   ->check(CLI::Range(1, 86400))
                                   ->capture_default_str();
+  given["--tls-cert"] = app.add_option("--tls-cert", a->tls.certificate, "our certificate (PEM): serve DICOM TLS only")
+                            ->check(CLI::ExistingFile);
+  given["--tls-key"] = app.add_option("--tls-key", a->tls.private_key, "the certificate's private key (PEM)")
+                           ->check(CLI::ExistingFile);
+  given["--tls-trust"] = app.add_option("--tls-trust", a->tls.trusted,
+                                        "a certificate file or folder: callers must present a certificate signed by "
+                                        "one of them (repeatable; adds to the configuration's)")
+                             ->check(CLI::ExistingPath);
   app.callback([a, &ctx] { run_serve(*a, ctx); });
 }
 

@@ -1,12 +1,15 @@
 #include "net/association_requestor.h"
 
+#include "archive/dicom_header.h"
 #include "core/error.h"
 #include "net/no_nagle_delay.h"
 
 namespace maxillo::net {
 
-void configure_requestor(DcmSCU& scu, const DicomPeer& peer, const std::string& calling_ae, int timeout_seconds) {
+void configure_requestor(Requestor& scu, const DicomPeer& peer, const std::string& calling_ae, int timeout_seconds,
+                         DcmTransportLayer* tls) {
   check_ae_title(calling_ae, "--aet");
+  initialise_dicom_toolkit();  // DCMTK's own log lines off, as everywhere in maxillo
   no_nagle_delay();
   scu.setAETitle(calling_ae.c_str());
   scu.setPeerAETitle(peer.ae_title.c_str());
@@ -16,6 +19,7 @@ void configure_requestor(DcmSCU& scu, const DicomPeer& peer, const std::string& 
   scu.setACSETimeout(Uint32(timeout_seconds));
   scu.setDIMSEBlockingMode(DIMSE_NONBLOCKING);
   scu.setDIMSETimeout(Uint32(timeout_seconds));
+  scu.use_tls(tls);
 }
 
 void request_association(DcmSCU& scu, const DicomPeer& peer) {

@@ -10,9 +10,26 @@
 
 namespace maxillo::net {
 
+// DcmSCU that can speak TLS with a layer from net/tls_layer.h. DCMTK's own DcmTLSSCU would do it
+// with certificate options of its own; the layer can only be attached once the network exists.
+class Requestor : public DcmSCU {
+ public:
+  void use_tls(DcmTransportLayer* layer) { tls_ = layer; }
+  OFCondition initNetwork() override {
+    OFCondition ready = DcmSCU::initNetwork();
+    if (ready.good() && tls_ != nullptr) ready = useSecureConnection(tls_);
+    return ready;
+  }
+
+ private:
+  DcmTransportLayer* tls_ = nullptr;  // not owned
+};
+
 // Our AE title, the peer, timeouts for connecting, negotiating and every answer (non-blocking
-// DIMSE, so a silent peer cannot hold us), and no Nagle delay (no_nagle_delay.h).
-void configure_requestor(DcmSCU& scu, const DicomPeer& peer, const std::string& calling_ae, int timeout_seconds);
+// DIMSE, so a silent peer cannot hold us), no Nagle delay (no_nagle_delay.h), and TLS when `tls`
+// is not null (net/tls_layer.h: it must outlive the association).
+void configure_requestor(Requestor& scu, const DicomPeer& peer, const std::string& calling_ae, int timeout_seconds,
+                         DcmTransportLayer* tls);
 
 // Connects and negotiates. Error(kNetwork) naming the peer: unreachable, or rejected and why.
 void request_association(DcmSCU& scu, const DicomPeer& peer);

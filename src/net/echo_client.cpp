@@ -7,13 +7,15 @@
 
 #include "core/error.h"
 #include "net/association_requestor.h"
+#include "net/tls_layer.h"
 
 namespace maxillo::net {
 
 double echo(const DicomPeer& peer, const EchoOptions& options) {
   const auto started = std::chrono::steady_clock::now();
-  DcmSCU scu;
-  configure_requestor(scu, peer, options.calling_ae, options.timeout_seconds);
+  const auto tls = requestor_tls(options.tls);  // outlives the association
+  Requestor scu;
+  configure_requestor(scu, peer, options.calling_ae, options.timeout_seconds, tls.get());
   OFList<OFString> syntaxes;
   syntaxes.push_back(UID_LittleEndianImplicitTransferSyntax);
   scu.addPresentationContext(UID_VerificationSOPClass, syntaxes);

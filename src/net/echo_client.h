@@ -3,12 +3,14 @@
 #include <string>
 
 #include "net/dicom_peer.h"
+#include "net/tls_options.h"
 
 namespace maxillo::net {
 
 struct EchoOptions {
   std::string calling_ae = "MAXILLO";
   int timeout_seconds = 10;  // connecting, negotiating and waiting for the answer, each
+  TlsOptions tls;
 };
 
 // Returns the round trip in seconds (association, echo, release). Error(kNetwork) naming the peer

@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "net/association_requestor.h"
+#include "net/tls_layer.h"
 
 namespace maxillo::net {
 namespace {
@@ -47,8 +48,9 @@ StudyMatch match_of(DcmDataset* dataset) {
 }  // namespace
 
 std::vector<StudyMatch> find_studies(const DicomPeer& peer, const StudyQuery& query, const QueryOptions& options) {
-  DcmSCU scu;
-  configure_requestor(scu, peer, options.calling_ae, options.timeout_seconds);
+  const auto tls = requestor_tls(options.tls);  // outlives the association
+  Requestor scu;
+  configure_requestor(scu, peer, options.calling_ae, options.timeout_seconds, tls.get());
   OFList<OFString> syntaxes;
   syntaxes.push_back(UID_LittleEndianExplicitTransferSyntax);
   syntaxes.push_back(UID_LittleEndianImplicitTransferSyntax);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "net/dicom_peer.h"
+#include "net/tls_options.h"
 
 namespace maxillo::net {
 
@@ -25,6 +26,7 @@ struct StudyMatch {
 struct QueryOptions {
   std::string calling_ae = "MAXILLO";
   int timeout_seconds = 30;
+  TlsOptions tls;
 };
 
 // Error(kNetwork) naming the peer when the association fails or the peer answers with a failure.

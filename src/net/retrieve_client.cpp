@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "core/temporary_folder.h"
 #include "net/association_requestor.h"
+#include "net/tls_layer.h"
 #include "net/storage_classes.h"
 
 namespace maxillo::net {
@@ -35,8 +36,9 @@ RetrieveReport retrieve_study(const DicomPeer& peer, const std::string& study_ui
                               const RetrieveOptions& options) {
   const auto started = std::chrono::steady_clock::now();
   const TemporaryFolder scratch("maxillo-retrieve");
-  DcmSCU scu;
-  configure_requestor(scu, peer, options.calling_ae, options.timeout_seconds);
+  const auto tls = requestor_tls(options.tls);  // outlives the association
+  Requestor scu;
+  configure_requestor(scu, peer, options.calling_ae, options.timeout_seconds, tls.get());
   scu.setStorageMode(DCMSCU_STORAGE_BIT_PRESERVING);
   scu.setStorageDir(scratch.path().c_str());
   propose(scu);

@@ -8,12 +8,14 @@
 
 #include "archive/archive.h"
 #include "net/dicom_peer.h"
+#include "net/tls_options.h"
 
 namespace maxillo::net {
 
 struct RetrieveOptions {
   std::string calling_ae = "MAXILLO";
   int timeout_seconds = 60;
+  TlsOptions tls;
   ProgressDisplay progress = ProgressDisplay::Auto;
 };
 

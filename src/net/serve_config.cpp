@@ -12,7 +12,7 @@ namespace {
 
 class ConfigReader {
  public:
-  ConfigReader(const Json& json, std::string source) : json_(json), source_(std::move(source)) {}
+  ConfigReader(const Json& json, const std::filesystem::path& file) : json_(json), source_(file.string()), folder_(file.parent_path()) {}
 
   [[noreturn]] void fail(const std::string& key, const std::string& reason) const {
     throw Error(ErrorCode::kBadValue, source_, key + ": " + reason);
@@ -39,7 +39,7 @@ class ConfigReader {
   }
 
   StorageServerOptions read() const {
-    only_keys(json_, {"ae_title", "port", "allow", "max_associations", "timeout_seconds", "stable_study"}, "");
+    only_keys(json_, {"ae_title", "port", "allow", "max_associations", "timeout_seconds", "stable_study", "tls"}, "");
     StorageServerOptions options;
     options.ae_title = text(json_, "ae_title", "ae_title", options.ae_title);
     check_or_fail([&] { check_ae_title(options.ae_title, "ae_title"); }, "ae_title");
@@ -61,6 +61,7 @@ class ConfigReader {
       options.stable_seconds = integer(stable, "after_seconds", "stable_study.after_seconds", 1, 86400, options.stable_seconds);
       options.on_stable_study = text(stable, "command", "stable_study.command", "");
     }
+    if (json_.contains("tls")) options.tls = tls(json_.at("tls"));
     return options;
   }
 
@@ -74,8 +75,34 @@ class ConfigReader {
     }
   }
 
+  std::filesystem::path file_path(const Json& object, const std::string& key, const std::string& path) const {
+    const std::string value = text(object, key, path, "");
+    if (value.empty()) return {};
+    return folder_ / value;  // an absolute value stays as it is
+  }
+
+  TlsOptions tls(const Json& object) const {
+    only_keys(object, {"certificate", "private_key", "trusted"}, "tls.");
+    TlsOptions options{.enabled = true,
+                       .certificate = file_path(object, "certificate", "tls.certificate"),
+                       .private_key = file_path(object, "private_key", "tls.private_key")};
+    if (options.certificate.empty() || options.private_key.empty())
+      fail("tls", "a TLS server needs \"certificate\" and \"private_key\"");
+    if (object.contains("trusted")) {
+      const Json& trusted = object.at("trusted");
+      if (!trusted.is_array()) fail("tls.trusted", "expected a list of certificate files or folders");
+      for (size_t i = 0; i < trusted.size(); ++i) {
+        const std::string path = "tls.trusted[" + std::to_string(i) + "]";
+        if (!trusted[i].is_string() || trusted[i].get<std::string>().empty()) fail(path, "expected a file or folder");
+        options.trusted.push_back(folder_ / trusted[i].get<std::string>());
+      }
+    }
+    return options;
+  }
+
   const Json& json_;
   std::string source_;
+  std::filesystem::path folder_;  // relative paths are read from here
 };
 
 }  // namespace
@@ -86,7 +113,7 @@ StorageServerOptions read_serve_config(const std::filesystem::path& file) {
   std::ostringstream text;
   text << in.rdbuf();
   const Json json = parse_json_input(text.str(), file.string());
-  return ConfigReader(json, file.string()).read();
+  return ConfigReader(json, file).read();
 }
 
 }  // namespace maxillo::net

@@ -18,6 +18,7 @@
 #include "net/stable_studies.h"
 #include "net/stable_study_action.h"
 #include "net/storage_classes.h"
+#include "net/tls_layer.h"
 
 namespace maxillo::net {
 
@@ -29,6 +30,7 @@ struct StorageServer::Shared {
   std::atomic<bool> stop_requested{false};
   std::unique_ptr<StableStudies> stable;  // set when there is a stable-study action
   std::atomic<int64_t> stable_actions{0}, failed_actions{0};
+  std::unique_ptr<DcmTLSTransportLayer> tls;  // set when serving DICOM TLS
 };
 
 namespace {
@@ -223,6 +225,7 @@ StorageServer::StorageServer(StorageServerOptions options) : shared_(std::make_u
       throw Error(ErrorCode::kUsage, "--stable-seconds", "from 1 to 86400 seconds");
     shared_->stable = std::make_unique<StableStudies>(std::chrono::seconds(options.stable_seconds));
   }
+  shared_->tls = acceptor_tls(options.tls);
   shared_->incoming = options.archive / "incoming";
   clear_incoming(shared_->incoming);
   shared_->options = std::move(options);
@@ -233,6 +236,7 @@ StorageServer::~StorageServer() = default;
 void StorageServer::run() {
   ArchivingPool pool(*shared_);
   configure(pool.getConfig(), shared_->options);
+  if (shared_->tls) pool.getConfig().setTransportLayer(shared_->tls.get());
   pool.setMaxThreads(Uint16(shared_->options.max_associations));
   // DcmBaseSCPPool::listen() starts by setting its mode to "listen", so a stop requested just
   // before would be lost: it is passed on until the listening loop has ended.

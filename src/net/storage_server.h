@@ -12,6 +12,9 @@
 // Stable studies (options.on_stable_study): a thread looks once a second for studies quiet for
 // stable_seconds (net/stable_studies.h) and runs the command for each, one at a time.
 //
+// With TLS (options.tls) every association is TLS; a caller that does not speak it, or whose
+// certificate is not trusted, fails the handshake and never reaches the AE title checks.
+//
 // Received datasets are written bit for bit (as the peer encoded them) into ARCHIVE/incoming/
 // and removed once archived or refused; what a killed server leaves there was never
 // acknowledged and is removed at the next start.
@@ -23,6 +26,7 @@
 #include <vector>
 
 #include "net/dicom_peer.h"
+#include "net/tls_options.h"
 
 namespace maxillo::net {
 
@@ -38,6 +42,9 @@ struct StorageServerOptions {
   // archive id of the patient's default case) in its environment. Empty: no action.
   std::string on_stable_study;
   int stable_seconds = 60;
+  // DICOM TLS (net/tls_options.h): on when there is a certificate; callers must then present a
+  // certificate signed by a trusted one when `trusted` is not empty.
+  TlsOptions tls;
 };
 
 // What the server did since it started.
@@ -53,7 +60,8 @@ struct StorageServerCounts {
 
 class StorageServer {
  public:
-  // Checks the options (AE titles, port, limits: Error(kUsage)) and opens or creates the archive.
+  // Checks the options (AE titles, port, limits: Error(kUsage); TLS files: net/tls_layer.h) and
+  // opens or creates the archive.
   explicit StorageServer(StorageServerOptions options);
   ~StorageServer();
   StorageServer(const StorageServer&) = delete;

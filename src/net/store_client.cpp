@@ -13,6 +13,7 @@
 
 #include "core/error.h"
 #include "net/association_requestor.h"
+#include "net/tls_layer.h"
 
 namespace maxillo::net {
 namespace {
@@ -72,8 +73,9 @@ StoreReport send_files(const DicomPeer& peer, const std::vector<std::filesystem:
   if (pairs.size() > 128)
     throw Error(ErrorCode::kUsage, to_string(peer), "more than 128 SOP class and transfer syntax pairs for one association");
 
-  DcmSCU scu;
-  configure_requestor(scu, peer, options.calling_ae, options.timeout_seconds);
+  const auto tls = requestor_tls(options.tls);  // outlives the association
+  Requestor scu;
+  configure_requestor(scu, peer, options.calling_ae, options.timeout_seconds, tls.get());
   propose(scu, pairs);
   request_association(scu, peer);
 

@@ -9,12 +9,14 @@
 
 #include "core/progress.h"
 #include "net/dicom_peer.h"
+#include "net/tls_options.h"
 
 namespace maxillo::net {
 
 struct StoreOptions {
   std::string calling_ae = "MAXILLO";
   int timeout_seconds = 30;
+  TlsOptions tls;
   ProgressDisplay progress = ProgressDisplay::Auto;
 };
 

@@ -35,6 +35,19 @@ TEST(ServeConfig, ReadsEveryKey) {
   EXPECT_EQ(options.on_stable_study, "true");
 }
 
+TEST(ServeConfig, ReadsTlsPathsFromTheConfigurationsFolder) {
+  TemporaryFolder folder("serve-config");
+  std::filesystem::create_directories(folder / "etc");
+  std::ofstream(folder / "etc" / "serve.json")
+      << R"({"tls": {"certificate": "server.pem", "private_key": "/keys/server.key", "trusted": ["ca.pem", "peers"]}})";
+  const auto options = read_serve_config(folder / "etc" / "serve.json");
+  EXPECT_TRUE(options.tls.enabled);
+  EXPECT_EQ(options.tls.certificate, folder / "etc" / "server.pem");
+  EXPECT_EQ(options.tls.private_key, "/keys/server.key");
+  ASSERT_EQ(options.tls.trusted.size(), 2u);
+  EXPECT_EQ(options.tls.trusted[1], folder / "etc" / "peers");
+}
+
 TEST(ServeConfig, NamesTheKeyOfATypoOrABadValue) {
   TemporaryFolder folder("serve-config");
   const std::pair<const char*, const char*> cases[] = {
@@ -44,6 +57,9 @@ TEST(ServeConfig, NamesTheKeyOfATypoOrABadValue) {
       {R"({"allow": ["OK", "TOO_LONG_AE_TITLE_X"]})", "allow[1]: an AE title has 1 to 16 characters"},
       {R"({"stable_study": {"after": 5}})", "stable_study.after: unknown key"},
       {R"({"ae_title": ""})", "ae_title: an AE title has 1 to 16 characters"},
+      {R"({"tls": {"certificate": "server.pem"}})", "tls: a TLS server needs \"certificate\" and \"private_key\""},
+      {R"({"tls": {"certificate": "a", "private_key": "b", "trusted": "ca.pem"}})", "tls.trusted: expected a list"},
+      {R"({"tls": {"cert": "a"}})", "tls.cert: unknown key"},
   };
   for (const auto& [text, expected] : cases) {
     std::ofstream(folder / "serve.json") << text;
