@@ -1,9 +1,15 @@
 #pragma once
-// Retrieving a study from a PACS with C-GET: the peer sends the instances back on our own
-// association (no listening port, no AE title to configure at the peer beyond allowing us to
-// retrieve), written bit for bit into a scratch folder and then archived by the import, exactly
-// as `maxillo import` would archive the same files.
+// Retrieving a study from a PACS into the archive, by C-GET (default) or C-MOVE.
+//
+// C-GET: the peer sends the instances back on our own association; no port to open, nothing to
+// configure at the peer beyond letting us retrieve. C-MOVE, for the PACS that only offer it: the
+// peer opens associations of its own to the destination it has configured for our AE title, so
+// we listen on `move_port` for the duration (net/move_destination.h), accepting only the peer.
+// Either way the instances are written bit for bit into a scratch folder and then archived by
+// the import, exactly as `maxillo import` would archive the same files. A progress bar follows
+// the peer's pending responses (completed and remaining sub-operations).
 #include <cstddef>
+#include <cstdint>
 #include <string>
 
 #include "archive/archive.h"
@@ -16,6 +22,7 @@ struct RetrieveOptions {
   std::string calling_ae = "MAXILLO";
   int timeout_seconds = 60;
   TlsOptions tls;
+  uint16_t move_port = 0;  // 0: C-GET; otherwise C-MOVE to calling_ae, received on this port
   ProgressDisplay progress = ProgressDisplay::Auto;
 };
 
@@ -26,8 +33,8 @@ struct RetrieveReport {
   double seconds = 0;
 };
 
-// Error(kNetwork) naming the peer when the association fails, the peer offers no C-GET or
-// answers the C-GET with a failure.
+// Error(kNetwork) naming the peer when the association fails, the peer offers no C-GET (C-MOVE)
+// or answers it with a failure; Error(kWriteFailed) when the C-MOVE port cannot be opened.
 RetrieveReport retrieve_study(const DicomPeer& peer, const std::string& study_uid, Archive& archive,
                               const RetrieveOptions& options = {});
 

@@ -17,7 +17,7 @@
 #include "net/no_nagle_delay.h"
 #include "net/stable_studies.h"
 #include "net/stable_study_action.h"
-#include "net/storage_classes.h"
+#include "net/storage_contexts.h"
 #include "net/tls_layer.h"
 
 namespace maxillo::net {
@@ -195,13 +195,8 @@ void configure(DcmSCPConfig& config, const StorageServerOptions& options) {
   config.setDIMSETimeout(Uint32(options.timeout_seconds));
   config.setACSETimeout(Uint32(options.timeout_seconds));
   config.setMaxReceivePDULength(ASC_DEFAULTMAXPDU * 8);
-  OFList<OFString> syntaxes;
-  for (const auto& uid : accepted_transfer_syntaxes()) syntaxes.push_back(uid.c_str());
-  OFList<OFString> verification;
-  verification.push_back(UID_LittleEndianExplicitTransferSyntax);
-  verification.push_back(UID_LittleEndianImplicitTransferSyntax);
-  config.addPresentationContext(UID_VerificationSOPClass, verification);
-  for (const auto& storage : accepted_storage_classes()) config.addPresentationContext(storage.sop_class_uid.c_str(), syntaxes);
+  accept_verification(config);
+  accept_storage(config);
 }
 
 // What a killed server left in incoming/ was never acknowledged: the sender still has it.

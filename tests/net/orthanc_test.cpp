@@ -1,6 +1,7 @@
 // Issue 15: Orthanc (Debian's `orthanc`) as the PACS, started on free loopback ports in a
 // temporary folder and stopped by its PID: maxillo sends a series to it, Orthanc pushes a study to
-// `maxillo serve` (its modality store), maxillo finds (C-FIND) and retrieves (C-GET) that study,
+// `maxillo serve` (its modality store), maxillo finds (C-FIND) and retrieves that study (C-GET, and
+// C-MOVE by Patient ID),
 // and the case's report goes back as an Encapsulated PDF that Orthanc files in the right study. Skips when Orthanc is not installed.
 #include <gtest/gtest.h>
 
@@ -129,6 +130,20 @@ TEST_F(OrthancPeer, SendReceiveFindRetrieveAndTheReportBack) {
     ASSERT_EQ(files.size(), 4u);
     for (size_t i = 0; i < files.size(); ++i) EXPECT_EQ(testing::pixel_data(files[i]), testing::pixel_data(theirs.files[i]));
     EXPECT_TRUE(archive.verify(RepairMode::ReportOnly, ProgressDisplay::Never).consistent());
+  }
+  // The same study by C-MOVE, found by Patient ID: Orthanc delivers to MAXILLO at serve_port_
+  // (its configured modality; the server is stopped, so the retrieve listens there itself).
+  const auto moved = folder_ / "moved";
+  const auto by_move = testing::run_maxillo({"--archive", moved.string(), "retrieve", "--from", orthanc_peer(),
+                                             "--patient-id", "NETPACS2", "--move-port", std::to_string(serve_port_)},
+                                            folder_.path());
+  ASSERT_EQ(by_move.exit_code, 0) << by_move.err;
+  EXPECT_NE(by_move.out.find("4 instances received, 4 archived"), std::string::npos) << by_move.out;
+  {
+    Archive archive = Archive::open(moved);
+    const auto files = archive.series_instance_files(archive.resolve_series(theirs.series_instance_uid));
+    ASSERT_EQ(files.size(), 4u);
+    for (size_t i = 0; i < files.size(); ++i) EXPECT_EQ(testing::pixel_data(files[i]), testing::pixel_data(theirs.files[i]));
   }
 
   // The report back: an Encapsulated PDF in the study of the series sent first.

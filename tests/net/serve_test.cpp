@@ -244,6 +244,29 @@ TEST_F(Serve, ReceivesWhatMaxilloSendsOriginalAndDeidentified) {
   EXPECT_EQ(archive.series().size(), 2u);
 }
 
+// Retrieving from a peer that offers no query/retrieve (our own server only stores) says which
+// service is missing; a C-MOVE port already taken is named before anything is asked.
+TEST_F(Serve, RetrieveNamesTheMissingServiceAndATakenMovePort) {
+  const std::string peer = "MAXILLO@127.0.0.1:" + std::to_string(port_);
+  const auto by_get = testing::run_maxillo(
+      {"--archive", (folder_ / "fetched").string(), "retrieve", "--from", peer, "--aet", "STORESCU", "1.2.3.4"}, folder_.path());
+  EXPECT_EQ(by_get.exit_code, exit_code_for(ErrorCode::kNetwork));
+  EXPECT_NE(by_get.err.find("does not offer C-GET"), std::string::npos) << by_get.err;
+  const auto by_move = testing::run_maxillo({"--archive", (folder_ / "fetched").string(), "retrieve", "--from", peer,
+                                             "--aet", "STORESCU", "--move-port", std::to_string(free_loopback_port()),
+                                             "1.2.3.4"},
+                                            folder_.path());
+  EXPECT_EQ(by_move.exit_code, exit_code_for(ErrorCode::kNetwork));
+  EXPECT_NE(by_move.err.find("does not offer C-MOVE"), std::string::npos) << by_move.err;
+  const auto taken = testing::run_maxillo({"--archive", (folder_ / "fetched").string(), "retrieve", "--from", peer,
+                                           "--aet", "STORESCU", "--move-port", std::to_string(port_), "1.2.3.4"},
+                                          folder_.path());
+  EXPECT_EQ(taken.exit_code, exit_code_for(ErrorCode::kWriteFailed));
+  EXPECT_NE(taken.err.find("port " + std::to_string(port_)), std::string::npos) << taken.err;
+  const auto neither = testing::run_maxillo({"retrieve", "--from", peer}, folder_.path());
+  EXPECT_EQ(neither.exit_code, exit_code_for(ErrorCode::kUsage)) << neither.err;
+}
+
 // The stable-study action, configured in a configuration file beside command-line options: run
 // once when a study has been quiet for a second, not again for instances received again, again
 // when a new series arrives in the study.
