@@ -59,6 +59,9 @@ struct ImportOptions {
   // Called for each problem as it is met (the CLI prints "path: reason" at once).
   std::function<void(const ImportProblem&)> on_problem;
   size_t batch_files = 500;  // files per durable batch (one syncfs + one transaction)
+  // Recorded as each new instance's source instead of its file's path, for files that are only
+  // a spool: "dicom://AE@ADDRESS" for what `maxillo serve` received (see source_description).
+  std::string source_label;
 };
 
 enum class RepairMode { ReportOnly, Repair };

@@ -109,7 +109,7 @@ ImportReport Archive::import_paths(const std::vector<std::filesystem::path>& pat
     queue.close();
   });
 
-  BatchWriter writer(state_->db, state_->objects, state_->journal);
+  BatchWriter writer(state_->db, state_->objects, state_->journal, options.source_label);
   auto commit = [&] {
     size_t pending = writer.pending();
     writer.commit(report, options.on_problem);

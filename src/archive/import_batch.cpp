@@ -26,8 +26,9 @@ std::string conflict_reason(const std::string& sop_instance_uid, const std::stri
 
 }  // namespace
 
-BatchWriter::BatchWriter(sqlite::Database& db, ObjectStore& objects, const IndexJournal& journal)
-    : db_(db),
+BatchWriter::BatchWriter(sqlite::Database& db, ObjectStore& objects, const IndexJournal& journal, std::string source_label)
+    : source_label_(std::move(source_label)),
+      db_(db),
       objects_(objects),
       journal_(journal),
       insert_patient_(db, sql::kInsertPatient),
@@ -43,6 +44,10 @@ BatchWriter::BatchWriter(sqlite::Database& db, ObjectStore& objects, const Index
       insert_object_(db, sql::kInsertObject),
       insert_instance_(db, sql::kInsertInstance),
       object_of_sop_(db, sql::kObjectOfSopInstance) {}
+
+std::string BatchWriter::source_of(const ScannedFile& file) const {
+  return source_label_.empty() ? std::filesystem::absolute(file.path).string() : source_label_;
+}
 
 ImportOutcome BatchWriter::add(ScannedFile&& file, std::string& reason) {
   auto [earlier, first] = batch_objects_.emplace(file.header.sop_instance_uid, file.sha256);
@@ -118,7 +123,7 @@ ImportOutcome BatchWriter::insert(const ScannedFile& file, const std::string& no
   s.bind(1, series).bind(2, h.sop_instance_uid).bind(3, h.sop_class_uid);
   bind_optional(s, 4, h.instance_number);
   s.bind(5, h.image_position).bind(6, h.image_orientation).bind(7, h.transfer_syntax_uid).bind(8, file.sha256);
-  s.bind(9, int64_t(file.size)).bind(10, std::filesystem::absolute(file.path).string()).bind(11, now);
+  s.bind(9, int64_t(file.size)).bind(10, source_of(file)).bind(11, now);
   s.run();
   transaction_->inserted("instances", db_.last_insert_id());
   return ImportOutcome::Imported;
@@ -153,7 +158,7 @@ void BatchWriter::flag_identity(const PatientState& patient, const ScannedFile& 
     if (*archived == *arrived) continue;
     if (!flagged_.emplace(patient.id, attribute, *arrived).second) continue;
     insert_flag_.reset().bind(1, patient.id).bind(2, attribute).bind(3, *archived).bind(4, *arrived);
-    insert_flag_.bind(5, std::filesystem::absolute(file.path).string()).bind(6, h.sop_instance_uid).bind(7, now).run();
+    insert_flag_.bind(5, source_of(file)).bind(6, h.sop_instance_uid).bind(7, now).run();
     if (db_.changes() != 1) continue;
     transaction_->inserted("identity_flags", db_.last_insert_id());
     ++report.identity_flags;

@@ -19,7 +19,9 @@ namespace maxillo {
 
 class BatchWriter {
  public:
-  BatchWriter(sqlite::Database& db, ObjectStore& objects, const IndexJournal& journal);
+  // source_label: recorded as every instance's source instead of its file's path when not empty
+  // (ImportOptions::source_label).
+  BatchWriter(sqlite::Database& db, ObjectStore& objects, const IndexJournal& journal, std::string source_label = {});
 
   // Writes the file's object now (not yet durable) and queues its rows. A second file of the
   // batch with the same SOP Instance UID is not written: its outcome is returned at once
@@ -30,6 +32,7 @@ class BatchWriter {
   void commit(ImportReport& report, const std::function<void(const ImportProblem&)>& on_problem);
 
  private:
+  std::string source_of(const ScannedFile& file) const;
   struct PatientState {
     int64_t id;
     int64_t default_case;
@@ -42,6 +45,7 @@ class BatchWriter {
   int64_t study_of(const InstanceHeader& h, int64_t patient);
   int64_t series_of(const InstanceHeader& h, int64_t study, int64_t case_id);
 
+  std::string source_label_;
   sqlite::Database& db_;
   ObjectStore& objects_;
   const IndexJournal& journal_;

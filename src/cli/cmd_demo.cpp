@@ -6,6 +6,8 @@
 #include "core/error.h"
 #include "core/json.h"
 #include "core/log.h"
+#include "net/loopback_server.h"
+#include "net/store_client.h"
 #include "pipeline/case_landmarks.h"
 #include "pipeline/ceph_sample_cohort.h"
 #include "pipeline/cohort_archive.h"
@@ -16,6 +18,7 @@
 #include "pipeline/nightly.h"
 #include "pipeline/plan_case.h"
 #include "pipeline/planned_case.h"
+#include "pipeline/report_dicom.h"
 #include "pipeline/synthetic_postop_case.h"
 #include "pipeline/validation_archive.h"
 #include "pipeline/sample_case.h"
@@ -52,17 +55,43 @@ class StageClock {
   std::vector<std::pair<std::string, double>> stages_;
 };
 
+// The files of a folder, in name order.
+std::vector<std::filesystem::path> files_in(const std::filesystem::path& folder) {
+  std::vector<std::filesystem::path> files;
+  for (const auto& entry : std::filesystem::directory_iterator(folder))
+    if (entry.is_regular_file()) files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+// Sends `files` as `sender` to a storage server of ours on a free loopback port that archives
+// into `archive_dir` as `receiver` (the clinic's path: a scanner pushing to maxillo, maxillo
+// pushing the report to the PACS). Throws unless every file was sent and archived.
+net::StorageServerCounts push_over_dicom(const std::vector<std::filesystem::path>& files, const std::string& sender,
+                                          const std::string& receiver, const std::filesystem::path& archive_dir) {
+  net::StorageServerOptions server{.archive = archive_dir, .ae_title = receiver, .allowed = {{sender, "127.0.0.1"}}};
+  const auto counts = net::with_loopback_server(server, [&](const net::DicomPeer& peer) {
+    const auto sent = net::send_files(peer, files, {.calling_ae = sender, .progress = ProgressDisplay::Never});
+    if (!sent.failures.empty())
+      throw Error(ErrorCode::kProcessing, sent.failures.front().file.string(), sent.failures.front().reason);
+  });
+  if (counts.stored + counts.already_archived != int64_t(files.size()))
+    throw Error(ErrorCode::kProcessing, archive_dir.string(), "not every instance sent over DICOM was archived");
+  return counts;
+}
+
 int run_demo(const DemoOptions& options, const GlobalOptions& global) {
   StageClock clock;
   std::filesystem::create_directories(options.out);
   auto sample = pipeline::write_sample_case(options.skeletal_class, 1.0, options.out / "sample");
   clock.mark("generate phantom");
 
+  // The phantom arrives as a patient's CT does in a clinic: pushed by the scanner (C-STORE) to
+  // `maxillo serve`, here on a loopback port inside this process.
   auto archive_dir = global.archive_dir.empty() ? options.out / "archive" : global.archive_dir;
-  auto archive = Archive::open(archive_dir, OpenMode::CreateIfMissing);
-  auto imported = archive.import_paths({sample.ct_folder});
-  if (!imported.all_ok()) throw Error(ErrorCode::kProcessing, sample.ct_folder.string(), "the phantom did not import cleanly");
-  clock.mark("import");
+  const auto received = push_over_dicom(files_in(sample.ct_folder), "DEMO-CT", "MAXILLO", archive_dir);
+  auto archive = Archive::open(archive_dir);
+  clock.mark("receive over DICOM");
 
   auto case_id = archive.resolve_case(pipeline::kPhantomPatientId);
   // Dated follow-up (the sample cohort's first patient) for the follow-up table and Wits chart;
@@ -107,6 +136,12 @@ int run_demo(const DemoOptions& options, const GlobalOptions& global) {
   clock.mark("nightly summary");
   auto report = pipeline::write_consultation_report(archive, case_id, options.out / "report.pdf", report_options);
   clock.mark("volume, surfaces, views, report");
+  // The report back to the PACS (a second server of ours standing in for it), as Encapsulated
+  // PDF in the patient's study, as `maxillo send --report` does.
+  const auto report_dicom = pipeline::write_report_dicom(archive, case_id, report.pdf, options.out / "report.dcm",
+                                                         pipeline::StoreInArchive::Yes);
+  const auto pacs = push_over_dicom({report_dicom.file}, "MAXILLO", "DEMO-PACS", options.out / "pacs");
+  clock.mark("report sent to the PACS");
   auto cohort = pipeline::analyse_cohort(pipeline::sample_cohort(), {}, ceph::Sex::kUnknown, "sample cohort");
   auto cohort_pdf = options.out / "cohort-followup.pdf";
   int cohort_pages = pipeline::write_cohort_report(
@@ -114,7 +149,8 @@ int run_demo(const DemoOptions& options, const GlobalOptions& global) {
   clock.mark("cohort follow-up");
 
   Json summary{{"report", report.pdf.string()}, {"pages", report.pages}, {"archive", archive_dir.string()},
-               {"case", case_id}, {"imported", imported.imported}, {"already_archived", imported.already_archived},
+               {"case", case_id}, {"received_over_dicom", received.stored}, {"already_archived", received.already_archived},
+               {"report_sent_to_pacs", pacs.stored + pacs.already_archived}, {"pacs_archive", (options.out / "pacs").string()},
                {"surfaces_reused", report.surfaces_reused}, {"cohort_report", cohort_pdf.string()},
                {"cohort_pages", cohort_pages}, {"plan_result", plan.result_json.string()},
                {"plan_feasible", plan.result.feasible},

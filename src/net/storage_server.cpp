@@ -77,6 +77,7 @@ class ArchivingSCP : public DcmThreadSCP {
   void notifyAssociationAcknowledge() override {
     ++shared_.associations;
     calling_ae_ = getPeerAETitle().c_str();
+    source_label_ = "dicom://" + calling_ae_ + "@" + getPeerIP().c_str();
     stored_ = failed_ = 0;
     log::info("serve: association from ", calling_ae_, " (", getPeerIP().c_str(), ")");
   }
@@ -134,7 +135,8 @@ class ArchivingSCP : public DcmThreadSCP {
       // One archive connection per association: SQLite serialises the writers, the hashing and
       // parsing of several associations run side by side.
       if (!archive_) archive_.emplace(Archive::open(shared_.options.archive));
-      const ImportReport report = archive_->import_paths({file}, {.progress = ProgressDisplay::Never, .batch_files = 1});
+      const ImportReport report = archive_->import_paths(
+          {file}, {.progress = ProgressDisplay::Never, .on_problem = {}, .batch_files = 1, .source_label = source_label_});
       shared_.stored += int64_t(report.imported);
       shared_.already_archived += int64_t(report.already_archived);
       if (report.imported == 1 && shared_.stable) note_study_change(sop_instance_uid);
@@ -157,6 +159,7 @@ class ArchivingSCP : public DcmThreadSCP {
   StorageServer::Shared& shared_;
   std::optional<Archive> archive_;
   std::string calling_ae_;
+  std::string source_label_;  // each instance's recorded source: dicom://AE@ADDRESS
   int64_t stored_ = 0, failed_ = 0;
 };
 

@@ -19,7 +19,8 @@ Volume load_archived_series(const Archive& archive, int64_t series) {
   std::map<std::string, std::string> source_of;  // object path -> the path it was imported from
   for (const auto& instance : archive.instances(series)) {
     files.push_back(archive.object_path(instance.object_sha256));
-    source_of[files.back().string()] = instance.source_path;
+    // What arrived over the network has no file of its own to name (ImportOptions::source_label).
+    if (instance.source_path.rfind("dicom://", 0) != 0) source_of[files.back().string()] = instance.source_path;
   }
   try {
     return load_series_volume(files);

@@ -1,5 +1,6 @@
 #include "pipeline/consultation_report.h"
 
+#include <algorithm>
 #include <chrono>
 #include <ctime>
 
@@ -35,10 +36,38 @@ std::string describe_series(const StudyRecord* study, const SeriesRecord& series
   return series.description.empty() ? study_text : study_text + " · " + series.description;
 }
 
-report::ReportModel model_header(const CaseContents& contents) {
+// How a series reached the archive, from its first instance's recorded source: "over DICOM from
+// AE" for what arrived over the network (ImportOptions::source_label), else "from files".
+std::string received_by(const Archive& archive, int64_t series) {
+  const auto instances = archive.instances(series);
+  if (instances.empty()) return "";
+  const std::string& source = instances.front().source_path;
+  const std::string network = "dicom://";
+  if (source.rfind(network, 0) != 0) return "from files";
+  return "over DICOM from " + source.substr(network.size(), source.find('@') - network.size());
+}
+
+// "over DICOM from CT_ROOM2 (1 series); from files (2 series)", in the order first met.
+std::string describe_reception(const Archive& archive, const CaseContents& contents) {
+  std::vector<std::pair<std::string, int>> ways;
+  for (const auto& entry : contents.series) {
+    const std::string way = received_by(archive, entry.series.id);
+    if (way.empty()) continue;
+    auto found = std::find_if(ways.begin(), ways.end(), [&](const auto& w) { return w.first == way; });
+    if (found == ways.end()) ways.emplace_back(way, 1);
+    else ++found->second;
+  }
+  std::string text;
+  for (const auto& [way, count] : ways)
+    text += (text.empty() ? "" : "; ") + way + " (" + std::to_string(count) + " series)";
+  return text;
+}
+
+report::ReportModel model_header(const Archive& archive, const CaseContents& contents) {
   report::ReportModel model;
   model.patient = {contents.patient.name, contents.patient.patient_id, contents.patient.birth_date, contents.patient.sex};
   model.case_label = contents.record.label;
+  model.images_received = describe_reception(archive, contents);
   for (const auto& entry : contents.series) {
     const auto& s = entry.series;
     const StudyRecord* study = study_of(contents, s.study);
@@ -118,7 +147,7 @@ ConsultationResult write_consultation_report(Archive& archive, int64_t case_id, 
   progress.advance();
 
   start = Clock::now();
-  auto model = model_header(contents);
+  auto model = model_header(archive, contents);
   model.sections.push_back(summary_section(contents, series, surfaces, landmarks));
   model.sections.push_back(views_section(views));
   model.sections.push_back(case_cephalometry_section(archive, case_id, sex_for_norms(contents.patient.sex)));

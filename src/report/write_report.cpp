@@ -37,11 +37,13 @@ std::string format_spacing(const std::array<double, 3>& spacing) {
 
 void patient_section(PdfDocument& pdf, const ReportModel& model) {
   const auto& p = model.patient;
-  pdf.key_values({{"Patient", format_person_name(p.name)},
-                  {"Patient ID", p.id},
-                  {"Birth date", format_dicom_date(p.birth_date)},
-                  {"Sex", format_sex(p.sex)},
-                  {"Case", model.case_label}});
+  std::vector<std::pair<std::string, std::string>> facts = {{"Patient", format_person_name(p.name)},
+                                                            {"Patient ID", p.id},
+                                                            {"Birth date", format_dicom_date(p.birth_date)},
+                                                            {"Sex", format_sex(p.sex)},
+                                                            {"Case", model.case_label}};
+  if (!model.images_received.empty()) facts.emplace_back("Images received", model.images_received);
+  pdf.key_values(facts);
   if (model.series.empty()) return;
   Table table{{{"Date", 1.3, Align::Left},
                {"Modality", 1.1, Align::Left},

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <set>
 
 #include "archive/index_comparison.h"
 #include "core/json.h"
@@ -166,6 +167,30 @@ TEST_F(DemoTest, WritesTheSampleCohortFollowUpReport) {
   EXPECT_GT(images[0].distinct_colours, 6u);
 }
 
+// The clinic's path: the scan arrives from the (simulated) scanner over DICOM, which the report's
+// series table says, and the report leaves for the (simulated) PACS as an Encapsulated PDF in one
+// of the case's studies.
+TEST_F(DemoTest, TheScanArrivesAndTheReportLeavesOverDicom) {
+  ASSERT_EQ(demo_.exit_code, 0) << demo_.output;
+  EXPECT_NE(testing::pdf_text(report()).find("over DICOM from DEMO-CT (1 series)"), std::string::npos);
+  const auto list = [](const std::filesystem::path& archive, const std::string& what) {
+    return Json::parse(run_command(std::string(MAXILLO_BINARY) + " --json --archive " + quote(archive) + " list " + what +
+                                   " 2>/dev/null")
+                           .output);
+  };
+  const auto pacs = folder_->path() / "out" / "pacs";
+  int reports = 0;
+  for (const auto& series : list(pacs, "series")) reports += series.at("modality").get<std::string>() == "DOC";
+  EXPECT_EQ(reports, 1);
+  std::set<std::string> scan_studies;
+  for (const auto& study : list(folder_->path() / "out" / "archive", "studies"))
+    scan_studies.insert(study.at("study_uid").get<std::string>());
+  const auto pacs_studies = list(pacs, "studies");
+  ASSERT_EQ(pacs_studies.size(), 1u);
+  EXPECT_TRUE(scan_studies.count(pacs_studies[0].at("study_uid").get<std::string>()))
+      << "the report is filed in one of the case's studies";
+}
+
 // The same phantom is the same scan (UIDs derived from it): a second demo into the same folder
 // re-imports nothing and reuses the stored surfaces.
 TEST_F(DemoTest, SecondRunIsIdempotent) {
@@ -174,7 +199,7 @@ TEST_F(DemoTest, SecondRunIsIdempotent) {
                            " 2>/dev/null");
   ASSERT_EQ(again.exit_code, 0) << again.output;
   auto summary = Json::parse(again.output);
-  EXPECT_EQ(summary.at("imported"), 0);
+  EXPECT_EQ(summary.at("received_over_dicom"), 0);
   EXPECT_GT(summary.at("already_archived").get<int>(), 100);
   EXPECT_EQ(summary.at("surfaces_reused"), true);
   auto series = run_command(std::string(MAXILLO_BINARY) + " --json --archive " + quote(folder_->path() / "out" / "archive") +
