@@ -74,6 +74,13 @@ class ArchivingSCP : public DcmThreadSCP {
     return OFFalse;
   }
 
+  // Contexts we will refuse are logged with the reason (DCMTK's own log is silenced).
+  void notifyAssociationRequest(const T_ASC_Parameters& request, DcmSCPActionType& action) override {
+    DcmThreadSCP::notifyAssociationRequest(request, action);
+    for (const auto& refusal : refused_contexts(request))
+      log::warning("serve: ", request.DULparams.callingAPTitle, " proposed ", refusal, " (refused)");
+  }
+
   void notifyAssociationAcknowledge() override {
     ++shared_.associations;
     calling_ae_ = getPeerAETitle().c_str();
