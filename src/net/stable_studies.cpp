@@ -20,4 +20,10 @@ std::vector<std::string> StableStudies::take_due(Clock::time_point now) {
   return due;
 }
 
+bool StableStudies::changed_since_due(const std::string& study_uid) {
+  std::lock_guard lock(mutex_);
+  const auto found = studies_.find(study_uid);
+  return found != studies_.end() && found->second.changes != found->second.changes_done;
+}
+
 }  // namespace maxillo::net

@@ -22,6 +22,8 @@ class StableStudies {
   // The studies quiet since `now - quiet` that changed since they were last due, each marked
   // done for its current state. Any thread.
   std::vector<std::string> take_due(Clock::time_point now);
+  // True when the study changed since it was last due (or was never due). Any thread.
+  bool changed_since_due(const std::string& study_uid);
 
  private:
   struct Study {

@@ -15,6 +15,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "net/no_nagle_delay.h"
+#include "net/pending_studies.h"
 #include "net/stable_studies.h"
 #include "net/stable_study_action.h"
 #include "net/storage_contexts.h"
@@ -28,7 +29,8 @@ struct StorageServer::Shared {
   std::atomic<int64_t> associations{0}, refused{0}, stored{0}, already_archived{0}, failed{0};
   std::atomic<int64_t> next_file{0};
   std::atomic<bool> stop_requested{false};
-  std::unique_ptr<StableStudies> stable;  // set when there is a stable-study action
+  std::unique_ptr<StableStudies> stable;    // set when there is a stable-study action
+  std::unique_ptr<PendingStudies> pending;  // ... and the actions owed, kept across restarts
   std::atomic<int64_t> stable_actions{0}, failed_actions{0};
   std::unique_ptr<DcmTLSTransportLayer> tls;  // set when serving DICOM TLS
 };
@@ -157,7 +159,9 @@ class ArchivingSCP : public DcmThreadSCP {
   // stable-study action, never the C-STORE's success.
   void note_study_change(const std::string& sop_instance_uid) {
     try {
-      shared_.stable->archived(study_of(sop_instance_uid), StableStudies::Clock::now());
+      const std::string study = study_of(sop_instance_uid);
+      shared_.stable->archived(study, StableStudies::Clock::now());
+      shared_.pending->add(study);  // durable before the C-STORE is answered
     } catch (const std::exception& error) {
       log::warning("serve: an archived instance's study was not found, no stable-study action for it: ", error.what());
     }
@@ -229,6 +233,11 @@ StorageServer::StorageServer(StorageServerOptions options) : shared_(std::make_u
     if (options.stable_seconds < 1 || options.stable_seconds > 86400)
       throw Error(ErrorCode::kUsage, "--stable-seconds", "from 1 to 86400 seconds");
     shared_->stable = std::make_unique<StableStudies>(std::chrono::seconds(options.stable_seconds));
+    shared_->pending = std::make_unique<PendingStudies>(options.archive / "serve" / "pending-stable-studies");
+    // Actions owed from before a stop or a crash: due after a full quiet period from now.
+    const auto owed = shared_->pending->studies();
+    for (const auto& study : owed) shared_->stable->archived(study, StableStudies::Clock::now());
+    if (!owed.empty()) log::info("serve: ", owed.size(), " studies still owe their stable-study action");
   }
   shared_->tls = acceptor_tls(options.tls);
   shared_->incoming = options.archive / "incoming";
@@ -257,6 +266,7 @@ void StorageServer::run() {
     while (listening) {
       for (const auto& study : shared_->stable->take_due(StableStudies::Clock::now())) {
         const int status = run_stable_study_action(shared_->options.on_stable_study, shared_->options.archive, study);
+        shared_->pending->remove_if_settled(study, [&] { return shared_->stable->changed_since_due(study); });
         ++shared_->stable_actions;
         if (status != 0) ++shared_->failed_actions;
       }

@@ -10,7 +10,9 @@
 // others. stop() lets the associations in flight finish, then run() returns.
 //
 // Stable studies (options.on_stable_study): a thread looks once a second for studies quiet for
-// stable_seconds (net/stable_studies.h) and runs the command for each, one at a time.
+// stable_seconds (net/stable_studies.h) and runs the command for each, one at a time. The studies
+// whose action is owed are kept in ARCHIVE/serve/ (net/pending_studies.h): after a stop or a
+// crash, a restarted server runs them after a full quiet period.
 //
 // With TLS (options.tls) every association is TLS; a caller that does not speak it, or whose
 // certificate is not trusted, fails the handshake and never reaches the AE title checks.

@@ -319,5 +319,53 @@ TEST_F(ServeWithStableAction, RunsOncePerChangeOfAStudy) {
   EXPECT_NE(server_output().find("2 stable-study actions (0 failed)"), std::string::npos) << server_output();
 }
 
+// A server killed before a study's quiet period ended still owes its action: the restarted server
+// runs it (once), and a third start finds nothing owed.
+TEST(ServeStableAcrossRestarts, AnActionOwedBeforeAKillRunsAfterTheRestart) {
+  if (!testing::tool_available("echoscu") || !testing::tool_available("storescu"))
+    GTEST_SKIP() << "DCMTK's echoscu/storescu are not installed";
+  TemporaryFolder folder("serve-restart");
+  const auto actions = folder / "actions.txt";
+  const uint16_t port = free_loopback_port();
+  auto start = [&](int stable_seconds) {
+    const pid_t pid = testing::start_maxillo(
+        {"--archive", (folder / "archive").string(), "serve", "--port", std::to_string(port), "--allow", "STORESCU",
+         "--allow", "ECHOSCU", "--stable-seconds", std::to_string(stable_seconds), "--on-stable-study",
+         "echo \"$MAXILLO_STUDY_UID\" >> " + quote(actions)},
+        folder / "serve.out", folder / "serve.err");
+    for (int attempt = 0; attempt < 200; ++attempt) {
+      if (run_command("echoscu -aet ECHOSCU -aec MAXILLO 127.0.0.1 " + std::to_string(port) + " 2>&1").exit_code == 0) break;
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    return pid;
+  };
+  auto lines = [&] {
+    std::vector<std::string> found;
+    std::ifstream in(actions);
+    for (std::string line; std::getline(in, line);) found.push_back(line);
+    return found;
+  };
+  const auto series = write_series(folder / "series", "NETRESTART", 3, 0);
+
+  pid_t server = start(3600);
+  std::string push = "storescu -aet STORESCU -aec MAXILLO 127.0.0.1 " + std::to_string(port);
+  for (const auto& file : series.files) push += " " + quote(file);
+  ASSERT_EQ(run_command(push).exit_code, 0);
+  kill(server, SIGKILL);  // long before the hour of quiet
+  waitpid(server, nullptr, 0);
+  EXPECT_TRUE(lines().empty());
+
+  server = start(1);
+  for (int waited = 0; waited < 100 && lines().empty(); ++waited) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  EXPECT_EQ(testing::stop_process(server), 0);
+  ASSERT_EQ(lines().size(), 1u);
+  EXPECT_EQ(lines()[0], series.study_instance_uid);
+
+  server = start(1);
+  std::this_thread::sleep_for(std::chrono::milliseconds(2500));
+  EXPECT_EQ(testing::stop_process(server), 0);
+  EXPECT_EQ(lines().size(), 1u) << "nothing owed any more";
+}
+
 }  // namespace
 }  // namespace maxillo

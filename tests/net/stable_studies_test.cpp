@@ -1,6 +1,8 @@
 // A study is due once per change, after a quiet period; the clock is passed in.
 #include <gtest/gtest.h>
 
+#include "core/temporary_folder.h"
+#include "net/pending_studies.h"
 #include "net/stable_studies.h"
 
 namespace maxillo::net {
@@ -22,6 +24,31 @@ TEST(StableStudies, DueOncePerChangeAfterTheQuietPeriod) {
   studies.archived("1.2.3", t0 + 600s);  // a late series
   EXPECT_TRUE(studies.take_due(t0 + 630s).empty());
   EXPECT_EQ(studies.take_due(t0 + 660s), std::vector<std::string>{"1.2.3"});
+}
+
+// What is owed survives the object (a restart); a study that changed again after its action was
+// taken stays owed, one that did not is removed.
+TEST(PendingStudies, KeepsWhatIsOwedAcrossRestartsAndRemovesOnlySettledStudies) {
+  TemporaryFolder folder("pending-studies");
+  const auto file = folder / "serve" / "pending";
+  {
+    PendingStudies pending(file);
+    EXPECT_TRUE(pending.studies().empty());
+    pending.add("1.2.3");
+    pending.add("1.2.4");
+    pending.add("1.2.3");
+  }
+  PendingStudies reopened(file);
+  EXPECT_EQ(reopened.studies(), (std::vector<std::string>{"1.2.3", "1.2.4"}));
+  StableStudies stable(0s);
+  const auto now = StableStudies::Clock::now();
+  stable.archived("1.2.3", now);
+  stable.archived("1.2.4", now);
+  ASSERT_EQ(stable.take_due(now).size(), 2u);
+  stable.archived("1.2.4", now + 1s);  // changed again while its action ran
+  for (const std::string study : {"1.2.3", "1.2.4"})
+    reopened.remove_if_settled(study, [&] { return stable.changed_since_due(study); });
+  EXPECT_EQ(PendingStudies(file).studies(), (std::vector<std::string>{"1.2.4"}));
 }
 
 }  // namespace
