@@ -6,6 +6,7 @@
 #include <dcmtk/dcmnet/diutil.h>
 #include <dcmtk/dcmnet/scppool.h>
 
+#include <algorithm>
 #include <chrono>
 #include <optional>
 #include <thread>
@@ -22,6 +23,9 @@
 #include "net/tls_layer.h"
 
 namespace maxillo::net {
+
+// Longest wait for an association request after a peer has connected (see configure()).
+constexpr int kAssociationRequestSeconds = 3;
 
 struct StorageServer::Shared {
   StorageServerOptions options;
@@ -207,7 +211,11 @@ void configure(DcmSCPConfig& config, const StorageServerOptions& options) {
   config.setConnectionTimeout(1);
   config.setDIMSEBlockingMode(DIMSE_NONBLOCKING);
   config.setDIMSETimeout(Uint32(options.timeout_seconds));
-  config.setACSETimeout(Uint32(options.timeout_seconds));
+  // DCMTK's pool reads each association request in its listening thread, waiting up to the ACSE
+  // timeout for the first PDU: a peer that connects and says nothing would hold up every other
+  // caller that long. A real peer sends its request as soon as it has connected, and the other
+  // association-level exchanges (acknowledge, release) are as quick, so this bound is short.
+  config.setACSETimeout(Uint32(std::min(options.timeout_seconds, kAssociationRequestSeconds)));
   config.setMaxReceivePDULength(ASC_DEFAULTMAXPDU * 8);
   accept_verification(config);
   accept_storage(config);

@@ -246,6 +246,24 @@ TEST_F(Serve, ReceivesWhatMaxilloSendsOriginalAndDeidentified) {
   EXPECT_EQ(archive.series().size(), 2u);
 }
 
+// A peer that connects and says nothing (a dead scanner, a port scanner) does not hold up the
+// others beyond a few seconds: echoscu, which gives up after 8 s, is answered while the silent
+// connection is still open (the server's --timeout is 10 s).
+TEST_F(Serve, ASilentConnectionDoesNotHoldUpOtherPeers) {
+  const int silent = socket(AF_INET, SOCK_STREAM, 0);
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  address.sin_port = htons(port_);
+  ASSERT_EQ(connect(silent, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));  // the server is now reading from it
+  const auto answered =
+      run_command("echoscu -ta 8 -aet ECHOSCU -aec MAXILLO 127.0.0.1 " + std::to_string(port_) + " 2>&1");
+  close(silent);
+  EXPECT_EQ(answered.exit_code, 0) << answered.output;
+  EXPECT_EQ(stop_server(), 0);
+}
+
 // Retrieving from a peer that offers no query/retrieve (our own server only stores) says which
 // service is missing; a C-MOVE port already taken is named before anything is asked.
 TEST_F(Serve, RetrieveNamesTheMissingServiceAndATakenMovePort) {
