@@ -1,4 +1,5 @@
 #include "report/pdf_document.h"
+#include "report/pdf_to_unicode.h"
 
 #include <cassert>
 #include <cstdio>
@@ -41,6 +42,8 @@ HPDF_Font load_font(PdfDocument::Impl& impl, const std::filesystem::path& file) 
   impl.check("loading the TrueType font", file.string());
   HPDF_Font font = HPDF_GetFont(impl.pdf, name, "UTF-8");
   impl.check("selecting the font with UTF-8 encoding", file.string());
+  use_identity_to_unicode(impl.pdf, font);  // libharu's own is malformed (pdf_to_unicode.h)
+  impl.check("writing the font's ToUnicode map", file.string());
   return font;
 }
 

@@ -45,6 +45,24 @@ TEST_F(PdfDocumentTest, EveryPageHasHeaderFooterAndPageNofM) {
   EXPECT_EQ(run_command("qpdf --check " + quote(folder_ / "pages.pdf")).exit_code, 0);
 }
 
+// The fonts' ToUnicode maps are real ToUnicode CMaps (libharu's were encoding CMaps, which
+// poppler reported on every page): extraction gives the characters back with no warning.
+TEST_F(PdfDocumentTest, TextExtractsThroughAValidToUnicodeMap) {
+  PdfDocument pdf(style_);
+  pdf.heading("Ærø, Åsa · 1.00 × 0.50 mm ± 2° — Zürich", HeadingLevel::Title);
+  pdf.paragraph("Distraction ≤ 10 mm, SNA 82.0°");
+  pdf.save(folder_ / "unicode.pdf");
+  const auto extraction = run_command("pdftotext -enc UTF-8 " + quote(folder_ / "unicode.pdf") + " - 2>&1");
+  EXPECT_EQ(extraction.exit_code, 0);
+  EXPECT_EQ(extraction.output.find("ToUnicode"), std::string::npos) << extraction.output;
+  EXPECT_EQ(extraction.output.find("Syntax Warning"), std::string::npos) << extraction.output;
+  EXPECT_NE(extraction.output.find("Ærø, Åsa · 1.00 × 0.50 mm ± 2° — Zürich"), std::string::npos) << extraction.output;
+  EXPECT_NE(extraction.output.find("Distraction ≤ 10 mm, SNA 82.0°"), std::string::npos) << extraction.output;
+  const auto qdf = folder_ / "unicode-qdf.pdf";
+  ASSERT_EQ(run_command("qpdf --qdf --object-streams=disable " + quote(folder_ / "unicode.pdf") + " " + quote(qdf)).exit_code, 0);
+  EXPECT_EQ(run_command("grep -a -c beginbfrange " + quote(qdf)).output, "6\n") << "3 blocks in each of 2 fonts";
+}
+
 TEST_F(PdfDocumentTest, LongTableBreaksAcrossPagesRepeatingItsHeader) {
   PdfDocument pdf(style_);
   Table table{{{"Measurement", 3, Align::Left}, {"Value", 1, Align::Right}, {"Norm", 1, Align::Right}}, {}};
