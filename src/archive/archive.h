@@ -58,6 +58,9 @@ struct ImportOptions {
   ProgressDisplay progress = ProgressDisplay::Auto;
   // Called for each problem as it is met (the CLI prints "path: reason" at once).
   std::function<void(const ImportProblem&)> on_problem;
+  // Called for each file that ends in the archive, once durable: Imported, or AlreadyArchived
+  // (the same bytes were archived before). The others go to on_problem.
+  std::function<void(const std::filesystem::path&, ImportOutcome)> on_archived;
   size_t batch_files = 500;  // files per durable batch (one syncfs + one transaction)
   // Recorded as each new instance's source instead of its file's path, for files that are only
   // a spool: "dicom://AE@ADDRESS" for what `maxillo serve` received (see source_description).

@@ -112,7 +112,7 @@ ImportReport Archive::import_paths(const std::vector<std::filesystem::path>& pat
   BatchWriter writer(state_->db, state_->objects, state_->journal, options.source_label);
   auto commit = [&] {
     size_t pending = writer.pending();
-    writer.commit(report, options.on_problem);
+    writer.commit(report, options);
     progress.advance(pending);
   };
   try {
@@ -121,6 +121,7 @@ ImportReport Archive::import_paths(const std::vector<std::filesystem::path>& pat
         case ScannedFile::Stage::Known:
           if (restore_archived_object(state_->objects, *item)) ++report.restored;
           ++report.already_archived;
+          if (options.on_archived) options.on_archived(item->path, ImportOutcome::AlreadyArchived);
           progress.advance();
           break;
         case ScannedFile::Stage::Conflict:
@@ -138,6 +139,7 @@ ImportReport Archive::import_paths(const std::vector<std::filesystem::path>& pat
             case ImportOutcome::Imported: break;
             case ImportOutcome::AlreadyArchived:  // the same file twice in one batch
               ++report.already_archived;
+              if (options.on_archived) options.on_archived(path, ImportOutcome::AlreadyArchived);
               progress.advance();
               break;
             default:

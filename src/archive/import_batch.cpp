@@ -62,12 +62,13 @@ ImportOutcome BatchWriter::add(ScannedFile&& file, std::string& reason) {
   return ImportOutcome::Imported;
 }
 
-void BatchWriter::commit(ImportReport& report, const std::function<void(const ImportProblem&)>& on_problem) {
+void BatchWriter::commit(ImportReport& report, const ImportOptions& options) {
   if (batch_.empty()) return;
   objects_.make_durable();
   const std::string now = utc_now();
   ImportReport outcome;
   std::vector<ImportProblem> problems;
+  std::vector<std::pair<std::filesystem::path, ImportOutcome>> archived;
   {
     JournalledTransaction transaction(db_, journal_, "import");
     transaction_ = &transaction;
@@ -77,9 +78,9 @@ void BatchWriter::commit(ImportReport& report, const std::function<void(const Im
     } forget{transaction_};
     for (const auto& file : batch_) {
       std::string reason;
-      switch (insert(file, now, outcome, reason)) {
-        case ImportOutcome::Imported: ++outcome.imported; break;
-        case ImportOutcome::AlreadyArchived: ++outcome.already_archived; break;
+      switch (const ImportOutcome result = insert(file, now, outcome, reason)) {
+        case ImportOutcome::Imported: ++outcome.imported; archived.emplace_back(file.path, result); break;
+        case ImportOutcome::AlreadyArchived: ++outcome.already_archived; archived.emplace_back(file.path, result); break;
         default: problems.push_back({file.path, ImportOutcome::Conflict, ErrorCode::kConflict, reason}); break;
       }
     }
@@ -89,9 +90,11 @@ void BatchWriter::commit(ImportReport& report, const std::function<void(const Im
   report.imported += outcome.imported;
   report.already_archived += outcome.already_archived;
   report.identity_flags += outcome.identity_flags;
+  if (options.on_archived)
+    for (const auto& [path, result] : archived) options.on_archived(path, result);
   for (auto& problem : problems) {
     ++report.conflicts;
-    if (on_problem) on_problem(problem);
+    if (options.on_problem) options.on_problem(problem);
     report.problems.push_back(std::move(problem));
   }
   batch_.clear();

@@ -29,7 +29,8 @@ class BatchWriter {
   ImportOutcome add(ScannedFile&& file, std::string& reason);
   size_t pending() const { return batch_.size(); }
   // syncfs, then one transaction for every queued file; each outcome goes into report.
-  void commit(ImportReport& report, const std::function<void(const ImportProblem&)>& on_problem);
+  // options.on_problem and options.on_archived hear of each file once the transaction committed.
+  void commit(ImportReport& report, const ImportOptions& options);
 
  private:
   std::string source_of(const ScannedFile& file) const;

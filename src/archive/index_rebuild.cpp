@@ -105,9 +105,9 @@ void adopt_unindexed_objects(sqlite::Database& db, ObjectStore& objects, const I
     std::string reason;
     if (writer.add(std::move(file), reason) == ImportOutcome::Imported) ++report.dicom_adopted;
     else report.unexplained.push_back(path);
-    if (writer.pending() >= kAdoptionBatch) writer.commit(imported, nullptr);
+    if (writer.pending() >= kAdoptionBatch) writer.commit(imported, {});
   }
-  writer.commit(imported, nullptr);
+  writer.commit(imported, {});
   for (const auto& problem : imported.problems) {
     report.unexplained.push_back(problem.path);
     --report.dicom_adopted;

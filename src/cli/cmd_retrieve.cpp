@@ -27,8 +27,10 @@ std::vector<std::string> studies_to_retrieve(const RetrieveArguments& a, const n
     throw Error(ErrorCode::kUsage, "retrieve", "give Study Instance UIDs or --patient-id, one of the two");
   if (a.patient_id.empty()) return a.studies;
   const net::QueryOptions query{.calling_ae = a.options.calling_ae, .timeout_seconds = a.options.timeout_seconds, .tls = a.options.tls};
+  net::StudyQuery of_patient;
+  of_patient.patient_id = a.patient_id;
   std::vector<std::string> studies;
-  for (const auto& match : net::find_studies(peer, {.patient_id = a.patient_id}, query)) studies.push_back(match.study_uid);
+  for (const auto& match : net::find_studies(peer, of_patient, query)) studies.push_back(match.study_uid);
   if (studies.empty()) throw Error(ErrorCode::kNotFound, net::to_string(peer), "holds no study for that patient ID");
   return studies;
 }

@@ -16,6 +16,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "net/no_nagle_delay.h"
+#include "net/group_commit.h"
 #include "net/pending_studies.h"
 #include "net/stable_studies.h"
 #include "net/stable_study_action.h"
@@ -37,6 +38,7 @@ struct StorageServer::Shared {
   std::unique_ptr<PendingStudies> pending;  // ... and the actions owed, kept across restarts
   std::atomic<int64_t> stable_actions{0}, failed_actions{0};
   std::unique_ptr<DcmTLSTransportLayer> tls;  // set when serving DICOM TLS
+  std::unique_ptr<GroupCommit> commit;        // archives what the associations receive
 };
 
 namespace {
@@ -47,15 +49,12 @@ struct StoreAnswer {
   std::string reason;
 };
 
-StoreAnswer answer_for(const ImportReport& report) {
-  if (report.imported + report.already_archived == 1) return {};
-  if (report.problems.empty()) return {STATUS_STORE_Refused_OutOfResources, "the archive did not take the instance"};
-  const ImportProblem& problem = report.problems.front();
-  const int exit_code = exit_code_for(problem.code);
+StoreAnswer answer_for(const GroupCommit::Result& result) {
+  if (result.outcome == ImportOutcome::Imported || result.outcome == ImportOutcome::AlreadyArchived) return {};
   // Input errors (20-39) and conflicts are the sender's data; anything else is ours.
-  const bool senders_data = (exit_code >= 20 && exit_code < 40) || problem.outcome == ImportOutcome::Conflict;
-  return {Uint16(senders_data ? STATUS_STORE_Error_CannotUnderstand : STATUS_STORE_Refused_OutOfResources),
-          problem.reason};
+  const int exit_code = exit_code_for(result.code);
+  const bool senders_data = (exit_code >= 20 && exit_code < 40) || result.outcome == ImportOutcome::Conflict;
+  return {Uint16(senders_data ? STATUS_STORE_Error_CannotUnderstand : STATUS_STORE_Refused_OutOfResources), result.reason};
 }
 
 // One association: checks who calls, archives each C-STORE before answering it.
@@ -143,26 +142,20 @@ class ArchivingSCP : public DcmThreadSCP {
     return archive_->study(archive_->series_by_id(instance->series)->study)->study_uid;
   }
 
+  // Archived with whatever other associations have received meanwhile (net/group_commit.h).
   StoreAnswer archive_file(const std::filesystem::path& file, const std::string& sop_instance_uid) {
-    try {
-      // One archive connection per association: SQLite serialises the writers, the hashing and
-      // parsing of several associations run side by side.
-      if (!archive_) archive_.emplace(Archive::open(shared_.options.archive));
-      const ImportReport report = archive_->import_paths(
-          {file}, {.progress = ProgressDisplay::Never, .on_problem = {}, .batch_files = 1, .source_label = source_label_});
-      shared_.stored += int64_t(report.imported);
-      shared_.already_archived += int64_t(report.already_archived);
-      if (report.imported == 1 && shared_.stable) note_study_change(sop_instance_uid);
-      return answer_for(report);
-    } catch (const std::exception& error) {
-      return {STATUS_STORE_Refused_OutOfResources, error.what()};
-    }
+    const GroupCommit::Result result = shared_.commit->archive(file, source_label_);
+    shared_.stored += result.outcome == ImportOutcome::Imported;
+    shared_.already_archived += result.outcome == ImportOutcome::AlreadyArchived;
+    if (result.outcome == ImportOutcome::Imported && shared_.stable) note_study_change(sop_instance_uid);
+    return answer_for(result);
   }
 
   // The instance is archived whatever happens here: a failure to find its study costs the
   // stable-study action, never the C-STORE's success.
   void note_study_change(const std::string& sop_instance_uid) {
     try {
+      if (!archive_) archive_.emplace(Archive::open(shared_.options.archive));
       const std::string study = study_of(sop_instance_uid);
       shared_.stable->archived(study, StableStudies::Clock::now());
       shared_.pending->add(study);  // durable before the C-STORE is answered
@@ -172,7 +165,7 @@ class ArchivingSCP : public DcmThreadSCP {
   }
 
   StorageServer::Shared& shared_;
-  std::optional<Archive> archive_;
+  std::optional<Archive> archive_;  // this association's, to look up studies for the stable-study action
   std::string calling_ae_;
   std::string source_label_;  // each instance's recorded source: dicom://AE@ADDRESS
   int64_t stored_ = 0, failed_ = 0;
@@ -248,6 +241,7 @@ StorageServer::StorageServer(StorageServerOptions options) : shared_(std::make_u
     if (!owed.empty()) log::info("serve: ", owed.size(), " studies still owe their stable-study action");
   }
   shared_->tls = acceptor_tls(options.tls);
+  shared_->commit = std::make_unique<GroupCommit>(options.archive);
   shared_->incoming = options.archive / "incoming";
   clear_incoming(shared_->incoming);
   shared_->options = std::move(options);

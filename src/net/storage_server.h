@@ -6,8 +6,9 @@
 // A C-STORE is answered with success only after the object and its index row are durable (the
 // import's syncfs and commit); anything else is answered with a failure status and a reason in
 // the Error Comment, never a success. Several associations are served at once, one thread each,
-// up to max_associations; a peer silent for timeout_seconds is dropped without holding up the
-// others. stop() lets the associations in flight finish, then run() returns.
+// up to max_associations; the files they receive meanwhile are archived together, one sync and
+// one commit for all (net/group_commit.h). A peer silent for timeout_seconds is dropped without
+// holding up the others. stop() lets the associations in flight finish, then run() returns.
 //
 // Stable studies (options.on_stable_study): a thread looks once a second for studies quiet for
 // stable_seconds (net/stable_studies.h) and runs the command for each, one at a time. The studies
