@@ -63,7 +63,7 @@ struct ImportOptions {
   std::function<void(const std::filesystem::path&, ImportOutcome)> on_archived;
   size_t batch_files = 500;  // files per durable batch (one syncfs + one transaction)
   // Recorded as each new instance's source instead of its file's path, for files that are only
-  // a spool: "dicom://AE@ADDRESS" for what `maxillo serve` received (see source_description).
+  // a spool: network_source(AE, ADDRESS) for what `maxillo serve` received (instance_source.h).
   std::string source_label;
 };
 

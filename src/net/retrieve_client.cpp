@@ -7,6 +7,7 @@
 #include <chrono>
 #include <optional>
 
+#include "archive/instance_source.h"
 #include "core/error.h"
 #include "core/progress.h"
 #include "core/temporary_folder.h"
@@ -137,7 +138,7 @@ RetrieveReport retrieve_study(const DicomPeer& peer, const std::string& study_ui
   for (const auto& entry : std::filesystem::directory_iterator(scratch.path())) report.received += entry.is_regular_file();
   ImportOptions import;
   import.progress = options.progress;
-  import.source_label = "dicom://" + peer.ae_title + "@" + peer.host;
+  import.source_label = network_source(peer.ae_title, peer.host);
   if (report.received > 0) report.imported = archive.import_paths({scratch.path()}, import);
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return report;

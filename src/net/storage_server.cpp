@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include "archive/archive.h"
+#include "archive/instance_source.h"
 #include "core/error.h"
 #include "core/log.h"
 #include "net/no_nagle_delay.h"
@@ -89,7 +90,7 @@ class ArchivingSCP : public DcmThreadSCP {
   void notifyAssociationAcknowledge() override {
     ++shared_.associations;
     calling_ae_ = getPeerAETitle().c_str();
-    source_label_ = "dicom://" + calling_ae_ + "@" + getPeerIP().c_str();
+    source_label_ = network_source(calling_ae_, getPeerIP().c_str());
     stored_ = failed_ = 0;
     log::info("serve: association from ", calling_ae_, " (", getPeerIP().c_str(), ")");
   }

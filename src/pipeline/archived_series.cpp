@@ -2,6 +2,7 @@
 
 #include <map>
 
+#include "archive/instance_source.h"
 #include "imaging/volume_assembly.h"
 
 namespace maxillo::pipeline {
@@ -20,7 +21,7 @@ Volume load_archived_series(const Archive& archive, int64_t series) {
   for (const auto& instance : archive.instances(series)) {
     files.push_back(archive.object_path(instance.object_sha256));
     // What arrived over the network has no file of its own to name (ImportOptions::source_label).
-    if (instance.source_path.rfind("dicom://", 0) != 0) source_of[files.back().string()] = instance.source_path;
+    if (!network_sender(instance.source_path)) source_of[files.back().string()] = instance.source_path;
   }
   try {
     return load_series_volume(files);

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <ctime>
 
+#include "archive/instance_source.h"
 #include "core/atomic_file.h"
 #include "core/progress.h"
 #include "core/utc_time.h"
@@ -41,10 +42,8 @@ std::string describe_series(const StudyRecord* study, const SeriesRecord& series
 std::string received_by(const Archive& archive, int64_t series) {
   const auto instances = archive.instances(series);
   if (instances.empty()) return "";
-  const std::string& source = instances.front().source_path;
-  const std::string network = "dicom://";
-  if (source.rfind(network, 0) != 0) return "from files";
-  return "over DICOM from " + source.substr(network.size(), source.find('@') - network.size());
+  const auto sender = network_sender(instances.front().source_path);
+  return sender ? "over DICOM from " + *sender : "from files";
 }
 
 // "over DICOM from CT_ROOM2 (1 series); from files (2 series)", in the order first met.
