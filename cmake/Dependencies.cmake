@@ -1,6 +1,7 @@
 # Every third-party library comes from Debian 12's packages (scripts/setup installs them).
 find_package(Eigen3 3.4 REQUIRED NO_MODULE)
 find_package(SQLite3 REQUIRED)
+find_package(PostgreSQL REQUIRED)       # libpq: the archive index on a PostgreSQL server (issue 13)
 find_package(OpenSSL REQUIRED)            # SHA-256 of archived objects (uses SHA-NI where present)
 find_package(nlohmann_json 3 REQUIRED)
 find_package(CLI11 REQUIRED)

@@ -1,6 +1,8 @@
 #pragma once
 // The case archive: a folder holding an SQLite index (index.sqlite) and a content-addressed
-// object store (objects/ab/cdef..., named by the SHA-256 of the bytes).
+// object store (objects/ab/cdef..., named by the SHA-256 of the bytes); or, at a clinic's or a
+// research group's scale, the index on a PostgreSQL server and the objects in a folder every
+// node shares (archive_location.h). The archive's interface and semantics are the same on both.
 //
 //   ARCHIVE/index.sqlite   patients, studies, series, instances, cases, artefacts (db/*.sql)
 //   ARCHIVE/objects/       original DICOM files and derived artefacts, never modified
@@ -116,6 +118,22 @@ struct RebuildReport {
   std::map<std::string, int64_t> rows;        // rows per table in the rebuilt index
 };
 
+struct MigrationOptions {
+  ProgressDisplay progress = ProgressDisplay::Auto;
+};
+
+struct MigrationReport {
+  size_t objects_copied = 0;    // written into the target's store
+  size_t objects_present = 0;   // already there, intact (a resumed migration)
+  std::vector<std::string> damaged_sources;  // source objects that no longer hash to their name (not copied)
+  size_t journal_entries = 0;   // entries copied and replayed
+  std::vector<std::string> journal_problems;
+  std::map<std::string, int64_t> rows;  // rows per table in the target index
+  // Row-by-row comparison of the source index with the target's: empty when they agree.
+  std::vector<std::string> differences;
+  bool verified() const { return damaged_sources.empty() && journal_problems.empty() && differences.empty(); }
+};
+
 // Existing: the archive must be there (Error kNotFound otherwise). CreateIfMissing: a missing
 // folder becomes a new, empty archive (import and the demo create archives; nothing else does).
 enum class OpenMode { Existing, CreateIfMissing };
@@ -139,7 +157,21 @@ class Archive {
   // Refuses (Error kConflict) an intact index unless options.force.
   static RebuildReport rebuild_index(const std::filesystem::path& folder, const RebuildOptions& options = {});
 
+  // Copies the embedded archive in `source` into the archive at `target` (typically a
+  // PostgreSQL index with its shared object folder): every object, re-hashed as it is copied,
+  // and the index journal, which is then replayed into the target index, so rows and ids are
+  // the source's. Verified by comparing both indexes row by row. Idempotent and resumable: a
+  // run killed half-way is run again. The source is only read. Refuses (kConflict) a target
+  // that already holds another history, and a source whose index is not the newest schema.
+  static MigrationReport migrate(const std::filesystem::path& source, const std::filesystem::path& target,
+                                 const MigrationOptions& options = {});
+
+  // The archive's folder; for an archive on a server, its shared object folder.
   const std::filesystem::path& folder() const;
+  // What open() was given: another connection (a thread, a child process) opens this.
+  const std::filesystem::path& address() const;
+  // False for an archive whose index is on a PostgreSQL server.
+  bool embedded() const;
   int schema_version() const;
   static int newest_schema_version();
 
@@ -193,6 +225,34 @@ class Archive {
   std::optional<ArtefactRecord> find_artefact(int64_t case_id, std::string_view kind,
                                               std::string_view inputs_hash) const;
   std::vector<ArtefactRecord> artefacts(int64_t case_id) const;
+
+  // --- work shared between processes and nodes (nightly --claim; db/003_work_queue.sql) ---
+  // Adds the items a queue does not hold yet (idempotent; finished items stay finished).
+  void offer_work(std::string_view queue, const std::vector<std::string>& items);
+  // Leases the first pending item (by name) that nobody holds, or whose lease ended before
+  // `now` (Unix seconds), to `holder` until now + lease_seconds. Nothing when no item can be
+  // claimed now. On PostgreSQL, SELECT ... FOR UPDATE SKIP LOCKED: workers never wait for
+  // each other's claims; on SQLite, BEGIN IMMEDIATE.
+  std::optional<std::string> claim_work(std::string_view queue, std::string_view holder, int64_t now,
+                                        int64_t lease_seconds);
+  // Extends a lease the holder still holds; false when it has lost it.
+  bool renew_work(std::string_view queue, std::string_view item, std::string_view holder, int64_t until);
+  // Ends the holder's lease with the item's state ("done", "failed", "superseded"); false when
+  // the holder no longer held it (another worker took over an expired lease).
+  bool finish_work(std::string_view queue, std::string_view item, std::string_view holder, std::string_view state,
+                   std::string_view reason = {});
+  struct WorkCounts {
+    size_t pending = 0;       // nobody holds them (never leased, or the lease ended)
+    size_t leased = 0;        // held by a live lease at `now`
+    size_t finished = 0;      // done, failed or superseded
+  };
+  WorkCounts work_counts(std::string_view queue, int64_t now) const;
+  // Every finished item's state and holder, for reports and tests: item -> (state, holder, claims).
+  struct WorkRecord {
+    std::string item, state, holder, reason;
+    int64_t claims = 0;
+  };
+  std::vector<WorkRecord> work_records(std::string_view queue) const;
 
   // --- integrity and export ---
   // Checks the index (SQLite integrity_check, and a replay of its journal compared row by row)

@@ -10,7 +10,7 @@
 namespace maxillo {
 namespace {
 
-ArtefactRecord artefact_from(const sqlite::Statement& r) {
+ArtefactRecord artefact_from(const db::Statement& r) {
   return {r.integer(0), r.integer(1), r.text(2), r.text(3), r.text(4), r.text(5), r.text(6), r.text(7), r.text(8)};
 }
 
@@ -18,13 +18,12 @@ ArtefactRecord artefact_from(const sqlite::Statement& r) {
 
 std::string Archive::store_object(std::span<const std::byte> bytes) {
   std::string sha = sha256_hex(bytes);
-  StoreLock lock(state_->folder, LockKind::Shared);
+  StoreLock lock(*state_, LockKind::Shared);
   state_->objects.put(sha, bytes);
   state_->objects.make_durable();
   JournalledTransaction transaction(state_->db, state_->journal, "object");
-  sqlite::Statement insert(state_->db, sql::kInsertObject);
-  insert.bind(1, sha).bind(2, int64_t(bytes.size())).run();
-  if (state_->db.changes() == 1) transaction.written("objects", "sha256 = ?1", {sha});
+  db::Statement insert(state_->db, sql::kInsertObject);
+  if (insert.bind(1, sha).bind(2, int64_t(bytes.size())).run() == 1) transaction.written("objects", "sha256 = ?1", {sha});
   transaction.commit();
   return sha;
 }
@@ -44,12 +43,12 @@ int64_t Archive::add_artefact(const NewArtefact& a) {
   if (!is_sha256_hex(a.object_sha256) || !std::filesystem::exists(object_path(a.object_sha256)))
     throw Error(ErrorCode::kNotFound, a.object_sha256, "artefact object is not in the store (use store_object first)");
   if (!Json::accept(a.parameters_json)) throw Error(ErrorCode::kBadValue, a.kind, "artefact parameters are not JSON");
-  StoreLock lock(state_->folder, LockKind::Shared);  // verify and rebuild see no half-done change
+  StoreLock lock(*state_, LockKind::Shared);  // verify and rebuild see no half-done change
   JournalledTransaction transaction(state_->db, state_->journal, "artefact");
-  sqlite::Statement insert(state_->db, sql::kInsertArtefact);
+  db::Statement insert(state_->db, sql::kInsertArtefact);
   insert.bind(1, a.case_id).bind(2, a.kind).bind(3, a.object_sha256).bind(4, a.media_type).bind(5, a.inputs_hash);
-  insert.bind(6, a.parameters_json).bind(7, kVersion).bind(8, utc_now()).run();
-  int64_t id = state_->db.last_insert_id();
+  insert.bind(6, a.parameters_json).bind(7, kVersion).bind(8, utc_now());
+  int64_t id = db::inserted_id(insert).value();
   transaction.inserted("artefacts", id);
   transaction.commit();
   return id;
@@ -57,14 +56,14 @@ int64_t Archive::add_artefact(const NewArtefact& a) {
 
 std::optional<ArtefactRecord> Archive::find_artefact(int64_t case_id, std::string_view kind,
                                                      std::string_view inputs_hash) const {
-  sqlite::Statement query(state_->db, std::string(sql::kArtefactColumns) + sql::kFindArtefact);
+  db::Statement query(state_->db, std::string(sql::kArtefactColumns) + sql::kFindArtefact);
   query.bind(1, case_id).bind(2, kind).bind(3, inputs_hash);
   if (!query.step()) return std::nullopt;
   return artefact_from(query);
 }
 
 std::vector<ArtefactRecord> Archive::artefacts(int64_t case_id) const {
-  sqlite::Statement query(state_->db, std::string(sql::kArtefactColumns) + sql::kArtefactsOfCase);
+  db::Statement query(state_->db, std::string(sql::kArtefactColumns) + sql::kArtefactsOfCase);
   query.bind(1, case_id);
   std::vector<ArtefactRecord> rows;
   while (query.step()) rows.push_back(artefact_from(query));

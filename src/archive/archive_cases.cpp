@@ -9,7 +9,7 @@
 namespace maxillo {
 
 std::optional<CaseRecord> Archive::case_of_patient(int64_t patient, std::string_view label) const {
-  sqlite::Statement query(state_->db, std::string(sql::kCases) + " WHERE patient = ?1 AND label = ?2");
+  db::Statement query(state_->db, std::string(sql::kCases) + " WHERE patient = ?1 AND label = ?2");
   query.bind(1, patient).bind(2, label);
   if (!query.step()) return std::nullopt;
   return CaseRecord{query.integer(0), query.integer(1), query.text(2), query.text(3)};
@@ -23,11 +23,11 @@ int64_t Archive::resolve_case(std::string_view text) const {
   int64_t number = 0;
   auto [end, status] = std::from_chars(text.data(), text.data() + text.size(), number);
   if (status == std::errc() && end == text.data() + text.size()) {
-    sqlite::Statement query(state_->db, sql::kExists[3]);
+    db::Statement query(state_->db, sql::kExists[3]);
     query.bind(1, number);
     if (query.step()) return number;
   }
-  sqlite::Statement patient(state_->db, sql::kPatientIdOf);
+  db::Statement patient(state_->db, sql::kPatientIdOf);
   patient.bind(1, text);
   if (patient.step()) {
     if (auto found = case_of_patient(patient.integer(0))) return found->id;
@@ -43,13 +43,13 @@ int64_t Archive::resolve_case(std::string_view text) const {
 CaseContents Archive::case_contents(int64_t case_id) const {
   CaseContents contents;
   {
-    sqlite::Statement query(state_->db, std::string(sql::kCases) + " WHERE id = ?1");
+    db::Statement query(state_->db, std::string(sql::kCases) + " WHERE id = ?1");
     query.bind(1, case_id);
     if (!query.step()) throw Error(ErrorCode::kNotFound, std::to_string(case_id), "no such case");
     contents.record = {query.integer(0), query.integer(1), query.text(2), query.text(3)};
   }
   contents.patient = patient(contents.record.patient).value();
-  sqlite::Statement members(state_->db, sql::kCaseSeries);
+  db::Statement members(state_->db, sql::kCaseSeries);
   members.bind(1, case_id);
   std::vector<int64_t> study_ids;
   while (members.step()) {
@@ -78,11 +78,10 @@ void Archive::set_series_role(int64_t case_id, int64_t series, std::string_view 
   static constexpr std::string_view kRoles[] = {"preop", "postop", "follow-up", "report", "unassigned"};
   if (std::find(std::begin(kRoles), std::end(kRoles), role) == std::end(kRoles))
     throw Error(ErrorCode::kBadValue, std::string(role), "unknown role (preop, postop, follow-up, report, unassigned)");
-  StoreLock lock(state_->folder, LockKind::Shared);  // verify and rebuild see no half-done change
+  StoreLock lock(*state_, LockKind::Shared);  // verify and rebuild see no half-done change
   JournalledTransaction transaction(state_->db, state_->journal, "role");
-  sqlite::Statement update(state_->db, sql::kSetSeriesRole);
-  update.bind(1, case_id).bind(2, series).bind(3, role).run();
-  if (state_->db.changes() != 1)
+  db::Statement update(state_->db, sql::kSetSeriesRole);
+  if (update.bind(1, case_id).bind(2, series).bind(3, role).run() != 1)
     throw Error(ErrorCode::kNotFound, std::to_string(series), "series is not part of case " + std::to_string(case_id));
   transaction.written("case_series", "case_id = ?1 AND series = ?2", {case_id, series});
   transaction.commit();

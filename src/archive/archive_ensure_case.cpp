@@ -9,18 +9,18 @@ int64_t Archive::ensure_case(std::string_view patient_id, std::string_view label
   if (patient_id.empty()) throw Error(ErrorCode::kBadValue, "case", "empty Patient ID");
   if (label.empty()) throw Error(ErrorCode::kBadValue, std::string(patient_id), "empty case label");
   const std::string now = utc_now();
-  StoreLock lock(state_->folder, LockKind::Shared);  // verify and rebuild see no half-done change
+  StoreLock lock(*state_, LockKind::Shared);  // verify and rebuild see no half-done change
   JournalledTransaction transaction(state_->db, state_->journal, "case");
-  sqlite::Statement insert_patient(state_->db, sql::kInsertPatient);
-  insert_patient.bind(1, patient_id).bind(2, "").bind(3, "").bind(4, "").bind(5, now).run();
-  if (state_->db.changes() == 1) transaction.inserted("patients", state_->db.last_insert_id());
-  sqlite::Statement patient(state_->db, sql::kPatientByPatientId);
+  db::Statement insert_patient(state_->db, sql::kInsertPatient);
+  insert_patient.bind(1, patient_id).bind(2, "").bind(3, "").bind(4, "").bind(5, now);
+  if (auto id = db::inserted_id(insert_patient)) transaction.inserted("patients", *id);
+  db::Statement patient(state_->db, sql::kPatientByPatientId);
   patient.bind(1, patient_id);
   patient.step();
   const int64_t patient_row = patient.integer(0);
-  sqlite::Statement insert_case(state_->db, sql::kInsertLabelledCase);
-  insert_case.bind(1, patient_row).bind(2, label).bind(3, now).run();
-  if (state_->db.changes() == 1) transaction.inserted("cases", state_->db.last_insert_id());
+  db::Statement insert_case(state_->db, sql::kInsertLabelledCase);
+  insert_case.bind(1, patient_row).bind(2, label).bind(3, now);
+  if (auto id = db::inserted_id(insert_case)) transaction.inserted("cases", *id);
   transaction.commit();
   return case_of_patient(patient_row, label)->id;
 }

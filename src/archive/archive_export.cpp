@@ -46,7 +46,12 @@ std::string random_secret() {
 }  // namespace
 
 std::string Archive::deidentification_secret() const {
-  auto path = state_->folder / kSecretFile;
+  // Beside the index of an embedded archive; in the shared object folder of a server archive,
+  // where every node finds it and where it outlives the index, like the objects it keys.
+  auto path = state_->location.embedded() ? state_->folder / kSecretFile
+                                          : state_->objects.folder() / "settings" / kSecretFile;
+  std::error_code ignored;
+  std::filesystem::create_directories(path.parent_path(), ignored);
   if (!std::filesystem::exists(path)) {
     // O_EXCL: two processes creating it at once agree on the first one written.
     int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);

@@ -1,6 +1,7 @@
 #include "archive/archive_health.h"
 
 #include "archive/archive_state.h"
+#include "archive/sqlite.h"
 #include "archive/journalled_transaction.h"
 #include "core/error.h"
 
@@ -10,6 +11,12 @@ namespace {
 std::string rebuild_advice(const std::filesystem::path& archive_folder) {
   return "rebuild it from the object store with `maxillo --archive " + archive_folder.string() +
          " archive rebuild-index` (nothing has been changed)";
+}
+
+std::string rebuild_advice(db::Connection& db) {
+  if (db.engine() == db::Engine::Sqlite)
+    return rebuild_advice(static_cast<sqlite::Database&>(db).file().parent_path());
+  return "restore the database from its backup; the shared object folder and its journal are untouched";
 }
 
 }  // namespace
@@ -33,15 +40,16 @@ IndexPresence check_index_presence(const std::filesystem::path& archive_folder) 
                   rebuild_advice(archive_folder));
 }
 
-void require_intact_index(sqlite::Database& db) {
-  sqlite::Statement check(db, "PRAGMA quick_check");
+void require_intact_index(db::Connection& db) {
+  // A PostgreSQL server checks its own pages as it reads them (and with data checksums on).
+  if (db.engine() != db::Engine::Sqlite) return;
+  db::Statement check(db, "PRAGMA quick_check");
   std::string first = check.step() ? check.text(0) : "no answer";
   if (first == "ok") return;
-  throw Error(ErrorCode::kIndexDamaged, db.file().string(),
-              "the index is damaged (SQLite quick_check: " + first + "); " + rebuild_advice(db.file().parent_path()));
+  throw Error(ErrorCode::kIndexDamaged, db.name(), "the index is damaged (SQLite quick_check: " + first + "); " + rebuild_advice(db));
 }
 
-void require_index_not_behind_journal(sqlite::Database& db, const IndexJournal& journal) {
+void require_index_not_behind_journal(db::Connection& db, const IndexJournal& journal) {
   // Entry N+2 can only be written once N+1 has committed, and the counter never goes back, so
   // if the counter is the same before and after looking, N+2 proves commits the index lacks.
   int64_t before = journal_sequence(db);
@@ -53,10 +61,10 @@ void require_index_not_behind_journal(sqlite::Database& db, const IndexJournal& 
       continue;
     }
     if (!ahead) return;
-    throw Error(ErrorCode::kIndexDamaged, db.file().string(),
+    throw Error(ErrorCode::kIndexDamaged, db.name(),
                 "the index is behind its journal (index at entry " + std::to_string(before) + ", journal has entry " +
                     std::to_string(before + 2) + "): it was restored from an older copy or lost commits; " +
-                    rebuild_advice(db.file().parent_path()));
+                    rebuild_advice(db));
   }
 }
 

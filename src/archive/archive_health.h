@@ -6,7 +6,7 @@
 #include <filesystem>
 
 #include "archive/index_journal.h"
-#include "archive/sqlite.h"
+#include "archive/index_connection.h"
 
 namespace maxillo {
 
@@ -19,12 +19,12 @@ IndexPresence check_index_presence(const std::filesystem::path& archive_folder);
 
 // PRAGMA quick_check (about 0.2 s for a 160 MB index of 300,000 instances). Throws
 // Error(kIndexDamaged) with SQLite's first complaint.
-void require_intact_index(sqlite::Database& db);
+void require_intact_index(db::Connection& db);
 
 // Throws Error(kIndexDamaged) when the journal holds entries the index never committed beyond
 // the one an interrupted transaction may leave (see index_journal.h): the index was restored
 // from an older copy or lost its last commits.
-void require_index_not_behind_journal(sqlite::Database& db, const IndexJournal& journal);
+void require_index_not_behind_journal(db::Connection& db, const IndexJournal& journal);
 
 // True when any regular file exists below `folder` (stops at the first one found).
 bool holds_any_file(const std::filesystem::path& folder);

@@ -93,12 +93,12 @@ ImportReport Archive::import_paths(const std::vector<std::filesystem::path>& pat
     report_problem(report, options, {item.path, ImportOutcome::Failed, item.code, item.reason});
 
   Progress progress("import", inputs.files.size(), options.progress);
-  StoreLock lock(state_->folder, LockKind::Shared);
+  StoreLock lock(*state_, LockKind::Shared);
   ScanQueue queue;
   std::exception_ptr scanner_error;
   std::thread scanner([&] {
     try {
-      FileScanner scanner_stage(index_file(state_->folder));
+      FileScanner scanner_stage(state_->location);
       for (const auto& path : inputs.files) {
         if (queue.abandoned()) break;
         queue.push(scanner_stage.scan(path));

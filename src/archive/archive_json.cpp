@@ -134,6 +134,17 @@ Json to_json(const VerifyReport& r) {
           {"repair_refused", r.repair_refused.empty() ? Json(nullptr) : Json(r.repair_refused)}};
 }
 
+Json to_json(const MigrationReport& r) {
+  return {{"verified", r.verified()},
+          {"objects_copied", r.objects_copied},
+          {"objects_present", r.objects_present},
+          {"damaged_sources", strings(r.damaged_sources)},
+          {"journal_entries", r.journal_entries},
+          {"journal_problems", strings(r.journal_problems)},
+          {"rows", r.rows},
+          {"differences", strings(r.differences)}};
+}
+
 Json to_json(const RebuildReport& r) {
   return {{"journal_entries", r.journal_entries},
           {"journal_problems", strings(r.journal_problems)},

@@ -17,5 +17,6 @@ Json to_json(const ImportProblem& problem);
 Json to_json(const ImportReport& report);
 Json to_json(const VerifyReport& report);
 Json to_json(const RebuildReport& report);
+Json to_json(const MigrationReport& report);
 
 }  // namespace maxillo

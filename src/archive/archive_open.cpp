@@ -1,4 +1,4 @@
-// Opening an archive: folder, index connection, schema upgrades one version at a time.
+// Opening an archive: folder or server, index connection, schema upgrades one version at a time.
 #include <fcntl.h>
 #include <sys/file.h>
 #include <unistd.h>
@@ -15,6 +15,7 @@
 #include "archive/journal_replay.h"
 #include "archive/journalled_transaction.h"
 #include "archive/dicom_header.h"
+#include "archive/postgres.h"
 #include "core/resources.h"
 
 namespace maxillo {
@@ -36,6 +37,16 @@ std::map<int, std::string> migrations() {
     if (version != expected++) throw Error(ErrorCode::kProcessing, "db/", "schema migrations are not numbered 1, 2, 3...");
   }
   return by_version;
+}
+
+// The migration to `version` for this engine: db/postgresql/NNN_*.sql where PostgreSQL needs
+// its own dialect, else the shared db/NNN_*.sql.
+std::string migration_for(db::Engine engine, const std::string& shared_path) {
+  if (engine == db::Engine::Postgres) {
+    const std::string variant = "db/postgresql/" + shared_path.substr(3);
+    if (!list_resources(variant).empty()) return load_resource(variant);
+  }
+  return load_resource(shared_path);
 }
 
 // Version 2 introduced the journal: the rows an index already had are journalled as one entry.
@@ -61,24 +72,26 @@ void prepare_folder(const std::filesystem::path& folder, OpenMode mode) {
 
 }  // namespace
 
-int upgrade_schema(sqlite::Database& db, const IndexJournal& journal) {
+int upgrade_schema(db::Connection& db, const IndexJournal& journal) {
   auto steps = migrations();
   int newest = steps.empty() ? 0 : steps.rbegin()->first;
-  int current = db.user_version();
+  int current = db.schema_version();
   if (current > newest)
-    throw Error(ErrorCode::kSchemaTooNew, db.file().string(),
+    throw Error(ErrorCode::kSchemaTooNew, db.name(),
                 "schema version " + std::to_string(current) + ", this program knows up to " + std::to_string(newest));
   for (const auto& [version, path] : steps) {
     if (version <= current) continue;
+    // An immediate transaction holds the index's write lock (an advisory lock on PostgreSQL):
+    // of two nodes starting at once, the second finds the work done.
     JournalledTransaction transaction(db, journal, "snapshot");
-    const int found = db.user_version();
-    if (found >= version) continue;  // another process upgraded meanwhile
-    db.execute(load_resource(path));
+    const int found = db.schema_version();
+    if (found >= version) continue;
+    db.execute(migration_for(db.engine(), path));
     if (version == 2 && found == 1) snapshot_rows(transaction);
-    db.execute("PRAGMA user_version = " + std::to_string(version));
+    db.set_schema_version(version);
     transaction.commit();
   }
-  return db.user_version();
+  return db.schema_version();
 }
 
 
@@ -92,43 +105,104 @@ void configure_connection(sqlite::Database& db) {
   db.execute("PRAGMA cell_size_check = ON");
 }
 
-StoreLock::StoreLock(const std::filesystem::path& folder, LockKind kind) {
+namespace {
+
+// flock(2) on FOLDER/store.lock; returns the descriptor whose closing releases it.
+int lock_store_file(const std::filesystem::path& folder, LockKind kind) {
   auto path = folder / "store.lock";
-  fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (fd_ < 0) throw Error(ErrorCode::kWriteFailed, path.string(), std::strerror(errno));
-  while (::flock(fd_, kind == LockKind::Shared ? LOCK_SH : LOCK_EX) != 0) {
+  int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (fd < 0) throw Error(ErrorCode::kWriteFailed, path.string(), std::strerror(errno));
+  while (::flock(fd, kind == LockKind::Shared ? LOCK_SH : LOCK_EX) != 0) {
     if (errno == EINTR) continue;
     int error_number = errno;
-    ::close(fd_);
+    ::close(fd);
     throw Error(ErrorCode::kArchiveBusy, path.string(), std::strerror(error_number));
   }
+  return fd;
 }
 
-StoreLock::~StoreLock() { ::close(fd_); }  // closing releases the flock
+}  // namespace
 
-Archive::State::State(const std::filesystem::path& archive_folder, sqlite::OpenKind index_open)
-    : folder(archive_folder),
-      db(index_file(archive_folder), index_open),
-      objects(objects_folder(archive_folder)),
-      journal(journal_folder(archive_folder)) {}
+StoreLock::StoreLock(Archive::State& state, LockKind kind) : kind_(kind) {
+  if (state.location.embedded()) {
+    fd_ = lock_store_file(state.folder, kind);
+    return;
+  }
+  static_cast<postgres::Connection&>(state.db).lock(postgres::kStoreLockKey, kind == LockKind::Shared);
+  server_ = &state.db;
+}
 
-Archive Archive::open(const std::filesystem::path& folder, OpenMode mode) {
-  initialise_dicom_toolkit();
-  prepare_folder(folder, mode);
-  const IndexPresence presence = check_index_presence(folder);
-  std::unique_ptr<State> state;
+StoreLock::StoreLock(const std::filesystem::path& folder, LockKind kind)
+    : fd_(lock_store_file(folder, kind)), kind_(kind) {}
+
+StoreLock::~StoreLock() {
+  if (server_) static_cast<postgres::Connection*>(server_)->unlock(postgres::kStoreLockKey, kind_ == LockKind::Shared);
+  if (fd_ >= 0) ::close(fd_);  // closing releases the flock
+}
+
+Archive::State::State(ArchiveLocation where, std::unique_ptr<db::Connection> index)
+    : location(std::move(where)),
+      folder(location.folder),
+      connection(std::move(index)),
+      db(*connection),
+      objects(location.objects_folder()),
+      journal(journal_folder(location)) {}
+
+std::unique_ptr<db::Connection> connect_index(const ArchiveLocation& location, sqlite::OpenKind open_kind) {
+  if (!location.embedded()) return std::make_unique<postgres::Connection>(location.server_uri);
+  return std::make_unique<sqlite::Database>(index_file(location.folder), open_kind);
+}
+
+namespace {
+
+// An embedded archive: the folder is made for CreateIfMissing, and a missing or empty index
+// beside stored objects is refused (archive_health.h).
+std::unique_ptr<Archive::State> open_embedded(const ArchiveLocation& location, OpenMode mode) {
+  prepare_folder(location.folder, mode);
+  const IndexPresence presence = check_index_presence(location.folder);
+  std::unique_ptr<Archive::State> state;
   try {
-    state = std::make_unique<State>(folder, presence == IndexPresence::Fresh ? sqlite::OpenKind::Create
-                                                                             : sqlite::OpenKind::Existing);
+    state = std::make_unique<Archive::State>(
+        location, connect_index(location, presence == IndexPresence::Fresh ? sqlite::OpenKind::Create
+                                                                             : sqlite::OpenKind::Existing));
   } catch (const std::filesystem::filesystem_error& e) {
-    throw Error(ErrorCode::kWriteFailed, folder.string(), e.code().message());
+    throw Error(ErrorCode::kWriteFailed, location.folder.string(), e.code().message());
   }
   require_intact_index(state->db);
+  return state;
+}
+
+// A server archive: the shared object folder must exist (it is made once, on the shared
+// storage, not by whichever node comes first), and a database without a schema is a new
+// archive only while that folder holds nothing.
+std::unique_ptr<Archive::State> open_on_server(const ArchiveLocation& location, OpenMode mode) {
+  std::error_code error;
+  if (!std::filesystem::is_directory(location.folder, error))
+    throw Error(ErrorCode::kBadArchiveAddress, location.shown,
+                "the shared object folder " + location.folder.string() + " does not exist (make it on the shared storage)");
+  auto state = std::make_unique<Archive::State>(location, connect_index(location, sqlite::OpenKind::Existing));
+  if (state->db.schema_version() == 0) {
+    if (holds_any_file(location.objects_folder()))
+      throw Error(ErrorCode::kIndexDamaged, location.shown,
+                  "the index database is empty but the shared object folder holds archived data; it is never "
+                  "re-created empty over them (move the folder aside or restore the database)");
+    if (mode == OpenMode::Existing)
+      throw Error(ErrorCode::kNotFound, location.shown, "no archive in this database yet (`maxillo import` creates one)");
+  }
+  return state;
+}
+
+}  // namespace
+
+Archive Archive::open(const std::filesystem::path& where, OpenMode mode) {
+  initialise_dicom_toolkit();
+  const ArchiveLocation location = parse_archive_location(where.string());
+  std::unique_ptr<State> state = location.embedded() ? open_embedded(location, mode) : open_on_server(location, mode);
   // Two processes creating the same archive at once: switching a new file to WAL and the first
   // upgrade can report "locked" without waiting on the busy handler. Retry them briefly.
   for (int attempt = 0;; ++attempt) {
     try {
-      configure_connection(state->db);
+      if (location.embedded()) configure_connection(static_cast<sqlite::Database&>(state->db));
       state->schema_version = upgrade_schema(state->db, state->journal);
       break;
     } catch (const Error& e) {
@@ -137,6 +211,7 @@ Archive Archive::open(const std::filesystem::path& folder, OpenMode mode) {
     }
   }
   require_index_not_behind_journal(state->db, state->journal);
+  state->address = where;
   return Archive(std::move(state));
 }
 
@@ -148,6 +223,8 @@ Archive::Archive(Archive&&) noexcept = default;
 Archive& Archive::operator=(Archive&&) noexcept = default;
 
 const std::filesystem::path& Archive::folder() const { return state_->folder; }
+const std::filesystem::path& Archive::address() const { return state_->address; }
+bool Archive::embedded() const { return state_->location.embedded(); }
 int Archive::schema_version() const { return state_->schema_version; }
 
 std::string_view to_string(ImportOutcome outcome) {

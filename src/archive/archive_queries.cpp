@@ -7,52 +7,52 @@
 namespace maxillo {
 namespace {
 
-std::optional<int> optional_int(const sqlite::Statement& row, int column) {
+std::optional<int> optional_int(const db::Statement& row, int column) {
   if (row.is_null(column)) return std::nullopt;
   return static_cast<int>(row.integer(column));
 }
-std::optional<double> optional_real(const sqlite::Statement& row, int column) {
+std::optional<double> optional_real(const db::Statement& row, int column) {
   if (row.is_null(column)) return std::nullopt;
   return row.real(column);
 }
 
-PatientRecord patient_from(const sqlite::Statement& row) {
+PatientRecord patient_from(const db::Statement& row) {
   return {row.integer(0), row.text(1), row.text(2), row.text(3), row.text(4), row.integer(5)};
 }
-StudyRecord study_from(const sqlite::Statement& row) {
+StudyRecord study_from(const db::Statement& row) {
   return {row.integer(0), row.integer(1), row.text(2), row.text(3), row.text(4),
           row.text(5),    row.text(6),    row.integer(7)};
 }
-InstanceRecord instance_from(const sqlite::Statement& r) {
+InstanceRecord instance_from(const db::Statement& r) {
   return InstanceRecord{r.integer(0), r.integer(1), r.text(2), r.text(3), optional_int(r, 4), r.text(5),
                         r.text(6),    r.text(7),    r.text(8), r.integer(9), r.text(10), r.text(11)};
 }
 
-SeriesRecord series_from(const sqlite::Statement& row) {
+SeriesRecord series_from(const db::Statement& row) {
   return {row.integer(0),        row.integer(1),        row.text(2),           row.text(3),
           row.text(4),           optional_int(row, 5),  optional_int(row, 6),  optional_int(row, 7),
           optional_real(row, 8), optional_real(row, 9), optional_real(row, 10), row.integer(11)};
 }
 
 template <typename Record, typename Convert>
-std::vector<Record> all_rows(sqlite::Database& db, const std::string& sql, Convert convert,
+std::vector<Record> all_rows(db::Connection& db, const std::string& sql, Convert convert,
                              std::optional<int64_t> parameter = std::nullopt) {
-  sqlite::Statement query(db, sql);
+  db::Statement query(db, sql);
   if (parameter) query.bind(1, *parameter);
   std::vector<Record> rows;
   while (query.step()) rows.push_back(convert(query));
   return rows;
 }
 
-std::optional<int64_t> id_of(sqlite::Database& db, const char* sql, std::string_view key) {
-  sqlite::Statement query(db, sql);
+std::optional<int64_t> id_of(db::Connection& db, const char* sql, std::string_view key) {
+  db::Statement query(db, sql);
   query.bind(1, key);
   if (query.step()) return query.integer(0);
   return std::nullopt;
 }
 
-bool row_exists(sqlite::Database& db, const char* sql, int64_t id) {
-  sqlite::Statement query(db, sql);
+bool row_exists(db::Connection& db, const char* sql, int64_t id) {
+  db::Statement query(db, sql);
   query.bind(1, id);
   return query.step();
 }
@@ -108,13 +108,13 @@ std::optional<InstanceRecord> Archive::instance(int64_t id) const {
 }
 
 std::vector<CaseRecord> Archive::cases() const {
-  return all_rows<CaseRecord>(state_->db, std::string(sql::kCases) + " ORDER BY id", [](const sqlite::Statement& r) {
+  return all_rows<CaseRecord>(state_->db, std::string(sql::kCases) + " ORDER BY id", [](const db::Statement& r) {
     return CaseRecord{r.integer(0), r.integer(1), r.text(2), r.text(3)};
   });
 }
 
 std::vector<IdentityFlag> Archive::identity_flags() const {
-  return all_rows<IdentityFlag>(state_->db, sql::kIdentityFlags, [](const sqlite::Statement& r) {
+  return all_rows<IdentityFlag>(state_->db, sql::kIdentityFlags, [](const db::Statement& r) {
     return IdentityFlag{r.integer(0), r.integer(1), r.text(2), r.text(3), r.text(4), r.text(5), r.text(6), r.text(7)};
   });
 }

@@ -4,6 +4,8 @@
 #include <string>
 
 #include "archive/archive.h"
+#include "archive/archive_location.h"
+#include "archive/index_connection.h"
 #include "archive/index_journal.h"
 #include "archive/object_store.h"
 #include "archive/sqlite.h"
@@ -11,12 +13,28 @@
 
 namespace maxillo {
 
-// flock(2) on ARCHIVE/store.lock: writers of objects hold it shared, verify --repair holds it
-// exclusively, so repair never deletes an object whose row is about to be committed. The kernel
-// releases it when a process dies, so a kill -9 leaves no stale lock.
+struct Archive::State {
+  State(ArchiveLocation where, std::unique_ptr<db::Connection> index);
+  ArchiveLocation location;
+  std::filesystem::path address;  // as given to Archive::open
+  std::filesystem::path folder;  // location.folder
+  std::unique_ptr<db::Connection> connection;
+  db::Connection& db;  // *connection
+  ObjectStore objects;
+  IndexJournal journal;
+  int schema_version = 0;
+};
+
+// The store lock: writers of objects hold it shared, verify --repair holds it exclusively, so
+// repair never deletes an object whose row is about to be committed. Embedded archives take
+// flock(2) on ARCHIVE/store.lock; server archives a session-level advisory lock in their
+// database, which every node sees (flock on network file systems is not to be trusted). Both
+// are released when the process dies, so a kill -9 leaves no stale lock.
 enum class LockKind { Shared, Exclusive };
 class StoreLock {
  public:
+  StoreLock(Archive::State& state, LockKind kind);
+  // An embedded archive's folder, before it has a connection (rebuild-index).
   StoreLock(const std::filesystem::path& folder, LockKind kind);
   ~StoreLock();
   StoreLock(const StoreLock&) = delete;
@@ -24,27 +42,24 @@ class StoreLock {
 
  private:
   int fd_ = -1;
-};
-
-struct Archive::State {
-  State(const std::filesystem::path& archive_folder, sqlite::OpenKind index_open);
-  std::filesystem::path folder;
-  sqlite::Database db;
-  ObjectStore objects;
-  IndexJournal journal;
-  int schema_version = 0;
+  db::Connection* server_ = nullptr;
+  LockKind kind_;
 };
 
 inline std::filesystem::path index_file(const std::filesystem::path& folder) { return folder / "index.sqlite"; }
 inline std::filesystem::path objects_folder(const std::filesystem::path& folder) { return folder / "objects"; }
 inline std::filesystem::path journal_folder(const std::filesystem::path& folder) { return objects_folder(folder) / "journal"; }
+inline std::filesystem::path journal_folder(const ArchiveLocation& location) { return location.objects_folder() / "journal"; }
 
 // Applies the schema migrations in db/ one version at a time; an index upgraded from version 1
 // gets a snapshot journal entry of its rows. Returns the schema version.
-int upgrade_schema(sqlite::Database& db, const IndexJournal& journal);
+int upgrade_schema(db::Connection& db, const IndexJournal& journal);
 
-// Connection settings shared by every connection to an archive index.
+// Connection settings shared by every connection to an embedded archive index.
 void configure_connection(sqlite::Database& db);
+
+// A new connection to the archive's index (import's scanning thread has its own).
+std::unique_ptr<db::Connection> connect_index(const ArchiveLocation& location, sqlite::OpenKind open_kind);
 
 
 }  // namespace maxillo

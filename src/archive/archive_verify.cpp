@@ -22,9 +22,11 @@ namespace {
 constexpr size_t kManyOrphans = 10;
 constexpr size_t kOrphanShareDivisor = 20;  // 5 %
 
-std::string integrity_check(sqlite::Database& db) {
+std::string integrity_check(db::Connection& db) {
+  // PostgreSQL checks its pages as it reads them; the journal comparison below reads every row.
+  if (db.engine() != db::Engine::Sqlite) return "ok";
   try {
-    sqlite::Statement check(db, "PRAGMA integrity_check(20)");
+    db::Statement check(db, "PRAGMA integrity_check(20)");
     std::string findings;
     while (check.step()) findings += (findings.empty() ? "" : "; ") + check.text(0);
     return findings.empty() ? "no answer" : findings;
@@ -33,7 +35,8 @@ std::string integrity_check(sqlite::Database& db) {
   }
 }
 
-// A scratch index beside the real one, removed with its WAL files whatever happens.
+// A scratch index (beside an embedded index, in the temporary folder for a server's), removed
+// with its WAL files whatever happens.
 class ScratchIndex {
  public:
   explicit ScratchIndex(const std::filesystem::path& folder)
@@ -56,15 +59,21 @@ class ScratchIndex {
 std::vector<std::string> journal_differences(Archive::State& state) {
   std::vector<std::string> differences;
   try {
-    ScratchIndex scratch(state.folder);
+    ScratchIndex scratch(state.location.embedded() ? state.folder : std::filesystem::temp_directory_path());
     sqlite::Database db(scratch.path(), sqlite::OpenKind::Create);
     db.execute("PRAGMA journal_mode = OFF; PRAGMA synchronous = OFF");
     upgrade_schema(db, state.journal);
     auto outcome = replay_journal(db, state.journal, journal_sequence(state.db));
     for (auto& problem : outcome.problems) differences.push_back("journal " + problem);
-    sqlite::Statement attach(db, "ATTACH DATABASE ?1 AS live");
-    attach.bind(1, index_file(state.folder).string()).run();
-    for (const auto& difference : compare_attached_indexes(db, "live"))
+    std::vector<TableDifference> found;
+    if (state.location.embedded()) {
+      db::Statement attach(db, "ATTACH DATABASE ?1 AS live");
+      attach.bind(1, index_file(state.folder).string()).run();
+      found = compare_attached_indexes(db, "live");
+    } else {
+      found = compare_indexes(db, state.db);
+    }
+    for (const auto& difference : found)
       differences.push_back("index and journal differ in " + difference.describe() +
                             " (first: the journal's replay, second: the index)");
   } catch (const Error& e) {
@@ -73,8 +82,8 @@ std::vector<std::string> journal_differences(Archive::State& state) {
   return differences;
 }
 
-std::vector<std::string> owners_of(sqlite::Database& db, const std::string& sha) {
-  sqlite::Statement query(db, sql::kOwnersOfObject);
+std::vector<std::string> owners_of(db::Connection& db, const std::string& sha) {
+  db::Statement query(db, sql::kOwnersOfObject);
   query.bind(1, sha);
   std::vector<std::string> owners;
   while (query.step()) owners.push_back(query.text(0));
@@ -84,7 +93,7 @@ std::vector<std::string> owners_of(sqlite::Database& db, const std::string& sha)
 void scan_objects(Archive::State& state, ProgressDisplay display, VerifyReport& report) {
   std::unordered_map<std::string, int64_t> indexed;  // sha256 -> size
   {
-    sqlite::Statement query(state.db, sql::kAllObjects);
+    db::Statement query(state.db, sql::kAllObjects);
     while (query.step()) indexed.emplace(query.text(0), query.integer(1));
   }
   Progress progress("verify", indexed.size(), display);
@@ -152,7 +161,7 @@ void repair(Archive::State& state, const VerifyOptions& options, VerifyReport& r
 VerifyReport Archive::verify(const VerifyOptions& options) {
   // Exclusive: no writer is between writing an object and committing its row, and no index
   // row changes while the index is compared with its journal.
-  StoreLock lock(state_->folder, LockKind::Exclusive);
+  StoreLock lock(*state_, LockKind::Exclusive);
   VerifyReport report;
   report.index_check = integrity_check(state_->db);
   report.journal_differences = journal_differences(*state_);
@@ -162,7 +171,7 @@ VerifyReport Archive::verify(const VerifyOptions& options) {
 }
 
 size_t Archive::purge_quarantine() {
-  StoreLock lock(state_->folder, LockKind::Exclusive);
+  StoreLock lock(*state_, LockKind::Exclusive);
   return state_->objects.purge_quarantine();
 }
 

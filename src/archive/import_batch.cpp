@@ -6,19 +6,6 @@
 namespace maxillo {
 namespace {
 
-std::optional<double> optional_real(const std::optional<double>& value) { return value; }
-
-void bind_optional(sqlite::Statement& statement, int index, const std::optional<int>& value) {
-  if (value) statement.bind(index, *value);
-  else statement.bind_null(index);
-}
-
-int64_t single_id(sqlite::Statement& query) {
-  int64_t id = query.step() ? query.integer(0) : 0;
-  query.reset();
-  return id;
-}
-
 std::string conflict_reason(const std::string& sop_instance_uid, const std::string& archived_sha256) {
   return "SOP Instance UID " + sop_instance_uid + " is archived with other content (object " +
          archived_sha256.substr(0, 12) + "...); the archived file is kept";
@@ -26,7 +13,7 @@ std::string conflict_reason(const std::string& sop_instance_uid, const std::stri
 
 }  // namespace
 
-BatchWriter::BatchWriter(sqlite::Database& db, ObjectStore& objects, const IndexJournal& journal, std::string source_label)
+BatchWriter::BatchWriter(db::Connection& db, ObjectStore& objects, const IndexJournal& journal, std::string source_label)
     : source_label_(std::move(source_label)),
       db_(db),
       objects_(objects),
@@ -120,22 +107,22 @@ ImportOutcome BatchWriter::insert(const ScannedFile& file, const std::string& no
   const PatientState& patient = patient_of(h, now);
   flag_identity(patient, file, now, report);
   int64_t series = series_of(h, study_of(h, patient.id), patient.default_case);
-  insert_object_.reset().bind(1, file.sha256).bind(2, int64_t(file.size)).run();
-  if (db_.changes() == 1) transaction_->written("objects", "sha256 = ?1", {file.sha256});
+  if (insert_object_.reset().bind(1, file.sha256).bind(2, int64_t(file.size)).run() == 1)
+    transaction_->written("objects", "sha256 = ?1", {file.sha256});
   auto& s = insert_instance_.reset();
   s.bind(1, series).bind(2, h.sop_instance_uid).bind(3, h.sop_class_uid);
-  bind_optional(s, 4, h.instance_number);
+  s.bind(4, h.instance_number);
   s.bind(5, h.image_position).bind(6, h.image_orientation).bind(7, h.transfer_syntax_uid).bind(8, file.sha256);
   s.bind(9, int64_t(file.size)).bind(10, source_of(file)).bind(11, now);
-  s.run();
-  transaction_->inserted("instances", db_.last_insert_id());
+  // archived_outcome() found no row for this SOP Instance UID, under the write lock.
+  if (auto id = db::inserted_id(s)) transaction_->inserted("instances", *id);
   return ImportOutcome::Imported;
 }
 
 const BatchWriter::PatientState& BatchWriter::patient_of(const InstanceHeader& h, const std::string& now) {
   if (auto found = patients_.find(h.patient_id); found != patients_.end()) return found->second;
-  insert_patient_.reset().bind(1, h.patient_id).bind(2, h.patient_name).bind(3, h.birth_date).bind(4, h.sex).bind(5, now).run();
-  if (db_.changes() == 1) transaction_->inserted("patients", db_.last_insert_id());
+  insert_patient_.reset().bind(1, h.patient_id).bind(2, h.patient_name).bind(3, h.birth_date).bind(4, h.sex).bind(5, now);
+  if (auto id = db::inserted_id(insert_patient_)) transaction_->inserted("patients", *id);
   PatientState state{};
   patient_by_id_.reset().bind(1, h.patient_id).step();
   state.id = patient_by_id_.integer(0);
@@ -143,9 +130,8 @@ const BatchWriter::PatientState& BatchWriter::patient_of(const InstanceHeader& h
   state.birth_date = patient_by_id_.text(2);
   state.sex = patient_by_id_.text(3);
   patient_by_id_.reset();
-  insert_case_.reset().bind(1, state.id).bind(2, now).run();
-  if (db_.changes() == 1) transaction_->inserted("cases", db_.last_insert_id());
-  state.default_case = single_id(case_of_patient_.reset().bind(1, state.id));
+  if (auto id = db::inserted_id(insert_case_.reset().bind(1, state.id).bind(2, now))) transaction_->inserted("cases", *id);
+  state.default_case = db::single_integer(case_of_patient_.reset().bind(1, state.id));
   return patients_.emplace(h.patient_id, std::move(state)).first->second;
 }
 
@@ -161,9 +147,10 @@ void BatchWriter::flag_identity(const PatientState& patient, const ScannedFile& 
     if (*archived == *arrived) continue;
     if (!flagged_.emplace(patient.id, attribute, *arrived).second) continue;
     insert_flag_.reset().bind(1, patient.id).bind(2, attribute).bind(3, *archived).bind(4, *arrived);
-    insert_flag_.bind(5, source_of(file)).bind(6, h.sop_instance_uid).bind(7, now).run();
-    if (db_.changes() != 1) continue;
-    transaction_->inserted("identity_flags", db_.last_insert_id());
+    insert_flag_.bind(5, source_of(file)).bind(6, h.sop_instance_uid).bind(7, now);
+    auto id = db::inserted_id(insert_flag_);
+    if (!id) continue;
+    transaction_->inserted("identity_flags", *id);
     ++report.identity_flags;
   }
 }
@@ -171,9 +158,9 @@ void BatchWriter::flag_identity(const PatientState& patient, const ScannedFile& 
 int64_t BatchWriter::study_of(const InstanceHeader& h, int64_t patient) {
   if (auto found = studies_.find(h.study_uid); found != studies_.end()) return found->second;
   insert_study_.reset().bind(1, patient).bind(2, h.study_uid).bind(3, h.study_date).bind(4, h.study_time);
-  insert_study_.bind(5, h.study_description).bind(6, h.accession_number).run();
-  if (db_.changes() == 1) transaction_->inserted("studies", db_.last_insert_id());
-  int64_t id = single_id(study_by_uid_.reset().bind(1, h.study_uid));
+  insert_study_.bind(5, h.study_description).bind(6, h.accession_number);
+  if (auto inserted = db::inserted_id(insert_study_)) transaction_->inserted("studies", *inserted);
+  int64_t id = db::single_integer(study_by_uid_.reset().bind(1, h.study_uid));
   return studies_.emplace(h.study_uid, id).first->second;
 }
 
@@ -181,15 +168,12 @@ int64_t BatchWriter::series_of(const InstanceHeader& h, int64_t study, int64_t c
   if (auto found = series_.find(h.series_uid); found != series_.end()) return found->second;
   auto& s = insert_series_.reset();
   s.bind(1, study).bind(2, h.series_uid).bind(3, h.modality).bind(4, h.series_description);
-  bind_optional(s, 5, h.series_number);
-  bind_optional(s, 6, h.rows);
-  bind_optional(s, 7, h.columns);
-  s.bind(8, optional_real(h.pixel_spacing_row)).bind(9, optional_real(h.pixel_spacing_column));
-  s.bind(10, optional_real(h.slice_thickness)).run();
-  if (db_.changes() == 1) transaction_->inserted("series", db_.last_insert_id());
-  int64_t id = single_id(series_by_uid_.reset().bind(1, h.series_uid));
-  attach_series_.reset().bind(1, case_id).bind(2, id).bind(3, h.modality).run();
-  if (db_.changes() == 1) transaction_->written("case_series", "case_id = ?1 AND series = ?2", {case_id, id});
+  s.bind(5, h.series_number).bind(6, h.rows).bind(7, h.columns);
+  s.bind(8, h.pixel_spacing_row).bind(9, h.pixel_spacing_column).bind(10, h.slice_thickness);
+  if (auto inserted = db::inserted_id(s)) transaction_->inserted("series", *inserted);
+  int64_t id = db::single_integer(series_by_uid_.reset().bind(1, h.series_uid));
+  if (attach_series_.reset().bind(1, case_id).bind(2, id).bind(3, h.modality).run() == 1)
+    transaction_->written("case_series", "case_id = ?1 AND series = ?2", {case_id, id});
   return series_.emplace(h.series_uid, id).first->second;
 }
 

@@ -13,7 +13,7 @@
 #include "archive/index_journal.h"
 #include "archive/journalled_transaction.h"
 #include "archive/object_store.h"
-#include "archive/sqlite.h"
+#include "archive/index_connection.h"
 
 namespace maxillo {
 
@@ -21,7 +21,7 @@ class BatchWriter {
  public:
   // source_label: recorded as every instance's source instead of its file's path when not empty
   // (ImportOptions::source_label).
-  BatchWriter(sqlite::Database& db, ObjectStore& objects, const IndexJournal& journal, std::string source_label = {});
+  BatchWriter(db::Connection& db, ObjectStore& objects, const IndexJournal& journal, std::string source_label = {});
 
   // Writes the file's object now (not yet durable) and queues its rows. A second file of the
   // batch with the same SOP Instance UID is not written: its outcome is returned at once
@@ -47,15 +47,15 @@ class BatchWriter {
   int64_t series_of(const InstanceHeader& h, int64_t study, int64_t case_id);
 
   std::string source_label_;
-  sqlite::Database& db_;
+  db::Connection& db_;
   ObjectStore& objects_;
   const IndexJournal& journal_;
   JournalledTransaction* transaction_ = nullptr;  // while commit() runs
   std::vector<ScannedFile> batch_;
   std::map<std::string, std::string, std::less<>> batch_objects_;  // SOP Instance UID -> sha256 in this batch
-  sqlite::Statement insert_patient_, patient_by_id_, insert_case_, case_of_patient_, insert_flag_;
-  sqlite::Statement insert_study_, study_by_uid_, insert_series_, series_by_uid_, attach_series_;
-  sqlite::Statement insert_object_, insert_instance_, object_of_sop_;
+  db::Statement insert_patient_, patient_by_id_, insert_case_, case_of_patient_, insert_flag_;
+  db::Statement insert_study_, study_by_uid_, insert_series_, series_by_uid_, attach_series_;
+  db::Statement insert_object_, insert_instance_, object_of_sop_;
   // Ids already known in this import; rows are never deleted, so they stay valid.
   std::map<std::string, PatientState, std::less<>> patients_;
   std::map<std::string, int64_t, std::less<>> studies_, series_;

@@ -9,7 +9,7 @@
 #include <cstring>
 
 #include "archive/archive_sql.h"
-#include "archive/sqlite.h"
+#include "archive/archive_state.h"
 #include "core/atomic_file.h"
 #include "core/sha256.h"
 
@@ -78,16 +78,21 @@ FileList list_input_files(const std::vector<std::filesystem::path>& paths) {
 }
 
 struct FileScanner::Queries {
-  explicit Queries(const std::filesystem::path& index_file)
-      : db(index_file, sqlite::OpenKind::Existing), known_object(db, sql::kInstanceWithObject), object_of_sop(db, sql::kObjectOfSopInstance) {
-    db.execute("PRAGMA query_only = ON");
+  explicit Queries(const ArchiveLocation& archive)
+      : connection(connect_index(archive, sqlite::OpenKind::Existing)),
+        db(*connection),
+        known_object(db, sql::kInstanceWithObject),
+        object_of_sop(db, sql::kObjectOfSopInstance) {
+    if (db.engine() == db::Engine::Sqlite) db.execute("PRAGMA query_only = ON");
+    else db.execute("SET default_transaction_read_only = on");
   }
-  sqlite::Database db;
-  sqlite::Statement known_object;
-  sqlite::Statement object_of_sop;
+  std::unique_ptr<db::Connection> connection;
+  db::Connection& db;
+  db::Statement known_object;
+  db::Statement object_of_sop;
 };
 
-FileScanner::FileScanner(const std::filesystem::path& index_file) : queries_(new Queries(index_file)) {}
+FileScanner::FileScanner(const ArchiveLocation& archive) : queries_(new Queries(archive)) {}
 FileScanner::~FileScanner() { delete queries_; }
 
 ScannedFile FileScanner::scan(const std::filesystem::path& path) {

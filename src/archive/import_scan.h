@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "archive/archive_location.h"
 #include "archive/dicom_header.h"
 #include "core/error.h"
 
@@ -46,7 +47,8 @@ FileList list_input_files(const std::vector<std::filesystem::path>& paths);
 // Reads, hashes and (for unknown content) parses one file. Never throws for bad input.
 class FileScanner {
  public:
-  explicit FileScanner(const std::filesystem::path& index_file);
+  // Opens its own connection to the archive's index, read-only.
+  explicit FileScanner(const ArchiveLocation& archive);
   ~FileScanner();
   FileScanner(const FileScanner&) = delete;
   FileScanner& operator=(const FileScanner&) = delete;

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "archive/index_connection.h"
 #include "archive/sqlite.h"
 
 namespace maxillo {
@@ -17,7 +18,13 @@ struct TableDifference {
   std::string describe() const;
 };
 
-// `db` holds the first index as "main" and the second attached under `second_schema`.
+// Any two indexes, on any engines (a server index and the replay of its journal, an embedded
+// index and the server index it was migrated into): rows are compared as their JSON text
+// (journalled_transaction.h's row_as_json), by digest, so memory grows by 32 bytes a row.
+std::vector<TableDifference> compare_indexes(db::Connection& first, db::Connection& second);
+
+// Two SQLite indexes, in SQL: `db` holds the first as "main" and the second attached under
+// `second_schema`.
 std::vector<TableDifference> compare_attached_indexes(sqlite::Database& db, const std::string& second_schema);
 
 // Opens both files (read only) and compares them.

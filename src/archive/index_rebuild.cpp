@@ -28,15 +28,15 @@ bool index_is_intact(const std::filesystem::path& folder, const IndexJournal& jo
     if (check_index_presence(folder) != IndexPresence::Present) return false;
     sqlite::Database db(index_file(folder), sqlite::OpenKind::Existing);
     require_intact_index(db);
-    if (db.user_version() >= 2) require_index_not_behind_journal(db, journal);
-    return db.user_version() >= 1;
+    if (db.schema_version() >= 2) require_index_not_behind_journal(db, journal);
+    return db.schema_version() >= 1;
   } catch (const Error&) {
     return false;
   }
 }
 
 void restore_named_objects(sqlite::Database& db, ObjectStore& objects, RebuildReport& report) {
-  sqlite::Statement query(db, "SELECT sha256 FROM objects");
+  db::Statement query(db, "SELECT sha256 FROM objects");
   while (query.step()) {
     auto sha = query.text(0);
     if (objects.state_of(sha) == ObjectStore::ObjectState::Absent && objects.restore_from_quarantine(sha))
@@ -47,10 +47,10 @@ void restore_named_objects(sqlite::Database& db, ObjectStore& objects, RebuildRe
 // Every instance row against its object: the journal says what the index said, the object is
 // the data, and they must agree.
 void check_instances(sqlite::Database& db, const ObjectStore& objects, ProgressDisplay display, RebuildReport& report) {
-  sqlite::Statement count(db, "SELECT COUNT(*) FROM instances");
+  db::Statement count(db, "SELECT COUNT(*) FROM instances");
   count.step();
   Progress progress("check instances", size_t(count.integer(0)), display);
-  sqlite::Statement rows(db,
+  db::Statement rows(db,
                          "SELECT i.id, i.object, i.sop_instance_uid, x.series_uid, s.study_uid FROM instances i "
                          "JOIN series x ON x.id = i.series JOIN studies s ON s.id = x.study ORDER BY i.id");
   while (rows.step()) {
@@ -79,7 +79,7 @@ void adopt_unindexed_objects(sqlite::Database& db, ObjectStore& objects, const I
                              RebuildReport& report) {
   std::vector<std::filesystem::path> candidates;
   {
-    sqlite::Statement indexed(db, "SELECT 1 FROM objects WHERE sha256 = ?1");
+    db::Statement indexed(db, "SELECT 1 FROM objects WHERE sha256 = ?1");
     objects.for_each_file([&](ObjectStore::EntryKind kind, const std::string& sha, const std::filesystem::path& path) {
       if (kind != ObjectStore::EntryKind::Object) return;
       if (!indexed.reset().bind(1, sha).step()) candidates.push_back(path);
@@ -116,7 +116,7 @@ void adopt_unindexed_objects(sqlite::Database& db, ObjectStore& objects, const I
 
 void count_rows(sqlite::Database& db, RebuildReport& report) {
   for (const auto& table : index_tables()) {
-    sqlite::Statement count(db, "SELECT COUNT(*) FROM " + table);
+    db::Statement count(db, "SELECT COUNT(*) FROM " + table);
     count.step();
     report.rows[table] = count.integer(0);
   }
@@ -142,6 +142,10 @@ void install(const std::filesystem::path& folder, const std::filesystem::path& r
 
 RebuildReport Archive::rebuild_index(const std::filesystem::path& folder, const RebuildOptions& options) {
   initialise_dicom_toolkit();
+  if (names_index_server(folder.string()))
+    throw Error(ErrorCode::kUsage, parse_archive_location(folder.string()).shown,
+                "rebuild-index rebuilds an embedded archive's index file; a server archive's index is restored from "
+                "the database's backup");
   if (!std::filesystem::is_directory(objects_folder(folder)))
     throw Error(ErrorCode::kNotFound, folder.string(), "no object store (objects/) to rebuild an index from");
   StoreLock lock(folder, LockKind::Exclusive);

@@ -11,20 +11,41 @@ namespace {
   throw Error(ErrorCode::kIndexDamaged, source.string(), "journal entry cannot be replayed: " + reason);
 }
 
-std::vector<std::string> schema_columns(sqlite::Database& db, const std::string& table) {
-  sqlite::Statement info(db, "SELECT name FROM pragma_table_info(?1)");
+std::vector<std::string> schema_columns(db::Connection& db, const std::string& table) {
+  db::Statement info(db, db.engine() == db::Engine::Sqlite
+                             ? "SELECT name FROM pragma_table_info(?1)"
+                             : "SELECT column_name FROM information_schema.columns WHERE table_name = ?1 "
+                               "AND table_schema = current_schema() ORDER BY ordinal_position");
   info.bind(1, table);
   std::vector<std::string> columns;
   while (info.step()) columns.push_back(info.text(0));
   return columns;
 }
 
-void bind_value(sqlite::Statement& statement, int index, const Json& value, const std::filesystem::path& source) {
+void bind_value(db::Statement& statement, int index, const Json& value, const std::filesystem::path& source) {
   if (value.is_null()) statement.bind_null(index);
   else if (value.is_number_integer()) statement.bind(index, value.get<int64_t>());
   else if (value.is_number()) statement.bind(index, value.get<double>());
   else if (value.is_string()) statement.bind(index, value.get<std::string>());
   else refuse(source, "a value is neither a number, a string nor null");
+}
+
+// The key of each index table (db/001_initial.sql).
+std::string primary_key(const std::string& table) {
+  if (table == "objects") return "sha256";
+  if (table == "case_series") return "case_id, series";
+  return "id";
+}
+
+// Rows written with their own ids leave a PostgreSQL identity behind them: move it past the
+// highest id, so the next insert does not collide with a replayed row.
+void advance_identities(db::Connection& db) {
+  if (db.engine() != db::Engine::Postgres) return;
+  for (const auto& table : index_tables()) {
+    if (primary_key(table) != "id") continue;
+    db.execute("SELECT setval(pg_get_serial_sequence('" + table + "', 'id'), COALESCE((SELECT MAX(id) FROM " + table +
+               "), 0) + 1, false)");
+  }
 }
 
 }  // namespace
@@ -36,10 +57,10 @@ const std::vector<std::string>& index_tables() {
 }
 
 struct JournalReplayer::Statements {
-  std::map<std::string, std::unique_ptr<sqlite::Statement>> by_table;
+  std::map<std::string, std::unique_ptr<db::Statement>> by_table;
 };
 
-JournalReplayer::JournalReplayer(sqlite::Database& db) : db_(db), statements_(new Statements) {
+JournalReplayer::JournalReplayer(db::Connection& db) : db_(db), statements_(new Statements) {
   for (const auto& table : index_tables()) columns_[table] = schema_columns(db, table);
 }
 
@@ -54,13 +75,16 @@ void JournalReplayer::apply(const JournalEntry& entry, const std::filesystem::pa
     auto& statement = statements_->by_table[row.table];
     if (!statement) {
       // Every row is the whole row, so the column list is the schema's, in the schema's order.
-      std::string names, places;
+      // An upsert on the table's key: a later entry's row replaces an earlier one.
+      std::string names, places, updates;
       for (size_t c = 0; c < columns.size(); ++c) {
         names += (c ? ", " : "") + columns[c];
         places += (c ? ", ?" : "?") + std::to_string(c + 1);
+        updates += (c ? ", " : "") + columns[c] + " = excluded." + columns[c];
       }
-      statement = std::make_unique<sqlite::Statement>(
-          db_, "INSERT OR REPLACE INTO " + row.table + " (" + names + ") VALUES (" + places + ")");
+      statement = std::make_unique<db::Statement>(db_, "INSERT INTO " + row.table + " (" + names + ") VALUES (" +
+                                                           places + ") ON CONFLICT (" + primary_key(row.table) +
+                                                           ") DO UPDATE SET " + updates);
     }
     statement->reset();
     for (size_t c = 0; c < columns.size(); ++c) {
@@ -72,11 +96,11 @@ void JournalReplayer::apply(const JournalEntry& entry, const std::filesystem::pa
   }
 }
 
-ReplayOutcome replay_journal(sqlite::Database& db, const IndexJournal& journal, std::optional<int64_t> up_to) {
+ReplayOutcome replay_journal(db::Connection& db, const IndexJournal& journal, std::optional<int64_t> up_to) {
   ReplayOutcome outcome;
   auto present = journal.sequences();
   const int64_t last = up_to.value_or(present.empty() ? 0 : present.back());
-  sqlite::Transaction transaction(db);
+  db::Transaction transaction(db);
   JournalReplayer replayer(db);
   for (int64_t sequence = 1; sequence <= last; ++sequence) {
     if (!journal.has(sequence)) {
@@ -96,8 +120,9 @@ ReplayOutcome replay_journal(sqlite::Database& db, const IndexJournal& journal, 
       outcome.problems.push_back("entry " + std::to_string(sequence) + ": " + e.reason());
     }
   }
-  sqlite::Statement counter(db, "UPDATE index_state SET journal_sequence = ?1 WHERE id = 1");
+  db::Statement counter(db, "UPDATE index_state SET journal_sequence = ?1 WHERE id = 1");
   counter.bind(1, last).run();
+  advance_identities(db);
   transaction.commit();
   return outcome;
 }

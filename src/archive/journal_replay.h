@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "archive/index_journal.h"
-#include "archive/sqlite.h"
+#include "archive/index_connection.h"
 
 namespace maxillo {
 
@@ -21,7 +21,7 @@ const std::vector<std::string>& index_tables();
 // can fail (Error kIndexDamaged naming the entry) but never run other SQL.
 class JournalReplayer {
  public:
-  explicit JournalReplayer(sqlite::Database& db);
+  explicit JournalReplayer(db::Connection& db);
   ~JournalReplayer();
   JournalReplayer(const JournalReplayer&) = delete;
   JournalReplayer& operator=(const JournalReplayer&) = delete;
@@ -29,7 +29,7 @@ class JournalReplayer {
 
  private:
   struct Statements;
-  sqlite::Database& db_;
+  db::Connection& db_;
   std::map<std::string, std::vector<std::string>> columns_;  // per table, from the schema
   Statements* statements_;
 };
@@ -43,6 +43,6 @@ struct ReplayOutcome {
 // Applies entries 1..up_to (every entry present when up_to is empty) to `db` in one
 // transaction, then sets its journal counter to the last entry applied. A missing or unreadable
 // entry is a problem that is reported and skipped, never a reason to stop.
-ReplayOutcome replay_journal(sqlite::Database& db, const IndexJournal& journal, std::optional<int64_t> up_to = {});
+ReplayOutcome replay_journal(db::Connection& db, const IndexJournal& journal, std::optional<int64_t> up_to = {});
 
 }  // namespace maxillo

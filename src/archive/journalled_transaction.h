@@ -1,11 +1,10 @@
 #pragma once
 // A write transaction on the archive index that records every row it writes in the index
 // journal (index_journal.h). Use it for every change of the index: rows written through a
-// plain sqlite::Transaction would be lost by a rebuild.
+// plain db::Transaction would be lost by a rebuild.
 //
 //   JournalledTransaction transaction(db, journal, "artefact");
-//   insert.run();
-//   transaction.inserted("artefacts", db.last_insert_id());
+//   transaction.inserted("artefacts", db::inserted_id(insert).value());
 //   transaction.commit();   // entry numbered, written durably, then COMMIT
 //
 // A transaction that captured no row commits without an entry.
@@ -16,21 +15,23 @@
 #include <vector>
 
 #include "archive/index_journal.h"
-#include "archive/sqlite.h"
+#include "archive/index_connection.h"
 
 namespace maxillo {
 
 // The whole row `table` holds where `where` (with ?1, ?2... bound to `keys`) is true, as JSON.
 using SqlKey = std::variant<int64_t, std::string>;
-Json row_as_json(sqlite::Database& db, std::string_view table, std::string_view where, const std::vector<SqlKey>& keys);
+// The current row of a query as JSON {column: value}.
+Json row_json(const db::Statement& row);
+Json row_as_json(db::Connection& db, std::string_view table, std::string_view where, const std::vector<SqlKey>& keys);
 
 class JournalledTransaction {
  public:
-  JournalledTransaction(sqlite::Database& db, const IndexJournal& journal, std::string operation);
+  JournalledTransaction(db::Connection& db, const IndexJournal& journal, std::string operation);
 
-  // Records the row just inserted into a rowid table.
-  void inserted(std::string_view table, int64_t rowid);
-  // Records the row of `table` that `where` selects after a change (WITHOUT ROWID tables,
+  // Records the row just inserted into a table whose key is `id`.
+  void inserted(std::string_view table, int64_t id);
+  // Records the row of `table` that `where` selects after a change (tables keyed otherwise,
   // updates).
   void written(std::string_view table, std::string_view where, const std::vector<SqlKey>& keys);
   // Records every row of `table` (the snapshot of an index that predates the journal).
@@ -40,13 +41,13 @@ class JournalledTransaction {
   void commit();
 
  private:
-  sqlite::Database& db_;
+  db::Connection& db_;
   const IndexJournal& journal_;
-  sqlite::Transaction transaction_;
+  db::Transaction transaction_;
   JournalEntry entry_;
 };
 
 // The index's journal counter: entries 1..N are its committed history.
-int64_t journal_sequence(sqlite::Database& db);
+int64_t journal_sequence(db::Connection& db);
 
 }  // namespace maxillo

@@ -39,8 +39,9 @@ void write_all(int fd, std::span<const std::byte> bytes, const std::filesystem::
 }
 
 // Folders of the store that hold no objects (see object_store.h).
-bool is_reserved_folder(const std::string& name) { return name == "journal" || name == "quarantine"; }
-
+bool is_reserved_folder(const std::string& name) {
+  return name == "journal" || name == "quarantine" || name == "settings";
+}
 
 bool file_hashes_to(const std::filesystem::path& path, std::string_view sha256) {
   try {

@@ -8,6 +8,7 @@
 //   objects/quarantine/   files set aside instead of deleted: orphans and temporaries moved
 //                         by `verify --repair`, damaged objects replaced by good bytes; kept
 //                         until `verify --purge`, restored when an index row names them again.
+//   objects/settings/     a server archive's shared settings (its de-identification secret).
 // Both sit inside the store so that they live on the same file system (rename, never copy) and
 // travel with the objects to shared storage.
 #include <cstddef>

@@ -2,7 +2,6 @@
 
 #include <sqlite3.h>
 
-#include <cassert>
 #include <chrono>
 #include <thread>
 
@@ -43,7 +42,7 @@ int open_flags(OpenKind kind) {
 }
 }  // namespace
 
-Database::Database(const std::filesystem::path& file, OpenKind kind) : file_(file) {
+Database::Database(const std::filesystem::path& file, OpenKind kind) : file_(file), name_(file.string()) {
   int status = sqlite3_open_v2(file.c_str(), &db_, open_flags(kind), nullptr);
   if (status != SQLITE_OK) {
     std::string reason = db_ ? sqlite3_errmsg(db_) : sqlite3_errstr(status);
@@ -58,7 +57,7 @@ Database::Database(const std::filesystem::path& file, OpenKind kind) : file_(fil
 Database::~Database() { sqlite3_close_v2(db_); }
 
 void Database::fail(int status, std::string_view what) const {
-  throw Error(code_for(status), file_.string(), with_recovery_hint(status, std::string(what) + ": " + sqlite3_errmsg(db_)));
+  throw Error(code_for(status), name_, with_recovery_hint(status, std::string(what) + ": " + sqlite3_errmsg(db_)));
 }
 
 void Database::execute(std::string_view sql) {
@@ -68,108 +67,102 @@ void Database::execute(std::string_view sql) {
   if (status != SQLITE_OK) {
     std::string reason = message ? message : sqlite3_errstr(status);
     sqlite3_free(message);
-    throw Error(code_for(status), file_.string(), with_recovery_hint(status, reason));
+    throw Error(code_for(status), name_, with_recovery_hint(status, reason));
   }
 }
 
-int Database::user_version() {
-  Statement query(*this, "PRAGMA user_version");
-  query.step();
-  return static_cast<int>(query.integer(0));
+int Database::schema_version() {
+  db::Statement query(*this, "PRAGMA user_version");
+  return static_cast<int>(db::single_integer(query));
 }
 
-int64_t Database::last_insert_id() const { return sqlite3_last_insert_rowid(db_); }
-int Database::changes() const { return sqlite3_changes(db_); }
+void Database::set_schema_version(int version) { execute("PRAGMA user_version = " + std::to_string(version)); }
 
-Statement::Statement(Database& db, std::string_view sql) : db_(db) {
-  int status = sqlite3_prepare_v3(db.handle(), sql.data(), static_cast<int>(sql.size()), SQLITE_PREPARE_PERSISTENT,
-                                  &statement_, nullptr);
-  if (status != SQLITE_OK) db.fail(status, "cannot prepare \"" + std::string(sql.substr(0, 60)) + "\"");
-}
+namespace {
 
-Statement::~Statement() { sqlite3_finalize(statement_); }
-
-Statement& Statement::reset() {
-  sqlite3_reset(statement_);
-  sqlite3_clear_bindings(statement_);
-  return *this;
-}
-
-Statement& Statement::bind(int index, int64_t value) {
-  sqlite3_bind_int64(statement_, index, value);
-  return *this;
-}
-Statement& Statement::bind(int index, double value) {
-  sqlite3_bind_double(statement_, index, value);
-  return *this;
-}
-Statement& Statement::bind(int index, std::string_view text) {
-  sqlite3_bind_text(statement_, index, text.data(), static_cast<int>(text.size()), SQLITE_TRANSIENT);
-  return *this;
-}
-Statement& Statement::bind_null(int index) {
-  sqlite3_bind_null(statement_, index);
-  return *this;
-}
-
-bool Statement::step() {
-  int status = sqlite3_step(statement_);
-  if (status == SQLITE_ROW) return true;
-  if (status == SQLITE_DONE) return false;
-  db_.fail(status, "query failed");
-}
-
-void Statement::run() {
-  while (step()) {
+class SqliteStatement final : public db::PreparedStatement {
+ public:
+  SqliteStatement(Database& db, std::string_view sql) : db_(db) {
+    int status = sqlite3_prepare_v3(db.handle(), sql.data(), static_cast<int>(sql.size()), SQLITE_PREPARE_PERSISTENT,
+                                    &statement_, nullptr);
+    if (status != SQLITE_OK) db.fail(status, "cannot prepare \"" + std::string(sql.substr(0, 60)) + "\"");
   }
-}
+  ~SqliteStatement() override { sqlite3_finalize(statement_); }
 
-int Statement::column_count() const { return sqlite3_column_count(statement_); }
-std::string Statement::column_name(int column) const { return sqlite3_column_name(statement_, column); }
-Statement::ColumnType Statement::column_type(int column) const {
-  switch (sqlite3_column_type(statement_, column)) {
-    case SQLITE_INTEGER: return ColumnType::Integer;
-    case SQLITE_FLOAT: return ColumnType::Real;
-    case SQLITE_TEXT: return ColumnType::Text;
-    case SQLITE_BLOB: return ColumnType::Blob;
-    default: return ColumnType::Null;
+  void reset() override {
+    sqlite3_reset(statement_);
+    sqlite3_clear_bindings(statement_);
   }
+  void bind_integer(int index, int64_t value) override { sqlite3_bind_int64(statement_, index, value); }
+  void bind_real(int index, double value) override { sqlite3_bind_double(statement_, index, value); }
+  void bind_text(int index, std::string_view text) override {
+    // An empty string_view may hold no pointer at all, which SQLite would bind as NULL.
+    sqlite3_bind_text(statement_, index, text.data() ? text.data() : "", static_cast<int>(text.size()), SQLITE_TRANSIENT);
+  }
+  void bind_null(int index) override { sqlite3_bind_null(statement_, index); }
+
+  bool step() override {
+    int status = sqlite3_step(statement_);
+    if (status == SQLITE_ROW) return true;
+    if (status == SQLITE_DONE) {
+      changed_ = sqlite3_stmt_readonly(statement_) ? 0 : sqlite3_changes(db_.handle());
+      return false;
+    }
+    db_.fail(status, "query failed");
+  }
+  int rows_changed() const override { return changed_; }
+
+  int column_count() const override { return sqlite3_column_count(statement_); }
+  std::string column_name(int column) const override { return sqlite3_column_name(statement_, column); }
+  db::ColumnType column_type(int column) const override {
+    switch (sqlite3_column_type(statement_, column)) {
+      case SQLITE_INTEGER: return db::ColumnType::Integer;
+      case SQLITE_FLOAT: return db::ColumnType::Real;
+      case SQLITE_NULL: return db::ColumnType::Null;
+      default: return db::ColumnType::Text;  // the schema stores no blobs
+    }
+  }
+  int64_t integer(int column) const override { return sqlite3_column_int64(statement_, column); }
+  double real(int column) const override { return sqlite3_column_double(statement_, column); }
+  std::string text(int column) const override {
+    const auto* bytes = sqlite3_column_text(statement_, column);
+    return bytes ? std::string(reinterpret_cast<const char*>(bytes), sqlite3_column_bytes(statement_, column))
+                 : std::string();
+  }
+
+ private:
+  Database& db_;
+  sqlite3_stmt* statement_ = nullptr;
+  int changed_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<db::PreparedStatement> Database::prepare(std::string_view sql) {
+  return std::make_unique<SqliteStatement>(*this, sql);
 }
 
-int64_t Statement::integer(int column) const { return sqlite3_column_int64(statement_, column); }
-double Statement::real(int column) const { return sqlite3_column_double(statement_, column); }
-bool Statement::is_null(int column) const { return sqlite3_column_type(statement_, column) == SQLITE_NULL; }
-std::string Statement::text(int column) const {
-  const auto* bytes = sqlite3_column_text(statement_, column);
-  return bytes ? std::string(reinterpret_cast<const char*>(bytes), sqlite3_column_bytes(statement_, column))
-               : std::string();
-}
-
-Transaction::Transaction(Database& db, TransactionKind kind) : db_(db) {
+void Database::begin(db::TransactionKind kind) {
   // The busy handler already waits kBusyTimeoutMs; BEGIN IMMEDIATE can still report BUSY at
   // once in WAL mode when a snapshot must be upgraded, so retry a few times with a pause.
-  const char* sql = kind == TransactionKind::Immediate ? "BEGIN IMMEDIATE" : "BEGIN DEFERRED";
+  const char* sql = kind == db::TransactionKind::Immediate ? "BEGIN IMMEDIATE" : "BEGIN DEFERRED";
   for (int attempt = 0;; ++attempt) {
-    int status = sqlite3_exec(db.handle(), sql, nullptr, nullptr, nullptr);
+    int status = sqlite3_exec(db_, sql, nullptr, nullptr, nullptr);
     if (status == SQLITE_OK) return;
-    if ((status & 0xFF) != SQLITE_BUSY || attempt == 50) db.fail(status, "cannot begin a transaction");
+    if ((status & 0xFF) != SQLITE_BUSY || attempt == 50) fail(status, "cannot begin a transaction");
     std::this_thread::sleep_for(std::chrono::milliseconds(20 + 10 * attempt));
   }
 }
 
-Transaction::~Transaction() {
-  if (open_) sqlite3_exec(db_.handle(), "ROLLBACK", nullptr, nullptr, nullptr);
-}
+void Database::rollback() noexcept { sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr); }
 
-void Transaction::commit() {
-  assert(open_ && "transaction committed twice");
+void Database::commit() {
   for (int attempt = 0;; ++attempt) {
-    int status = sqlite3_exec(db_.handle(), "COMMIT", nullptr, nullptr, nullptr);
-    if (status == SQLITE_OK) break;
-    if ((status & 0xFF) != SQLITE_BUSY || attempt == 50) db_.fail(status, "cannot commit");
+    int status = sqlite3_exec(db_, "COMMIT", nullptr, nullptr, nullptr);
+    if (status == SQLITE_OK) return;
+    if ((status & 0xFF) != SQLITE_BUSY || attempt == 50) fail(status, "cannot commit");
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
-  open_ = false;
 }
 
 }  // namespace maxillo::sqlite

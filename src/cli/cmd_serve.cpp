@@ -29,6 +29,7 @@ struct ServeArguments {
   int timeout_seconds = 30;
   std::string on_stable_study;
   int stable_seconds = 60;
+  std::filesystem::path spool;
   net::TlsOptions tls;
   // The options given on the command line (they override the configuration file).
   std::map<std::string, CLI::Option*> given;
@@ -89,6 +90,7 @@ net::StorageServerOptions server_options(const ServeArguments& a, const GlobalOp
   if (a.config.empty() || a.on_command_line("--timeout")) options.timeout_seconds = a.timeout_seconds;
   if (a.config.empty() || a.on_command_line("--on-stable-study")) options.on_stable_study = a.on_stable_study;
   if (a.config.empty() || a.on_command_line("--stable-seconds")) options.stable_seconds = a.stable_seconds;
+  if (a.on_command_line("--spool")) options.spool = a.spool;
   if (a.on_command_line("--tls-cert")) {
     options.tls = {.enabled = true, .certificate = a.tls.certificate, .private_key = a.tls.private_key, .trusted = {}};
     if (!a.on_command_line("--tls-key")) throw Error(ErrorCode::kUsage, "--tls-cert", "needs --tls-key");
@@ -153,6 +155,9 @@ void attach_serve(CLI::App& app, CommandContext& ctx) {
   given["--stable-seconds"] = app.add_option("--stable-seconds", a->stable_seconds, "quiet time after which a study is stable")
                                   ->check(CLI::Range(1, 86400))
                                   ->capture_default_str();
+  given["--spool"] = app.add_option("--spool", a->spool,
+                                    "this node's folder for files being received and owed actions (default: the "
+                                    "archive folder; required with an archive on a PostgreSQL server)");
   given["--tls-cert"] = app.add_option("--tls-cert", a->tls.certificate, "our certificate (PEM): serve DICOM TLS only")
                             ->check(CLI::ExistingFile);
   given["--tls-key"] = app.add_option("--tls-key", a->tls.private_key, "the certificate's private key (PEM)")

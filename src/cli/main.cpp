@@ -45,7 +45,9 @@ int run(int argc, char** argv) {
   app.set_help_all_flag("--help-all", "help for every command");
   CommandContext context;
   app.add_option("--archive", context.global.archive_dir,
-                 "archive folder (default: $MAXILLO_ARCHIVE or ./maxillo-archive)");
+                 "archive folder, or a PostgreSQL index with its shared object folder: "
+                 "postgresql://USER@HOST:PORT/DATABASE?objects=/shared/folder "
+                 "(default: $MAXILLO_ARCHIVE or ./maxillo-archive)");
   app.add_flag("--json", context.global.json, "machine-readable output on stdout");
   app.add_flag("-v,--verbose", context.global.verbosity, "debug logging (may show patient identifiers)");
   app.add_flag("-q,--quiet", context.global.quiet, "errors only");

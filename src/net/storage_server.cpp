@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include "archive/archive.h"
+#include "archive/archive_location.h"
 #include "archive/instance_source.h"
 #include "core/error.h"
 #include "core/log.h"
@@ -231,11 +232,18 @@ StorageServer::StorageServer(StorageServerOptions options) : shared_(std::make_u
   if (options.timeout_seconds < 1 || options.timeout_seconds > 3600)
     throw Error(ErrorCode::kUsage, "--timeout", "from 1 to 3600 seconds");
   Archive::open(options.archive, OpenMode::CreateIfMissing);  // create it, or refuse a damaged one, before listening
+  if (options.spool.empty()) {
+    if (names_index_server(options.archive.string()))
+      throw Error(ErrorCode::kUsage, "--spool",
+                  "an archive on a PostgreSQL server needs --spool FOLDER: this node's folder for files being "
+                  "received and owed stable-study actions");
+    options.spool = options.archive;
+  }
   if (!options.on_stable_study.empty()) {
     if (options.stable_seconds < 1 || options.stable_seconds > 86400)
       throw Error(ErrorCode::kUsage, "--stable-seconds", "from 1 to 86400 seconds");
     shared_->stable = std::make_unique<StableStudies>(std::chrono::seconds(options.stable_seconds));
-    shared_->pending = std::make_unique<PendingStudies>(options.archive / "serve" / "pending-stable-studies");
+    shared_->pending = std::make_unique<PendingStudies>(options.spool / "serve" / "pending-stable-studies");
     // Actions owed from before a stop or a crash: due after a full quiet period from now.
     const auto owed = shared_->pending->studies();
     for (const auto& study : owed) shared_->stable->archived(study, StableStudies::Clock::now());
@@ -243,7 +251,7 @@ StorageServer::StorageServer(StorageServerOptions options) : shared_(std::make_u
   }
   shared_->tls = acceptor_tls(options.tls);
   shared_->commit = std::make_unique<GroupCommit>(options.archive);
-  shared_->incoming = options.archive / "incoming";
+  shared_->incoming = options.spool / "incoming";
   clear_incoming(shared_->incoming);
   shared_->options = std::move(options);
 }

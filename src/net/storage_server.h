@@ -35,6 +35,10 @@ namespace maxillo::net {
 
 struct StorageServerOptions {
   std::filesystem::path archive;  // an existing archive, or a folder to create one in
+  // This node's own folder for files being received (incoming/) and owed stable-study actions
+  // (serve/): the archive's folder when empty. An archive on a PostgreSQL server has no folder
+  // of this node's, so it needs one.
+  std::filesystem::path spool;
   std::string ae_title = "MAXILLO";
   uint16_t port = 11112;
   std::vector<AllowedPeer> allowed;  // calling AE titles (and addresses) that may associate; empty: none

@@ -9,6 +9,7 @@
 #include "core/sha256.h"
 #include "core/version.h"
 #include "pipeline/nightly_summary.h"
+#include "pipeline/nightly_worker.h"
 #include "pipeline/validation_archive.h"
 
 namespace maxillo::pipeline {
@@ -126,7 +127,11 @@ Shard parse_shard(std::string_view text) {
   };
   if (slash == std::string_view::npos || !number(text.substr(0, slash), shard.index) ||
       !number(text.substr(slash + 1), shard.count) || shard.count < 1 || shard.index < 1 || shard.index > shard.count)
-    throw Error(ErrorCode::kBadValue, std::string(text), "a shard is i/n with 1 <= i <= n, e.g. 2/8");
+    throw Error(ErrorCode::kBadValue, std::string(text),
+                shard.index == 0 && shard.count >= 1
+                    ? "shards are numbered from 1 (i/n with 1 <= i <= n): with a Slurm array, use --array=1-N, or "
+                      "--shard $((SLURM_ARRAY_TASK_ID + 1))/$SLURM_ARRAY_TASK_COUNT for --array=0-(N-1)"
+                    : "a shard is i/n with 1 <= i <= n, e.g. 2/8");
   return shard;
 }
 
@@ -156,6 +161,7 @@ int NightlyReport::count(NightlyOutcome outcome) const {
 }
 
 NightlyReport run_nightly(Archive& archive, const NightlyOptions& options) {
+  if (options.claim && !options.summary_only) return run_nightly_worker(archive, options);
   std::filesystem::create_directories(options.out);
   NightlyReport report;
   std::vector<StoredValidation> shown;

@@ -9,6 +9,7 @@
 // label, stable as cases are added) falls in slice i of n, so a Slurm array or a Kubernetes indexed Job can run the
 // slices on many machines against one archive; `--summary-only` then writes the summary of every case from what the
 // slices stored.
+#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -34,6 +35,11 @@ struct NightlyOptions {
   Shard shard;
   bool summary_only = false;  // validate nothing: summarise what is stored
   ValidationOptions validation;
+  // Claim cases from the archive's work queue instead of a static shard (nightly_worker.h).
+  bool claim = false;
+  std::string worker;            // the lease holder's name; default host:pid
+  int64_t lease_seconds = 600;   // a dead worker's case is taken over after this long
+  std::chrono::milliseconds poll{1000};  // how often a worker with nothing to claim looks again
 };
 
 enum class NightlyOutcome { kValidated, kUpToDate, kFailed, kNotValidated };

@@ -8,6 +8,7 @@
 #include "archive/archive.h"
 #include "archive/dicom_series_writer.h"
 #include "support/temporary_folder.h"
+#include "support/test_archive.h"
 
 namespace maxillo::testing {
 

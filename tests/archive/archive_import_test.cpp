@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <thread>
+#include <vector>
 
 #include "archive/archive.h"
 #include "archive_fixture.h"
@@ -17,7 +18,7 @@ using testing::quiet;
 TEST(ArchiveImport, IndexesPatientStudySeriesAndInstances) {
   TemporaryFolder folder;
   auto written = testing::write_series(folder / "in", 5, "P1", "Müller-Łukasz^Zoë");
-  Archive archive = Archive::open(folder / "archive", OpenMode::CreateIfMissing);
+  Archive archive = Archive::open(testing::archive_at(folder / "archive"), OpenMode::CreateIfMissing);
   ImportReport report = archive.import_paths({folder / "in"}, quiet());
   EXPECT_EQ(report.imported, 5u);
   EXPECT_TRUE(report.all_ok());
@@ -58,7 +59,7 @@ TEST(ArchiveImport, SecondCtSeriesOfAPatientIsUnassigned) {
   TemporaryFolder folder;
   testing::write_series(folder / "a", 2, "P1");
   testing::write_series(folder / "b", 2, "P1");
-  Archive archive = Archive::open(folder / "archive", OpenMode::CreateIfMissing);
+  Archive archive = Archive::open(testing::archive_at(folder / "archive"), OpenMode::CreateIfMissing);
   archive.import_paths({folder / "a"}, quiet());
   archive.import_paths({folder / "b"}, quiet());
   auto contents = archive.case_contents(archive.resolve_case("P1"));
@@ -73,9 +74,8 @@ TEST(ArchiveImport, SecondCtSeriesOfAPatientIsUnassigned) {
 TEST(ArchiveImport, ReimportChangesNothingAndSaysSo) {
   TemporaryFolder folder;
   testing::write_series(folder / "in", 4);
-  Archive archive = Archive::open(folder / "archive", OpenMode::CreateIfMissing);
+  Archive archive = Archive::open(testing::archive_at(folder / "archive"), OpenMode::CreateIfMissing);
   archive.import_paths({folder / "in"}, quiet());
-  auto index_before = testing::read_text(folder / "archive" / "index.sqlite");
   ImportReport again = archive.import_paths({folder / "in"}, quiet());
   EXPECT_EQ(again.imported, 0u);
   EXPECT_EQ(again.already_archived, 4u);
@@ -89,7 +89,7 @@ TEST(ArchiveImport, ReimportChangesNothingAndSaysSo) {
 TEST(ArchiveImport, SameSopInstanceUidWithOtherBytesIsAConflictAndTheOriginalIsKept) {
   TemporaryFolder folder;
   auto written = testing::write_series(folder / "in", 2);
-  Archive archive = Archive::open(folder / "archive", OpenMode::CreateIfMissing);
+  Archive archive = Archive::open(testing::archive_at(folder / "archive"), OpenMode::CreateIfMissing);
   archive.import_paths({folder / "in"}, quiet());
   auto original = testing::read_text(archive.series_instance_files(1)[0]);
 
@@ -118,7 +118,7 @@ TEST(ArchiveImport, PatientIdWithAnotherNameIsFlaggedNotMerged) {
   TemporaryFolder folder;
   testing::write_series(folder / "a", 3, "P7", "Doe^Jane");
   testing::write_series(folder / "b", 3, "P7", "Roe^Richard");
-  Archive archive = Archive::open(folder / "archive", OpenMode::CreateIfMissing);
+  Archive archive = Archive::open(testing::archive_at(folder / "archive"), OpenMode::CreateIfMissing);
   archive.import_paths({folder / "a"}, quiet());
   ImportReport report = archive.import_paths({folder / "b"}, quiet());
   EXPECT_EQ(report.imported, 3u);
@@ -149,7 +149,7 @@ TEST(ArchiveImport, EveryBadInputIsNamedWithItsReasonWhileTheRestImports) {
   std::vector<ImportProblem> seen;
   ImportOptions options = quiet();
   options.on_problem = [&](const ImportProblem& p) { seen.push_back(p); };
-  Archive archive = Archive::open(folder / "archive", OpenMode::CreateIfMissing);
+  Archive archive = Archive::open(testing::archive_at(folder / "archive"), OpenMode::CreateIfMissing);
   ImportReport report = archive.import_paths({folder / "in", folder / "missing-folder"}, options);
   EXPECT_EQ(report.imported, 3u);
   EXPECT_EQ(report.failed, 6u);
@@ -173,7 +173,7 @@ TEST(ArchiveImport, EveryBadInputIsNamedWithItsReasonWhileTheRestImports) {
 TEST(ArchiveImport, TruncationAnywhereInThePixelsOrHeaderIsDetected) {
   TemporaryFolder folder;
   auto spare = testing::write_series(folder / "spare", 1);
-  Archive archive = Archive::open(folder / "archive", OpenMode::CreateIfMissing);
+  Archive archive = Archive::open(testing::archive_at(folder / "archive"), OpenMode::CreateIfMissing);
   for (double fraction : {0.2, 0.5, 0.9, 0.999}) {
     auto path = folder / ("cut" + std::to_string(int(fraction * 1000)) + ".dcm");
     testing::write_truncated(spare.files[0], path, fraction);
@@ -188,29 +188,37 @@ TEST(ArchiveImport, ConcurrentImportersOfOverlappingSetsMakeNoErrorsAndNoDuplica
   testing::write_series(folder / "a", 40, "P1");
   testing::write_series(folder / "b", 40, "P2");
   testing::write_series(folder / "c", 40, "P3");
-  { Archive::open(folder / "archive", OpenMode::CreateIfMissing); }
-  ImportReport first, second;
-  std::thread one([&] {
-    Archive archive = Archive::open(folder / "archive", OpenMode::CreateIfMissing);
-    ImportOptions options = quiet();
-    options.batch_files = 7;
-    first = archive.import_paths({folder / "a", folder / "b"}, options);
-  });
-  std::thread two([&] {
-    Archive archive = Archive::open(folder / "archive", OpenMode::CreateIfMissing);
-    ImportOptions options = quiet();
-    options.batch_files = 5;
-    second = archive.import_paths({folder / "b", folder / "c"}, options);
-  });
-  one.join();
-  two.join();
-  EXPECT_TRUE(first.all_ok());
-  EXPECT_TRUE(second.all_ok());
-  EXPECT_EQ(first.imported + second.imported, 120u);
-  EXPECT_EQ(first.already_archived + second.already_archived, 40u);
-  Archive archive = Archive::open(folder / "archive", OpenMode::CreateIfMissing);
+  const auto address = testing::archive_at(folder / "archive");
+  { Archive::open(address, OpenMode::CreateIfMissing); }
+  // Four importers at once (each with its own connection, as separate processes or nodes
+  // would be), every series imported by three of them, in batches of different sizes.
+  const std::vector<std::vector<std::filesystem::path>> inputs = {{folder / "a", folder / "b"},
+                                                                  {folder / "b", folder / "c"},
+                                                                  {folder / "c", folder / "a"},
+                                                                  {folder / "a", folder / "b", folder / "c"}};
+  std::vector<ImportReport> reports(inputs.size());
+  std::vector<std::thread> importers;
+  for (size_t n = 0; n < inputs.size(); ++n)
+    importers.emplace_back([&, n] {
+      Archive archive = Archive::open(address, OpenMode::CreateIfMissing);
+      ImportOptions options = quiet();
+      options.batch_files = 5 + 2 * n;
+      reports[n] = archive.import_paths(inputs[n], options);
+    });
+  for (auto& importer : importers) importer.join();
+  size_t imported = 0, already = 0;
+  for (const auto& report : reports) {
+    EXPECT_TRUE(report.all_ok());
+    EXPECT_EQ(report.failed + report.conflicts, 0u);
+    imported += report.imported;
+    already += report.already_archived;
+  }
+  EXPECT_EQ(imported, 120u);  // each instance once
+  EXPECT_EQ(already, 240u);   // and recognised by the other two importers of its series
+  Archive archive = Archive::open(address);
   EXPECT_EQ(archive.patients().size(), 3u);
   EXPECT_EQ(archive.cases().size(), 3u);
+  EXPECT_EQ(archive.series().size(), 3u);
   int64_t instances = 0;
   for (const auto& s : archive.series()) instances += s.instance_count;
   EXPECT_EQ(instances, 120);

@@ -14,7 +14,7 @@ using testing::TemporaryFolder;
 Archive archive_with_series(const TemporaryFolder& folder, WrittenSeries* written = nullptr) {
   auto series = testing::write_series(folder / "in", 4);
   if (written) *written = series;
-  Archive archive = Archive::open(folder / "archive", OpenMode::CreateIfMissing);
+  Archive archive = Archive::open(testing::archive_at(folder / "archive"), OpenMode::CreateIfMissing);
   ImportOptions options;
   options.progress = ProgressDisplay::Never;
   archive.import_paths({folder / "in"}, options);
@@ -92,7 +92,7 @@ TEST(ArchiveVerify, RepairQuarantinesOrphansAndTemporariesAndDeletesNothing) {
   EXPECT_FALSE(std::filesystem::exists(temporary));
   EXPECT_TRUE(archive.verify(RepairMode::ReportOnly, ProgressDisplay::Never).consistent());
   // Set aside, not deleted: both files are in the quarantine until a purge.
-  auto quarantine = folder / "archive" / "objects" / "quarantine";
+  auto quarantine = testing::objects_of(folder / "archive") / "quarantine";
   size_t kept = 0;
   for (const auto& entry : std::filesystem::recursive_directory_iterator(quarantine)) kept += entry.is_regular_file();
   EXPECT_EQ(kept, 2u);

@@ -79,7 +79,7 @@ std::filesystem::path archive_with_every_kind_of_row(const TemporaryFolder& fold
 // An archive holding one series of `slices` slices of patient P1, written to folder/in.
 Archive imported_archive(const TemporaryFolder& folder, int slices) {
   testing::write_series(folder / "in", slices, "P1");
-  Archive archive = Archive::open(folder / "archive", OpenMode::CreateIfMissing);
+  Archive archive = Archive::open(testing::archive_at(folder / "archive"), OpenMode::CreateIfMissing);
   archive.import_paths({folder / "in"}, quiet());
   return archive;
 }
@@ -208,7 +208,7 @@ TEST(IndexLoss, AnArchiveFromBeforeTheJournalIsSnapshottedAtUpgradeAndRebuildsEx
   auto archive = archive_with_every_kind_of_row(folder);
   // Make it look like schema version 1: no journal, no index_state.
   std::filesystem::remove_all(archive / "objects" / "journal");
-  run_sql(index_of(archive), "DROP TABLE index_state; PRAGMA user_version = 1;");
+  run_sql(index_of(archive), "DROP TABLE index_state; DROP TABLE work_queue; PRAGMA user_version = 1;");
   { Archive upgraded = Archive::open(archive); }
   std::filesystem::copy_file(index_of(archive), folder / "upgraded.sqlite");
   std::filesystem::remove(index_of(archive));
@@ -253,8 +253,8 @@ TEST(Repair, ManyOrphansStopTheRepairUnlessForcedAndNothingIsEverDeleted) {
   TemporaryFolder folder;
   testing::write_series(folder / "in", 20, "P1");
   testing::write_series(folder / "lost", 12, "P2");
-  auto path = folder / "archive";
-  Archive archive = Archive::open(path, OpenMode::CreateIfMissing);
+  const auto objects = testing::objects_of(folder / "archive");
+  Archive archive = Archive::open(testing::archive_at(folder / "archive"), OpenMode::CreateIfMissing);
   archive.import_paths({folder / "in"}, quiet());
   // Twelve objects no row names (as a lost import would leave): 12 of 32 stored.
   for (const auto& file : std::filesystem::directory_iterator(folder / "lost")) {
@@ -263,31 +263,31 @@ TEST(Repair, ManyOrphansStopTheRepairUnlessForcedAndNothingIsEverDeleted) {
     std::filesystem::create_directories(target.parent_path());
     write_file_atomically(target, bytes);
   }
-  const size_t stored = files_below(path / "objects");
+  const size_t stored = files_below(objects);
   VerifyReport refused = archive.verify(RepairMode::Repair, ProgressDisplay::Never);
   EXPECT_EQ(refused.orphans.size(), 12u);
   EXPECT_NE(refused.repair_refused.find("12 of 32"), std::string::npos) << refused.repair_refused;
   EXPECT_EQ(refused.quarantined, 0u);
-  EXPECT_EQ(files_below(path / "objects"), stored);
+  EXPECT_EQ(files_below(objects), stored);
 
   VerifyReport forced = archive.verify(VerifyOptions{RepairMode::Repair, true, ProgressDisplay::Never});
   EXPECT_EQ(forced.quarantined, 12u);
-  EXPECT_EQ(files_below(path / "objects"), stored);  // moved, not deleted
-  EXPECT_EQ(files_below(path / "objects" / "quarantine"), 12u);
+  EXPECT_EQ(files_below(objects), stored);  // moved, not deleted
+  EXPECT_EQ(files_below(objects / "quarantine"), 12u);
   EXPECT_TRUE(archive.verify(RepairMode::ReportOnly, ProgressDisplay::Never).consistent());
 }
 
 TEST(Repair, AQuarantinedObjectThatARowNamesIsPutBack) {
   TemporaryFolder folder;
   testing::write_series(folder / "in", 30, "P1");
-  auto path = folder / "archive";
-  Archive archive = Archive::open(path, OpenMode::CreateIfMissing);
+  const auto objects = testing::objects_of(folder / "archive");
+  Archive archive = Archive::open(testing::archive_at(folder / "archive"), OpenMode::CreateIfMissing);
   archive.import_paths({folder / "in"}, quiet());
   auto victim = archive.series_instance_files(1)[3];
   auto original = read_file(victim);
   // The object went to quarantine (say, a repair while its row was not yet visible).
-  std::filesystem::create_directories(path / "objects" / "quarantine" / "x");
-  std::filesystem::rename(victim, path / "objects" / "quarantine" / "x" / sha256_hex(original));
+  std::filesystem::create_directories(objects / "quarantine" / "x");
+  std::filesystem::rename(victim, objects / "quarantine" / "x" / sha256_hex(original));
   VerifyReport report = archive.verify(RepairMode::Repair, ProgressDisplay::Never);
   EXPECT_EQ(report.restored.size(), 1u);
   EXPECT_TRUE(report.missing.empty());
@@ -326,7 +326,7 @@ TEST(Healing, ReimportRestoresAnObjectWhoseBytesChanged) {
 TEST(Healing, AWrongFileAlreadyAtAnObjectsNameIsNotTrusted) {
   TemporaryFolder folder;
   auto written = testing::write_series(folder / "in", 2, "P1");
-  Archive archive = Archive::open(folder / "archive", OpenMode::CreateIfMissing);
+  Archive archive = Archive::open(testing::archive_at(folder / "archive"), OpenMode::CreateIfMissing);
   auto bytes = read_file(written.files[0]);
   auto target = archive.object_path(sha256_hex(bytes));
   std::filesystem::create_directories(target.parent_path());
@@ -349,7 +349,7 @@ TEST(ImportBatch, TwoFilesWithOneSopUidInOneImportLeaveNoOrphanAndRaiseNoFlag) {
     std::filesystem::create_directories(folder / "in" / "b");
     write_file_atomically(folder / "in" / "b" / file.filename(), text);
   }
-  Archive archive = Archive::open(folder / "archive", OpenMode::CreateIfMissing);
+  Archive archive = Archive::open(testing::archive_at(folder / "archive"), OpenMode::CreateIfMissing);
   ImportReport report = archive.import_paths({folder / "in"}, quiet());
   EXPECT_EQ(report.imported, 2u);
   EXPECT_EQ(report.conflicts, 2u);

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 #include <sqlite3.h>
 
+#include <algorithm>
+
 #include "archive/archive.h"
 #include "core/resources.h"
 #include "support/temporary_folder.h"
@@ -30,10 +32,15 @@ void set_user_version(const std::filesystem::path& file, int version) {
 }
 
 TEST(ArchiveSchema, MigrationsAreEmbeddedAndNumberedFromOne) {
-  auto migrations = list_resources("db/");
+  std::vector<std::string> migrations;  // db/NNN_*.sql; dialect variants sit in db/postgresql/
+  for (const auto& path : list_resources("db/"))
+    if (path.find('/', 3) == std::string::npos) migrations.push_back(path);
   ASSERT_FALSE(migrations.empty());
   EXPECT_EQ(migrations.front(), "db/001_initial.sql");
   EXPECT_EQ(Archive::newest_schema_version(), int(migrations.size()));
+  // A dialect variant replaces a numbered migration, never adds one.
+  for (const auto& variant : list_resources("db/postgresql/"))
+    EXPECT_NE(std::find(migrations.begin(), migrations.end(), "db/" + variant.substr(14)), migrations.end()) << variant;
 }
 
 TEST(ArchiveSchema, EmptyFolderIsUpgradedToTheNewestVersionAndReopeningIsIdempotent) {

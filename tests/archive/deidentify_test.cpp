@@ -14,7 +14,7 @@ namespace {
 using testing::TemporaryFolder;
 
 Archive archive_of(const TemporaryFolder& folder, const std::string& name, const std::filesystem::path& input) {
-  Archive archive = Archive::open(folder / name, OpenMode::CreateIfMissing);
+  Archive archive = Archive::open(testing::archive_at(folder / name), OpenMode::CreateIfMissing);
   ImportOptions quiet;
   quiet.progress = ProgressDisplay::Never;
   archive.import_paths({input}, quiet);

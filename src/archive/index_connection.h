@@ -1,0 +1,159 @@
+#pragma once
+// A connection to an archive index, whichever engine holds it: the embedded SQLite file
+// (sqlite.h) or a PostgreSQL server (postgres.h). Private to the archive module.
+//
+// The archive's statements are written once, in the SQL both engines accept (archive_sql.h):
+// positional parameters ?1, ?2... (the PostgreSQL driver renumbers them $1, $2...), ON CONFLICT
+// instead of INSERT OR IGNORE, RETURNING id instead of a last-insert-rowid call, COALESCE and
+// CAST instead of engine functions. Where the engines truly differ (the schema's DDL, schema
+// version, integrity checks, store locks, claiming work) the connection answers for its engine.
+//
+//   db::Statement insert(connection, "INSERT INTO t(a) VALUES (?1) RETURNING id");
+//   insert.reset().bind(1, "x");
+//   if (insert.step()) id = insert.integer(0);
+//
+// Errors are maxillo::Error naming the index (file or server): kArchiveBusy for what a retry
+// of the whole transaction may cure (busy, serialization failure, deadlock, unique violation),
+// kIndexDamaged for a damaged index, kDatabase otherwise.
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace maxillo::db {
+
+enum class Engine { Sqlite, Postgres };
+enum class ColumnType { Integer, Real, Text, Null };
+// Immediate: the transaction takes the index's write lock at once (SQLite BEGIN IMMEDIATE,
+// a transaction-scoped advisory lock on PostgreSQL), so writers commit one after another in
+// the order of the journal counter (index_journal.h). Deferred: a reader's consistent view.
+enum class TransactionKind { Immediate, Deferred };
+
+// One prepared statement of an engine; used through db::Statement.
+class PreparedStatement {
+ public:
+  virtual ~PreparedStatement() = default;
+  virtual void reset() = 0;  // forgets results and bindings
+  virtual void bind_integer(int index, int64_t value) = 0;
+  virtual void bind_real(int index, double value) = 0;
+  virtual void bind_text(int index, std::string_view text) = 0;
+  virtual void bind_null(int index) = 0;
+  virtual bool step() = 0;  // the first call runs the statement
+  virtual int rows_changed() const = 0;  // by the last run of an INSERT, UPDATE or DELETE
+  virtual int column_count() const = 0;
+  virtual std::string column_name(int column) const = 0;
+  virtual ColumnType column_type(int column) const = 0;
+  virtual int64_t integer(int column) const = 0;
+  virtual double real(int column) const = 0;
+  virtual std::string text(int column) const = 0;
+};
+
+class Connection {
+ public:
+  virtual ~Connection() = default;
+  virtual Engine engine() const = 0;
+  // What error messages name: the index file, or the server without its password.
+  virtual const std::string& name() const = 0;
+  // Runs one or more statements without results (schema scripts).
+  virtual void execute(std::string_view sql) = 0;
+  virtual std::unique_ptr<PreparedStatement> prepare(std::string_view sql) = 0;
+  virtual void begin(TransactionKind kind) = 0;
+  virtual void commit() = 0;
+  virtual void rollback() noexcept = 0;
+  // The schema version the index records (0 for an empty index), and setting it inside the
+  // migration's transaction.
+  virtual int schema_version() = 0;
+  virtual void set_schema_version(int version) = 0;
+};
+
+// A prepared statement, reset and re-bound for each use.
+class Statement {
+ public:
+  Statement(Connection& connection, std::string_view sql) : prepared_(connection.prepare(sql)) {}
+
+  Statement& reset() {
+    prepared_->reset();
+    return *this;
+  }
+  // Parameters are 1-based.
+  Statement& bind(int index, int64_t value) {
+    prepared_->bind_integer(index, value);
+    return *this;
+  }
+  Statement& bind(int index, int value) { return bind(index, int64_t(value)); }
+  Statement& bind(int index, double value) {
+    prepared_->bind_real(index, value);
+    return *this;
+  }
+  Statement& bind(int index, std::string_view text) {
+    prepared_->bind_text(index, text);
+    return *this;
+  }
+  Statement& bind(int index, const std::string& text) { return bind(index, std::string_view(text)); }
+  Statement& bind(int index, const char* text) { return bind(index, std::string_view(text)); }
+  Statement& bind_null(int index) {
+    prepared_->bind_null(index);
+    return *this;
+  }
+  Statement& bind(int index, std::optional<double> value) { return value ? bind(index, *value) : bind_null(index); }
+  Statement& bind(int index, std::optional<int> value) { return value ? bind(index, *value) : bind_null(index); }
+
+  // Advances to the next row: true if there is one, false when done.
+  bool step() { return prepared_->step(); }
+  // Runs a statement to its end; returns the rows it inserted, updated or deleted.
+  int run() {
+    while (prepared_->step()) {
+    }
+    return prepared_->rows_changed();
+  }
+
+  int column_count() const { return prepared_->column_count(); }
+  std::string column_name(int column) const { return prepared_->column_name(column); }
+  ColumnType column_type(int column) const { return prepared_->column_type(column); }
+  int64_t integer(int column) const { return prepared_->integer(column); }
+  double real(int column) const { return prepared_->real(column); }
+  std::string text(int column) const { return prepared_->text(column); }
+  bool is_null(int column) const { return prepared_->column_type(column) == ColumnType::Null; }
+
+ private:
+  std::unique_ptr<PreparedStatement> prepared_;
+};
+
+// Rolls back in its destructor unless commit() was called, as in Orthanc's SQLite/Transaction.
+class Transaction {
+ public:
+  explicit Transaction(Connection& connection, TransactionKind kind = TransactionKind::Immediate)
+      : connection_(connection) {
+    connection_.begin(kind);
+  }
+  ~Transaction() {
+    if (open_) connection_.rollback();
+  }
+  Transaction(const Transaction&) = delete;
+  Transaction& operator=(const Transaction&) = delete;
+  void commit() {
+    connection_.commit();
+    open_ = false;
+  }
+
+ private:
+  Connection& connection_;
+  bool open_ = true;
+};
+
+// The first column of the first row, or `otherwise` when there is no row. Resets the query.
+int64_t single_integer(Statement& query, int64_t otherwise = 0);
+
+// Runs an INSERT ... RETURNING id: the new row's id, or nothing when no row was made (ON
+// CONFLICT DO NOTHING met an existing one). Resets the statement.
+std::optional<int64_t> inserted_id(Statement& insert);
+
+// Runs `body` (which opens and commits its own transaction) again when it fails with
+// kArchiveBusy: a serialization failure, deadlock or unique violation between concurrent
+// writers on PostgreSQL, a busy SQLite file. The whole transaction is retried, never a part,
+// as Orthanc's PostgreSQL plugin and dcm4chee do. `body` must start from scratch each time.
+void retry_transaction(const std::function<void()>& body);
+
+}  // namespace maxillo::db

@@ -1,0 +1,152 @@
+#include "pipeline/nightly_worker.h"
+
+#include <unistd.h>
+
+#include <atomic>
+#include <charconv>
+#include <condition_variable>
+#include <mutex>
+#include <thread>
+
+#include "core/error.h"
+#include "core/log.h"
+#include "pipeline/validation_archive.h"
+
+namespace maxillo::pipeline {
+namespace {
+
+int64_t unix_now() {
+  return std::chrono::duration_cast<std::chrono::seconds>(std::chrono::system_clock::now().time_since_epoch()).count();
+}
+
+std::string default_worker_name() {
+  char host[256] = {};
+  ::gethostname(host, sizeof host - 1);
+  return std::string(host) + ":" + std::to_string(::getpid());
+}
+
+// Renews a lease every third of its length, on a connection of its own, until destroyed.
+class LeaseHeartbeat {
+ public:
+  LeaseHeartbeat(const std::filesystem::path& address, std::string item, std::string holder, int64_t lease_seconds)
+      : thread_([this, address, item = std::move(item), holder = std::move(holder), lease_seconds] {
+          Archive archive = Archive::open(address);
+          const auto period = std::chrono::milliseconds(std::max<int64_t>(200, lease_seconds * 1000 / 3));
+          std::unique_lock lock(mutex_);
+          while (!stop_.wait_for(lock, period, [this] { return stopping_; }))
+            if (!archive.renew_work(kNightlyQueue, item, holder, unix_now() + lease_seconds))
+              log::warning("nightly: the lease of ", item, " was lost");
+        }) {}
+  ~LeaseHeartbeat() {
+    {
+      std::lock_guard lock(mutex_);
+      stopping_ = true;
+    }
+    stop_.notify_one();
+    thread_.join();
+  }
+
+ private:
+  std::mutex mutex_;
+  std::condition_variable stop_;
+  bool stopping_ = false;
+  std::thread thread_;
+};
+
+// The eligible cases without a validation of their current inputs, as work items.
+std::vector<std::string> work_to_offer(const Archive& archive, const ValidationOptions& options) {
+  std::vector<std::string> items;
+  for (const auto& c : archive.cases()) {
+    std::optional<std::string> key;
+    try {
+      key = validation_inputs_hash(archive, c.id, options);
+    } catch (const Error& e) {
+      if (e.code() != ErrorCode::kNotFound) log::error("case ", c.id, ": ", e.what());
+      continue;
+    }
+    if (key && !find_validation(archive, c.id, *key)) items.push_back(nightly_work_item(c.id, *key));
+  }
+  return items;
+}
+
+// Validates one claimed item and finishes it; returns what became of the case.
+NightlyCase work_on(Archive& archive, const std::string& item, const NightlyOptions& options, const std::string& holder) {
+  const auto parsed = parse_nightly_work_item(item);
+  NightlyCase result;
+  auto finish = [&](const char* state, const std::string& reason) {
+    if (!archive.finish_work(kNightlyQueue, item, holder, state, reason))
+      log::warning("nightly: ", item, " was taken over by another worker before it finished here");
+  };
+  if (!parsed) {
+    finish("failed", "not a nightly work item");
+    return result;
+  }
+  const auto& [case_id, key] = *parsed;
+  result.case_id = case_id;
+  try {
+    const auto current = validation_inputs_hash(archive, case_id, options.validation);
+    if (current != key) {
+      result.reason = "its inputs changed since it was offered";
+      finish("superseded", result.reason);
+      return result;
+    }
+    if (find_validation(archive, case_id, key)) {  // a worker that lost its lease stored it after all
+      result.outcome = NightlyOutcome::kUpToDate;
+      finish("done", "");
+      return result;
+    }
+    const auto started = std::chrono::steady_clock::now();
+    LeaseHeartbeat heartbeat(archive.address(), item, holder, options.lease_seconds);
+    const auto validation =
+        validate_case(archive, case_id, options.validation, options.out / ("case-" + std::to_string(case_id)));
+    store_validation(archive, validation);
+    result.outcome = NightlyOutcome::kValidated;
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    finish("done", "");
+  } catch (const std::exception& e) {
+    result.outcome = NightlyOutcome::kFailed;
+    result.reason = e.what();
+    log::error("case ", case_id, ": validation failed: ", result.reason);
+    finish("failed", result.reason);
+  }
+  return result;
+}
+
+}  // namespace
+
+std::string nightly_work_item(int64_t case_id, const std::string& inputs_hash) {
+  return "case:" + std::to_string(case_id) + ":" + inputs_hash;
+}
+
+std::optional<std::pair<int64_t, std::string>> parse_nightly_work_item(const std::string& item) {
+  if (!item.starts_with("case:")) return std::nullopt;
+  const auto colon = item.find(':', 5);
+  if (colon == std::string::npos) return std::nullopt;
+  int64_t id = 0;
+  auto [end, error] = std::from_chars(item.data() + 5, item.data() + colon, id);
+  if (error != std::errc() || end != item.data() + colon) return std::nullopt;
+  return std::make_pair(id, item.substr(colon + 1));
+}
+
+NightlyReport run_nightly_worker(Archive& archive, const NightlyOptions& options) {
+  std::filesystem::create_directories(options.out);
+  const std::string holder = options.worker.empty() ? default_worker_name() : options.worker;
+  archive.offer_work(kNightlyQueue, work_to_offer(archive, options.validation));
+  NightlyReport report;
+  for (;;) {
+    if (auto item = archive.claim_work(kNightlyQueue, holder, unix_now(), options.lease_seconds)) {
+      auto result = work_on(archive, *item, options, holder);
+      log::info("case ", result.case_id, ": ", to_string(result.outcome));
+      report.cases.push_back(std::move(result));
+      continue;
+    }
+    const auto counts = archive.work_counts(kNightlyQueue, unix_now());
+    if (counts.pending == 0 && counts.leased == 0) break;  // every item is finished
+    // Others hold leases: wait, in case one of them dies and its case comes free.
+    if (counts.pending == 0) std::this_thread::sleep_for(options.poll);
+  }
+  std::sort(report.cases.begin(), report.cases.end(), [](auto& a, auto& b) { return a.case_id < b.case_id; });
+  return report;
+}
+
+}  // namespace maxillo::pipeline

@@ -1,0 +1,165 @@
+// What only an archive on a PostgreSQL server has: its address, its schema table, nodes that
+// start at once, a database lost beside a shared object folder, and the store lock that other
+// nodes see. Tests that need the server skip without one (scripts/test-postgres starts it).
+#include <gtest/gtest.h>
+#include <libpq-fe.h>
+
+#include <atomic>
+#include <chrono>
+#include <thread>
+
+#include "archive/archive.h"
+#include "archive/postgres.h"
+#include "archive_fixture.h"
+
+namespace maxillo {
+namespace {
+
+using testing::TemporaryFolder;
+using testing::quiet;
+
+#define REQUIRE_SERVER() \
+  if (!testing::on_server()) GTEST_SKIP() << "no test PostgreSQL server (MAXILLO_TEST_POSTGRES)"
+
+std::string database_of(const std::filesystem::path& address) {
+  std::string text = address.string();
+  return text.substr(0, text.find('?'));
+}
+
+// A second client of the database, as another node or an administrator would be.
+class Client {
+ public:
+  explicit Client(const std::filesystem::path& address) : connection_(PQconnectdb(database_of(address).c_str())) {
+    EXPECT_EQ(PQstatus(connection_), CONNECTION_OK) << PQerrorMessage(connection_);
+  }
+  ~Client() { PQfinish(connection_); }
+  void run(const std::string& sql) {
+    PGresult* result = PQexec(connection_, sql.c_str());
+    EXPECT_TRUE(PQresultStatus(result) == PGRES_COMMAND_OK || PQresultStatus(result) == PGRES_TUPLES_OK)
+        << sql << ": " << PQerrorMessage(connection_);
+    PQclear(result);
+  }
+  std::string value(const std::string& sql) {
+    PGresult* result = PQexec(connection_, sql.c_str());
+    std::string text = PQntuples(result) > 0 ? PQgetvalue(result, 0, 0) : "";
+    PQclear(result);
+    return text;
+  }
+
+ private:
+  PGconn* connection_;
+};
+
+ErrorCode open_error(const std::filesystem::path& address, OpenMode mode = OpenMode::Existing) {
+  try {
+    Archive::open(address, mode);
+  } catch (const Error& e) {
+    return e.code();
+  }
+  return ErrorCode::kProcessing;
+}
+
+TEST(ServerArchive, AnUnreachableServerIsNamedInTheArchiveRange) {
+  TemporaryFolder folder;
+  const std::string address = "postgresql://maxillo:secret@127.0.0.1:1/archive?objects=" + folder.path().string();
+  try {
+    Archive::open(address);
+    FAIL() << "opened";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ErrorCode::kArchiveUnreachable);
+    EXPECT_EQ(exit_code_for(e.code()), 48);
+    EXPECT_NE(e.subject().find("127.0.0.1"), std::string::npos) << e.subject();
+    EXPECT_EQ(std::string(e.what()).find("secret"), std::string::npos);
+    EXPECT_EQ(e.subject().find("secret"), std::string::npos) << e.subject();
+  }
+}
+
+TEST(ServerArchive, AMissingSharedObjectFolderIsRefusedBeforeAnythingIsWritten) {
+  TemporaryFolder folder;
+  EXPECT_EQ(open_error("postgresql://h/db?objects=" + (folder / "absent").string(), OpenMode::CreateIfMissing),
+            ErrorCode::kBadArchiveAddress);
+  EXPECT_FALSE(std::filesystem::exists(folder / "absent"));
+}
+
+TEST(ServerArchive, ALostDatabaseBesideStoredObjectsIsRefusedAndNeverRecreatedEmpty) {
+  REQUIRE_SERVER();
+  TemporaryFolder folder;
+  testing::write_series(folder / "in", 3);
+  {
+    Archive archive = Archive::open(testing::archive_at(folder / "objects"), OpenMode::CreateIfMissing);
+    archive.import_paths({folder / "in"}, quiet());
+  }
+  // The index is lost: the same shared folder, an empty database.
+  const std::string lost = testing::new_test_database() + "?objects=" + (folder / "objects").string();
+  EXPECT_EQ(open_error(lost, OpenMode::CreateIfMissing), ErrorCode::kIndexDamaged);
+  Client client(lost);
+  EXPECT_EQ(client.value("SELECT COUNT(*) FROM pg_tables WHERE schemaname = 'public'"), "0");
+}
+
+TEST(ServerArchive, NodesStartingAtOnceMigrateOnceAndAllWork) {
+  REQUIRE_SERVER();
+  TemporaryFolder folder;
+  const auto address = testing::archive_at(folder / "objects");
+  std::atomic<int> opened = 0;
+  std::vector<std::thread> nodes;
+  for (int node = 0; node < 4; ++node)
+    nodes.emplace_back([&] {
+      Archive archive = Archive::open(address, OpenMode::CreateIfMissing);
+      if (archive.schema_version() == Archive::newest_schema_version()) ++opened;
+    });
+  for (auto& node : nodes) node.join();
+  EXPECT_EQ(opened, 4);
+  Client client(address);
+  EXPECT_EQ(client.value("SELECT version FROM maxillo_schema"), std::to_string(Archive::newest_schema_version()));
+  EXPECT_EQ(client.value("SELECT COUNT(*) FROM maxillo_schema"), "1");
+}
+
+TEST(ServerArchive, ASchemaNewerThanTheProgramIsRefused) {
+  REQUIRE_SERVER();
+  TemporaryFolder folder;
+  const auto address = testing::archive_at(folder / "objects");
+  { Archive::open(address, OpenMode::CreateIfMissing); }
+  Client(address).run("UPDATE maxillo_schema SET version = " + std::to_string(Archive::newest_schema_version() + 1));
+  EXPECT_EQ(open_error(address), ErrorCode::kSchemaTooNew);
+}
+
+TEST(ServerArchive, RowsEditedBehindTheArchivesBackAreFoundByVerifyAndRepairRefuses) {
+  REQUIRE_SERVER();
+  TemporaryFolder folder;
+  testing::write_series(folder / "in", 3);
+  const auto address = testing::archive_at(folder / "objects");
+  Archive archive = Archive::open(address, OpenMode::CreateIfMissing);
+  archive.import_paths({folder / "in"}, quiet());
+  ASSERT_TRUE(archive.verify(RepairMode::ReportOnly, ProgressDisplay::Never).consistent());
+  Client(address).run("UPDATE patients SET name = 'Edited^Behind'");
+  VerifyReport report = archive.verify(RepairMode::Repair, ProgressDisplay::Never);
+  ASSERT_FALSE(report.journal_differences.empty());
+  EXPECT_NE(report.journal_differences[0].find("patients"), std::string::npos) << report.journal_differences[0];
+  EXPECT_FALSE(report.repair_refused.empty());
+}
+
+TEST(ServerArchive, RepairWaitsForAnImporterOnAnotherNode) {
+  REQUIRE_SERVER();
+  TemporaryFolder folder;
+  testing::write_series(folder / "in", 2);
+  const auto address = testing::archive_at(folder / "objects");
+  Archive archive = Archive::open(address, OpenMode::CreateIfMissing);
+  archive.import_paths({folder / "in"}, quiet());
+  // Another node between writing an object and committing its row holds the store lock shared.
+  Client importer(address);
+  importer.run("SELECT pg_advisory_lock_shared(" + std::to_string(postgres::kStoreLockKey) + ")");
+  std::atomic<bool> repaired = false;
+  std::thread repair([&] {
+    Archive own = Archive::open(address);
+    own.verify(RepairMode::Repair, ProgressDisplay::Never);
+    repaired = true;
+  });
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  EXPECT_FALSE(repaired) << "repair ran while another node was importing";
+  importer.run("SELECT pg_advisory_unlock_shared(" + std::to_string(postgres::kStoreLockKey) + ")");
+  repair.join();
+  EXPECT_TRUE(repaired);
+}
+
+}  // namespace
+}  // namespace maxillo
