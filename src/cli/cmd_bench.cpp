@@ -145,6 +145,7 @@ void attach_bench_face(CLI::App& bench, CommandContext& ctx);       // cmd_bench
 void attach_bench_register(CLI::App& bench, CommandContext& ctx);   // cmd_bench_register.cpp
 void attach_bench_surfaces(CLI::App& bench, CommandContext& ctx);   // cmd_bench_surfaces.cpp
 void attach_bench_claim(CLI::App& bench, CommandContext& ctx);      // cmd_bench_claim.cpp
+void attach_bench_index(CLI::App& bench, CommandContext& ctx);      // cmd_bench_index.cpp
 
 void attach_bench(CLI::App& app, CommandContext& ctx) {
   app.require_subcommand(1);
@@ -165,6 +166,7 @@ void attach_bench(CLI::App& app, CommandContext& ctx) {
   attach_bench_register(app, ctx);
   attach_bench_surfaces(app, ctx);
   attach_bench_claim(app, ctx);
+  attach_bench_index(app, ctx);
 }
 
 }  // namespace maxillo::cli

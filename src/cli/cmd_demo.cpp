@@ -1,7 +1,10 @@
 // maxillo demo: the whole pipeline on the synthetic phantom, from nothing to a PDF report.
+#include <unistd.h>
+
 #include <chrono>
 #include <iostream>
 
+#include "archive/archive_location.h"
 #include "cli/command.h"
 #include "core/error.h"
 #include "core/json.h"
@@ -69,7 +72,12 @@ std::vector<std::filesystem::path> files_in(const std::filesystem::path& folder)
 // pushing the report to the PACS). Throws unless every file was sent and archived.
 net::StorageServerCounts push_over_dicom(const std::vector<std::filesystem::path>& files, const std::string& sender,
                                           const std::string& receiver, const std::filesystem::path& archive_dir) {
-  net::StorageServerOptions server{.archive = archive_dir, .ae_title = receiver, .allowed = {{sender, "127.0.0.1"}}};
+  // An archive on a PostgreSQL server has no folder of this machine's to receive into.
+  const auto spool = names_index_server(archive_dir.string())
+                         ? std::filesystem::temp_directory_path() / ("maxillo-demo-" + std::to_string(::getpid()) + "-" + receiver)
+                         : std::filesystem::path();
+  net::StorageServerOptions server{
+      .archive = archive_dir, .spool = spool, .ae_title = receiver, .allowed = {{sender, "127.0.0.1"}}};
   const auto counts = net::with_loopback_server(server, [&](const net::DicomPeer& peer) {
     const auto sent = net::send_files(peer, files, {.calling_ae = sender, .progress = ProgressDisplay::Never});
     if (!sent.failures.empty())

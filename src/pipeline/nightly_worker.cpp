@@ -30,13 +30,22 @@ class LeaseHeartbeat {
  public:
   LeaseHeartbeat(const std::filesystem::path& address, std::string item, std::string holder, int64_t lease_seconds)
       : thread_([this, address, item = std::move(item), holder = std::move(holder), lease_seconds] {
-          Archive archive = Archive::open(address);
-          const auto period = std::chrono::milliseconds(std::max<int64_t>(200, lease_seconds * 1000 / 3));
-          std::unique_lock lock(mutex_);
-          while (!stop_.wait_for(lock, period, [this] { return stopping_; }))
-            if (!archive.renew_work(kNightlyQueue, item, holder, unix_now() + lease_seconds))
-              log::warning("nightly: the lease of ", item, " was lost");
+          try {
+            renew_until_stopped(address, item, holder, lease_seconds);
+          } catch (const std::exception& e) {  // the case goes on; at worst its lease ends and it is redone
+            log::warning("nightly: cannot renew the lease of ", item, ": ", e.what());
+          }
         }) {}
+  void renew_until_stopped(const std::filesystem::path& address, const std::string& item, const std::string& holder,
+                           int64_t lease_seconds) {
+    Archive archive = Archive::open(address);
+    const auto period = std::chrono::milliseconds(std::max<int64_t>(200, lease_seconds * 1000 / 3));
+    std::unique_lock lock(mutex_);
+    while (!stop_.wait_for(lock, period, [this] { return stopping_; }))
+      if (!archive.renew_work(kNightlyQueue, item, holder, unix_now() + lease_seconds))
+        log::warning("nightly: the lease of ", item, " was lost");
+  }
+
   ~LeaseHeartbeat() {
     {
       std::lock_guard lock(mutex_);
@@ -99,6 +108,13 @@ NightlyCase work_on(Archive& archive, const std::string& item, const NightlyOpti
     LeaseHeartbeat heartbeat(archive.address(), item, holder, options.lease_seconds);
     const auto validation =
         validate_case(archive, case_id, options.validation, options.out / ("case-" + std::to_string(case_id)));
+    // A worker that stalled past its lease may have lost the case to another one, which then
+    // stores the validation: store it only while the lease is still ours.
+    if (!archive.renew_work(kNightlyQueue, item, holder, unix_now() + options.lease_seconds)) {
+      result.reason = "its lease went to another worker while it ran; that worker stores the validation";
+      log::warning("case ", case_id, ": ", result.reason);
+      return result;
+    }
     store_validation(archive, validation);
     result.outcome = NightlyOutcome::kValidated;
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

@@ -1,10 +1,14 @@
 // The nightly run over the archive: one case's failure, of any kind, never stops the others.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <thread>
+
 #include "archive_fixture.h"
 #include "pipeline/case_landmarks.h"
 #include "pipeline/case_validation.h"
 #include "pipeline/nightly.h"
+#include "pipeline/nightly_worker.h"
 #include "pipeline/plan_archive.h"
 
 namespace maxillo::pipeline {
@@ -51,6 +55,56 @@ TEST(Nightly, ACaseWhoseStoredRecordIsUnreadableFailsAloneWithItsReason) {
   EXPECT_FALSE(report.cases[0].reason.empty());
   EXPECT_EQ(report.cases[1].case_id, sound);
   EXPECT_EQ(report.cases[1].outcome, NightlyOutcome::kNotValidated);
+}
+
+TEST(NightlyWorkers, WorkItemsNameTheCaseAndItsInputsAndParseBack) {
+  EXPECT_EQ(nightly_work_item(12, "abc"), "case:12:abc");
+  EXPECT_EQ(parse_nightly_work_item("case:12:abc"), std::make_pair(int64_t(12), std::string("abc")));
+  EXPECT_EQ(parse_nightly_work_item("case:x:abc"), std::nullopt);
+  EXPECT_EQ(parse_nightly_work_item("study:12:abc"), std::nullopt);
+}
+
+// Two workers at once share three eligible cases through the work queue. These tiny cases
+// cannot be validated (16 x 16 x 3 voxels): each is claimed once, fails once with its reason,
+// and is not claimed again, by these workers or by a later one.
+TEST(NightlyWorkers, WorkersShareTheCasesAndEachIsFinishedOnce) {
+  TemporaryFolder folder;
+  const auto address = testing::archive_at(folder / "archive");
+  {
+    Archive archive = Archive::open(address, OpenMode::CreateIfMissing);
+    for (const char* patient : {"P1", "P2", "P3"}) eligible_case(archive, folder, patient);
+  }
+  NightlyOptions options;
+  options.out = folder / "nightly";
+  options.claim = true;
+  options.lease_seconds = 60;
+  options.poll = std::chrono::milliseconds(50);
+  std::vector<NightlyReport> reports(2);
+  std::vector<std::thread> workers;
+  for (size_t w = 0; w < reports.size(); ++w)
+    workers.emplace_back([&, w] {
+      Archive archive = Archive::open(address);
+      NightlyOptions mine = options;
+      mine.worker = "worker-" + std::to_string(w);
+      reports[w] = run_nightly(archive, mine);
+    });
+  for (auto& worker : workers) worker.join();
+  std::vector<int64_t> seen;
+  for (const auto& report : reports)
+    for (const auto& c : report.cases) {
+      seen.push_back(c.case_id);
+      EXPECT_EQ(c.outcome, NightlyOutcome::kFailed);
+      EXPECT_FALSE(c.reason.empty());
+    }
+  std::sort(seen.begin(), seen.end());
+  EXPECT_EQ(seen, (std::vector<int64_t>{1, 2, 3}));  // every case once, by one worker or the other
+  Archive archive = Archive::open(address);
+  for (const auto& record : archive.work_records(kNightlyQueue)) {
+    EXPECT_EQ(record.state, "failed") << record.item;
+    EXPECT_EQ(record.claims, 1) << record.item;
+  }
+  options.worker = "later";
+  EXPECT_TRUE(run_nightly(archive, options).cases.empty());  // failed cases wait for new inputs
 }
 
 }  // namespace
