@@ -154,7 +154,9 @@ class Archive {
   // re-parsed DICOM object, and DICOM objects no entry names (archives older than the journal,
   // a lost journal entry) are indexed anew from their own headers. The old index, if any, is
   // kept as index.sqlite.damaged-<time> (or .replaced-<time> with force), never deleted.
-  // Refuses (Error kConflict) an intact index unless options.force.
+  // Refuses (Error kConflict) an intact index unless options.force. A server archive's index
+  // is rebuilt the same way into the new, empty database its address names (never over a
+  // database that holds an index, forced or not).
   static RebuildReport rebuild_index(const std::filesystem::path& folder, const RebuildOptions& options = {});
 
   // Copies the embedded archive in `source` into the archive at `target` (typically a

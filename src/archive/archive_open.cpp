@@ -185,7 +185,8 @@ std::unique_ptr<Archive::State> open_on_server(const ArchiveLocation& location, 
     if (holds_any_file(location.objects_folder()))
       throw Error(ErrorCode::kIndexDamaged, location.shown,
                   "the index database is empty but the shared object folder holds archived data; it is never "
-                  "re-created empty over them (move the folder aside or restore the database)");
+                  "re-created empty over them: rebuild it from the folder with `maxillo --archive ADDRESS archive "
+                  "rebuild-index` (or restore the database from its backup)");
     if (mode == OpenMode::Existing)
       throw Error(ErrorCode::kNotFound, location.shown, "no archive in this database yet (`maxillo import` creates one)");
   }

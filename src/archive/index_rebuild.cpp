@@ -35,7 +35,7 @@ bool index_is_intact(const std::filesystem::path& folder, const IndexJournal& jo
   }
 }
 
-void restore_named_objects(sqlite::Database& db, ObjectStore& objects, RebuildReport& report) {
+void restore_named_objects(db::Connection& db, ObjectStore& objects, RebuildReport& report) {
   db::Statement query(db, "SELECT sha256 FROM objects");
   while (query.step()) {
     auto sha = query.text(0);
@@ -46,7 +46,7 @@ void restore_named_objects(sqlite::Database& db, ObjectStore& objects, RebuildRe
 
 // Every instance row against its object: the journal says what the index said, the object is
 // the data, and they must agree.
-void check_instances(sqlite::Database& db, const ObjectStore& objects, ProgressDisplay display, RebuildReport& report) {
+void check_instances(db::Connection& db, const ObjectStore& objects, ProgressDisplay display, RebuildReport& report) {
   db::Statement count(db, "SELECT COUNT(*) FROM instances");
   count.step();
   Progress progress("check instances", size_t(count.integer(0)), display);
@@ -75,7 +75,7 @@ void check_instances(sqlite::Database& db, const ObjectStore& objects, ProgressD
 
 // DICOM objects that no journal entry named are indexed from their own headers, through the
 // import's own writer (so they are journalled like any import); other unnamed files are listed.
-void adopt_unindexed_objects(sqlite::Database& db, ObjectStore& objects, const IndexJournal& journal,
+void adopt_unindexed_objects(db::Connection& db, ObjectStore& objects, const IndexJournal& journal,
                              RebuildReport& report) {
   std::vector<std::filesystem::path> candidates;
   {
@@ -114,7 +114,7 @@ void adopt_unindexed_objects(sqlite::Database& db, ObjectStore& objects, const I
   }
 }
 
-void count_rows(sqlite::Database& db, RebuildReport& report) {
+void count_rows(db::Connection& db, RebuildReport& report) {
   for (const auto& table : index_tables()) {
     db::Statement count(db, "SELECT COUNT(*) FROM " + table);
     count.step();
@@ -138,14 +138,49 @@ void install(const std::filesystem::path& folder, const std::filesystem::path& r
   sync_folder(folder);
 }
 
+// The index from the store: the journal replayed, instances checked against their objects,
+// DICOM objects no entry names indexed from their headers, rows counted.
+void rebuild_into(db::Connection& db, ObjectStore& objects, const IndexJournal& journal, ProgressDisplay display,
+                  RebuildReport& report) {
+  upgrade_schema(db, journal);
+  auto outcome = replay_journal(db, journal);
+  report.journal_entries = outcome.entries;
+  report.journal_problems = std::move(outcome.problems);
+  restore_named_objects(db, objects, report);
+  check_instances(db, objects, display, report);
+  adopt_unindexed_objects(db, objects, journal, report);
+  count_rows(db, report);
+}
+
+// A server archive whose database was lost: rebuilt into a new, empty database (made by the
+// administrator, as the address names it) from the shared object folder. A database that
+// holds an index is never written over.
+RebuildReport rebuild_on_server(const ArchiveLocation& location, const RebuildOptions& options) {
+  if (!std::filesystem::is_directory(location.objects_folder()))
+    throw Error(ErrorCode::kBadArchiveAddress, location.shown,
+                "the shared object folder " + location.folder.string() + " does not exist");
+  Archive::State state(location, connect_index(location, sqlite::OpenKind::Existing));
+  StoreLock lock(state, LockKind::Exclusive);
+  if (state.db.schema_version() != 0)
+    throw Error(ErrorCode::kConflict, location.shown,
+                "this database holds an index; a server archive's index is rebuilt into a new, empty database "
+                "(CREATE DATABASE, then point the address at it); the one here is left as it is");
+  RebuildReport report;
+  rebuild_into(state.db, state.objects, state.journal, options.progress, report);
+  state.objects.make_durable();
+  return report;
+}
+
 }  // namespace
 
 RebuildReport Archive::rebuild_index(const std::filesystem::path& folder, const RebuildOptions& options) {
   initialise_dicom_toolkit();
-  if (names_index_server(folder.string()))
-    throw Error(ErrorCode::kUsage, parse_archive_location(folder.string()).shown,
-                "rebuild-index rebuilds an embedded archive's index file; a server archive's index is restored from "
-                "the database's backup");
+  if (names_index_server(folder.string())) {
+    auto report = rebuild_on_server(parse_archive_location(folder.string()), options);
+    log::info("index rebuilt on the server from ", report.journal_entries, " journal entries and ",
+              report.dicom_adopted, " DICOM objects no entry named");
+    return report;
+  }
   if (!std::filesystem::is_directory(objects_folder(folder)))
     throw Error(ErrorCode::kNotFound, folder.string(), "no object store (objects/) to rebuild an index from");
   StoreLock lock(folder, LockKind::Exclusive);
@@ -162,14 +197,7 @@ RebuildReport Archive::rebuild_index(const std::filesystem::path& folder, const 
     ObjectStore objects(objects_folder(folder));
     sqlite::Database db(rebuilt, sqlite::OpenKind::Create);
     configure_connection(db);
-    upgrade_schema(db, journal);
-    auto outcome = replay_journal(db, journal);
-    report.journal_entries = outcome.entries;
-    report.journal_problems = std::move(outcome.problems);
-    restore_named_objects(db, objects, report);
-    check_instances(db, objects, options.progress, report);
-    adopt_unindexed_objects(db, objects, journal, report);
-    count_rows(db, report);
+    rebuild_into(db, objects, journal, options.progress, report);
     require_intact_index(db);
     db.execute("PRAGMA journal_mode = DELETE");  // folds the WAL into the file before it moves
     objects.make_durable();

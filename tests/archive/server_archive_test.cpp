@@ -96,6 +96,43 @@ TEST(ServerArchive, ALostDatabaseBesideStoredObjectsIsRefusedAndNeverRecreatedEm
   EXPECT_EQ(client.value("SELECT COUNT(*) FROM pg_tables WHERE schemaname = 'public'"), "0");
 }
 
+TEST(ServerArchive, ALostDatabaseIsRebuiltFromTheSharedFolderRowForRow) {
+  REQUIRE_SERVER();
+  TemporaryFolder folder;
+  testing::write_series(folder / "a", 4, "P1", "Doe^Jane");
+  testing::write_series(folder / "b", 3, "P1", "Roe^Richard");
+  const auto shared = folder / "objects";
+  const auto original = testing::archive_at(shared);
+  {
+    Archive archive = Archive::open(original, OpenMode::CreateIfMissing);
+    archive.import_paths({folder / "a", folder / "b"}, quiet());
+    archive.set_series_role(1, 2, "postop");
+    NewArtefact artefact{archive.ensure_case("C-1", "cohort"), "report", archive.store_object("a report"),
+                         "application/pdf", "inputs", R"({"pages": 2})"};
+    archive.add_artefact(artefact);
+  }
+  // The database is lost; the administrator makes a new, empty one for the same folder.
+  const std::string replacement = testing::new_test_database() + "?objects=" + shared.string();
+  RebuildReport report = Archive::rebuild_index(replacement, RebuildOptions{false, ProgressDisplay::Never});
+  EXPECT_TRUE(report.journal_problems.empty());
+  EXPECT_TRUE(report.disagreements.empty());
+  EXPECT_EQ(report.instances_checked, 7u);
+  EXPECT_EQ(report.rows.at("identity_flags"), 1);
+  Archive rebuilt = Archive::open(replacement);
+  Archive before = Archive::open(original);
+  EXPECT_EQ(rebuilt.patients().size(), before.patients().size());
+  EXPECT_EQ(rebuilt.case_contents(1).series[1].role, before.case_contents(1).series[1].role);
+  EXPECT_EQ(rebuilt.artefacts(2).size(), 1u);
+  EXPECT_TRUE(rebuilt.verify(RepairMode::ReportOnly, ProgressDisplay::Never).consistent());
+  // A database that holds an index is never rebuilt over, forced or not.
+  try {
+    Archive::rebuild_index(replacement, RebuildOptions{true, ProgressDisplay::Never});
+    FAIL() << "rebuilt over an index";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ErrorCode::kConflict);
+  }
+}
+
 TEST(ServerArchive, NodesStartingAtOnceMigrateOnceAndAllWork) {
   REQUIRE_SERVER();
   TemporaryFolder folder;
