@@ -77,7 +77,13 @@ struct VerifyOptions {
   // Quarantine orphans even when they are more than a small share of the store (see verify).
   bool force = false;
   ProgressDisplay progress = ProgressDisplay::Auto;
+  // Orphans and temporaries younger than this are reported but left in place by Repair: on
+  // shared storage a file another node is writing may be seen before its row. Negative: the
+  // archive's default, kServerOrphanGraceSeconds on a server archive, 0 on an embedded one
+  // (the store lock is all an embedded archive needs).
+  int64_t grace_seconds = -1;
 };
+inline constexpr int64_t kServerOrphanGraceSeconds = 600;
 
 struct VerifyReport {
   std::string index_check = "ok";                // SQLite integrity_check's first finding
@@ -90,6 +96,7 @@ struct VerifyReport {
   std::vector<std::filesystem::path> orphans;       // object files no row names
   std::vector<std::filesystem::path> temporaries;   // leftovers of interrupted writes
   size_t quarantined = 0;                    // orphans + temporaries moved into quarantine by Repair
+  size_t within_grace = 0;                   // orphans + temporaries Repair left: younger than the grace period
   std::vector<std::string> restored;         // missing objects Repair found in quarantine and put back
   std::string repair_refused;                // why Repair changed nothing, when it refused
   bool index_intact() const { return index_check == "ok" && journal_differences.empty(); }

@@ -130,6 +130,7 @@ Json to_json(const VerifyReport& r) {
           {"orphans", paths(r.orphans)},
           {"temporaries", paths(r.temporaries)},
           {"quarantined", r.quarantined},
+          {"within_grace", r.within_grace},
           {"restored", strings(r.restored)},
           {"repair_refused", r.repair_refused.empty() ? Json(nullptr) : Json(r.repair_refused)}};
 }

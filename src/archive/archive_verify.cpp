@@ -3,6 +3,7 @@
 // quarantines orphans and temporaries and refuses when what it sees means a lost index.
 #include <unistd.h>
 
+#include <chrono>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -139,11 +140,25 @@ std::string reason_to_refuse(const VerifyReport& report, bool force) {
   return {};
 }
 
+bool younger_than(const std::filesystem::path& path, int64_t seconds) {
+  if (seconds <= 0) return false;
+  std::error_code error;
+  const auto written = std::filesystem::last_write_time(path, error);
+  if (error) return false;
+  return std::filesystem::file_time_type::clock::now() - written < std::chrono::seconds(seconds);
+}
+
 void repair(Archive::State& state, const VerifyOptions& options, VerifyReport& report) {
   report.repair_refused = reason_to_refuse(report, options.force);
   if (!report.repair_refused.empty()) return;
+  const int64_t grace =
+      options.grace_seconds >= 0 ? options.grace_seconds : state.location.embedded() ? 0 : kServerOrphanGraceSeconds;
   for (const auto* paths : {&report.orphans, &report.temporaries})
     for (const auto& path : *paths) {
+      if (younger_than(path, grace)) {
+        ++report.within_grace;
+        continue;
+      }
       state.objects.set_aside(path);
       ++report.quarantined;
     }

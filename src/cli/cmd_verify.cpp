@@ -15,6 +15,7 @@ struct VerifyArguments {
   bool repair = false;
   bool force = false;
   bool purge = false;
+  int64_t grace_seconds = -1;  // the archive's default
 };
 
 void print_objects(const Archive& archive, const VerifyReport& report, bool repair) {
@@ -46,6 +47,8 @@ void print_report(const Archive& archive, const VerifyReport& report, bool repai
             << " objects checked: " << report.missing.size() << " missing, " << report.corrupt.size() << " corrupt, "
             << report.orphans.size() << " orphans, " << report.temporaries.size() << " temporary files";
   if (repair) std::cout << "; " << report.quarantined << " quarantined, " << report.restored.size() << " restored";
+  if (repair && report.within_grace > 0)
+    std::cout << "; " << report.within_grace << " left in place, younger than the grace period (--grace)";
   std::cout << (ok ? " - consistent\n" : " - INCONSISTENT\n");
   if (!repair && (!report.orphans.empty() || !report.temporaries.empty()))
     std::cout << "`maxillo verify --repair` moves orphans and temporary files into the quarantine (nothing is deleted)\n";
@@ -60,7 +63,7 @@ void run_verify(const VerifyArguments& args, CommandContext& ctx) {
     return;
   }
   VerifyOptions options{args.repair ? RepairMode::Repair : RepairMode::ReportOnly, args.force,
-                        ctx.global.quiet ? ProgressDisplay::Never : ProgressDisplay::Auto};
+                        ctx.global.quiet ? ProgressDisplay::Never : ProgressDisplay::Auto, args.grace_seconds};
   VerifyReport report = archive.verify(options);
   const bool ok = (args.repair ? report.data_intact() : report.consistent()) && report.repair_refused.empty();
   if (ctx.global.json) {
@@ -82,6 +85,10 @@ void attach_verify(CLI::App& app, CommandContext& ctx) {
                "move orphan objects and temporary files into the quarantine, put back quarantined objects the "
                "index names (nothing is ever deleted)");
   app.add_flag("--force", args->force, "with --repair: quarantine orphans even when they are many");
+  app.add_option("--grace", args->grace_seconds,
+                 "with --repair: leave orphans and temporary files younger than this many seconds (default: 600 on "
+                 "an archive on a PostgreSQL server, whose shared folder other nodes write, 0 on an embedded one)")
+      ->check(CLI::Range(int64_t(0), int64_t(86400 * 30)));
   app.add_flag("--purge", args->purge, "delete the quarantine (what earlier repairs set aside)")->excludes("--repair");
   app.callback([args, &ctx] {
     if (args->force && !args->repair) throw CLI::ValidationError("--force", "only with --repair");

@@ -270,7 +270,7 @@ TEST(Repair, ManyOrphansStopTheRepairUnlessForcedAndNothingIsEverDeleted) {
   EXPECT_EQ(refused.quarantined, 0u);
   EXPECT_EQ(files_below(objects), stored);
 
-  VerifyReport forced = archive.verify(VerifyOptions{RepairMode::Repair, true, ProgressDisplay::Never});
+  VerifyReport forced = archive.verify(VerifyOptions{RepairMode::Repair, true, ProgressDisplay::Never, 0});
   EXPECT_EQ(forced.quarantined, 12u);
   EXPECT_EQ(files_below(objects), stored);  // moved, not deleted
   EXPECT_EQ(files_below(objects / "quarantine"), 12u);

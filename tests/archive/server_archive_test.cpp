@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <fstream>
 #include <thread>
 
 #include "archive/archive.h"
@@ -173,6 +174,27 @@ TEST(ServerArchive, RowsEditedBehindTheArchivesBackAreFoundByVerifyAndRepairRefu
   ASSERT_FALSE(report.journal_differences.empty());
   EXPECT_NE(report.journal_differences[0].find("patients"), std::string::npos) << report.journal_differences[0];
   EXPECT_FALSE(report.repair_refused.empty());
+}
+
+TEST(ServerArchive, RepairLeavesStraysYoungerThanTheGracePeriod) {
+  REQUIRE_SERVER();
+  TemporaryFolder folder;
+  testing::write_series(folder / "in", 2);
+  Archive archive = Archive::open(testing::archive_at(folder / "objects"), OpenMode::CreateIfMissing);
+  archive.import_paths({folder / "in"}, quiet());
+  // An object another node has just written and not yet committed a row for.
+  const auto stray = archive.object_path(std::string(64, 'a'));
+  std::filesystem::create_directories(stray.parent_path());
+  std::ofstream(stray) << "being imported elsewhere";
+  VerifyReport waited = archive.verify(RepairMode::Repair, ProgressDisplay::Never);
+  EXPECT_EQ(waited.orphans.size(), 1u);
+  EXPECT_EQ(waited.within_grace, 1u);
+  EXPECT_EQ(waited.quarantined, 0u);
+  EXPECT_TRUE(std::filesystem::exists(stray));
+  // Once older than the grace period (here: none), it is set aside.
+  VerifyReport repaired = archive.verify(VerifyOptions{RepairMode::Repair, false, ProgressDisplay::Never, 0});
+  EXPECT_EQ(repaired.quarantined, 1u);
+  EXPECT_FALSE(std::filesystem::exists(stray));
 }
 
 TEST(ServerArchive, RepairWaitsForAnImporterOnAnotherNode) {
