@@ -208,6 +208,11 @@ class Archive {
 
   // Stored object files of a series, ordered by instance number (the volume loader reads them).
   std::vector<std::filesystem::path> series_instance_files(int64_t series) const;
+  // Their sha256 names, in the same order, read from the index alone (what a series' content
+  // hash is made of; the nightly scan computes it for every case).
+  std::vector<std::string> series_object_hashes(int64_t series) const;
+  // The same for several series in one query: series id -> hashes.
+  std::map<int64_t, std::vector<std::string>> series_object_hashes(const std::vector<int64_t>& series) const;
 
   // --- cases ---
   std::optional<CaseRecord> case_of_patient(int64_t patient, std::string_view label = "default") const;

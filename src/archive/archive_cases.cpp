@@ -42,25 +42,11 @@ int64_t Archive::resolve_case(std::string_view text) const {
 
 CaseContents Archive::case_contents(int64_t case_id) const {
   CaseContents contents;
-  {
-    db::Statement query(state_->db, std::string(sql::kCases) + " WHERE id = ?1");
-    query.bind(1, case_id);
-    if (!query.step()) throw Error(ErrorCode::kNotFound, std::to_string(case_id), "no such case");
-    contents.record = {query.integer(0), query.integer(1), query.text(2), query.text(3)};
-  }
-  contents.patient = patient(contents.record.patient).value();
-  db::Statement members(state_->db, sql::kCaseSeries);
-  members.bind(1, case_id);
-  std::vector<int64_t> study_ids;
-  while (members.step()) {
-    auto record = series_by_id(members.integer(0));
-    if (!record) continue;
-    contents.series.push_back({*record, members.text(1)});
-    if (std::find(study_ids.begin(), study_ids.end(), record->study) == study_ids.end())
-      study_ids.push_back(record->study);
-  }
-  for (int64_t id : study_ids)
-    if (auto record = study(id)) contents.studies.push_back(*record);
+  auto found = case_with_patient(state_->db, case_id);
+  if (!found) throw Error(ErrorCode::kNotFound, std::to_string(case_id), "no such case");
+  std::tie(contents.record, contents.patient) = std::move(*found);
+  contents.series = series_of_case(state_->db, case_id);
+  contents.studies = studies_of_case(state_->db, case_id);
   std::sort(contents.studies.begin(), contents.studies.end(),
             [](const StudyRecord& a, const StudyRecord& b) { return std::tie(a.date, a.time, a.id) < std::tie(b.date, b.time, b.id); });
   auto study_rank = [&](int64_t study) {

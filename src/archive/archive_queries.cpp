@@ -97,6 +97,27 @@ std::optional<SeriesRecord> Archive::series_by_id(int64_t id) const {
   return rows.empty() ? std::nullopt : std::optional(rows.front());
 }
 
+std::optional<std::pair<CaseRecord, PatientRecord>> case_with_patient(db::Connection& db, int64_t case_id) {
+  db::Statement query(db, sql::kCaseWithPatient);
+  query.bind(1, case_id);
+  if (!query.step()) return std::nullopt;
+  PatientRecord patient = patient_from(query);
+  CaseRecord record{case_id, patient.id, query.text(6), query.text(7)};
+  return std::make_pair(std::move(record), std::move(patient));
+}
+
+std::vector<CaseSeries> series_of_case(db::Connection& db, int64_t case_id) {
+  db::Statement query(db, sql::kSeriesOfCase);
+  query.bind(1, case_id);
+  std::vector<CaseSeries> members;
+  while (query.step()) members.push_back({series_from(query), query.text(12)});
+  return members;
+}
+
+std::vector<StudyRecord> studies_of_case(db::Connection& db, int64_t case_id) {
+  return all_rows<StudyRecord>(db, std::string(sql::kStudies) + sql::kStudiesOfCase, study_from, case_id);
+}
+
 std::vector<InstanceRecord> Archive::instances(int64_t series) const {
   return all_rows<InstanceRecord>(state_->db, std::string(sql::kInstanceColumns) + sql::kOfSeriesInOrder,
                                   instance_from, series);
@@ -119,9 +140,29 @@ std::vector<IdentityFlag> Archive::identity_flags() const {
   });
 }
 
+std::vector<std::string> Archive::series_object_hashes(int64_t series) const {
+  db::Statement query(state_->db, std::string(sql::kObjectsOfSeries) + sql::kOfSeriesInOrder);
+  query.bind(1, series);
+  std::vector<std::string> hashes;
+  while (query.step()) hashes.push_back(query.text(0));
+  return hashes;
+}
+
+std::map<int64_t, std::vector<std::string>> Archive::series_object_hashes(const std::vector<int64_t>& series) const {
+  std::map<int64_t, std::vector<std::string>> hashes;
+  if (series.empty()) return hashes;
+  std::string places;
+  for (size_t n = 0; n < series.size(); ++n) places += (n ? ", ?" : "?") + std::to_string(n + 1);
+  db::Statement query(state_->db, std::string(sql::kObjectsOfSeriesIn) + places + sql::kInSeriesOrder);
+  for (size_t n = 0; n < series.size(); ++n) query.bind(int(n + 1), series[n]);
+  for (int64_t id : series) hashes[id];
+  while (query.step()) hashes[query.integer(0)].push_back(query.text(1));
+  return hashes;
+}
+
 std::vector<std::filesystem::path> Archive::series_instance_files(int64_t series) const {
   std::vector<std::filesystem::path> files;
-  for (const auto& instance : instances(series)) files.push_back(state_->objects.path_of(instance.object_sha256));
+  for (const auto& sha : series_object_hashes(series)) files.push_back(state_->objects.path_of(sha));
   return files;
 }
 

@@ -68,14 +68,29 @@ inline constexpr const char* kSeries =
 inline constexpr const char* kInstanceColumns =
     "SELECT id, series, sop_instance_uid, sop_class_uid, instance_number, image_position, image_orientation, "
     "transfer_syntax, object, size, source_path, imported_at FROM instances ";
+inline constexpr const char* kObjectsOfSeries = "SELECT object FROM instances ";
+// kObjectsOfSeriesIn + "?1, ?2..." + kInSeriesOrder: several series at once, each in kOfSeriesInOrder's order.
+inline constexpr const char* kObjectsOfSeriesIn = "SELECT series, object FROM instances WHERE series IN (";
+inline constexpr const char* kInSeriesOrder = ") ORDER BY series, instance_number IS NULL, instance_number, id";
 inline constexpr const char* kOfSeriesInOrder = "WHERE series = ?1 ORDER BY instance_number IS NULL, instance_number, id";
 inline constexpr const char* kWithId = "WHERE id = ?1";
 inline constexpr const char* kCases = "SELECT id, patient, label, created_at FROM cases";
 inline constexpr const char* kIdentityFlags =
     "SELECT id, patient, attribute, archived_value, arrived_value, source_path, sop_instance_uid, flagged_at "
     "FROM identity_flags ORDER BY id";
-inline constexpr const char* kCaseSeries =
-    "SELECT series, role FROM case_series WHERE case_id = ?1";
+// ?1 case: its patient (kPatients's columns) and its label and time, in one query.
+inline constexpr const char* kCaseWithPatient =
+    "SELECT p.id, p.patient_id, p.name, p.birth_date, p.sex, (SELECT COUNT(*) FROM studies s WHERE s.patient = p.id), "
+    "c.label, c.created_at FROM cases c JOIN patients p ON p.id = c.patient WHERE c.id = ?1";
+// ?1 case: its series (kSeries's columns) with their role, in one query.
+inline constexpr const char* kSeriesOfCase =
+    "SELECT x.id, x.study, x.series_uid, x.modality, x.description, x.number, x.rows, x.columns, "
+    "x.pixel_spacing_row, x.pixel_spacing_column, x.slice_thickness, "
+    "(SELECT COUNT(*) FROM instances i WHERE i.series = x.id), cs.role "
+    "FROM case_series cs JOIN series x ON x.id = cs.series WHERE cs.case_id = ?1";
+// ?1 case: the studies its series belong to.
+inline constexpr const char* kStudiesOfCase =
+    " WHERE s.id IN (SELECT x.study FROM series x JOIN case_series cs ON cs.series = x.id WHERE cs.case_id = ?1)";
 
 // --- resolving user-given IDs ---
 inline constexpr const char* kPatientIdOf = "SELECT id FROM patients WHERE patient_id = ?1";

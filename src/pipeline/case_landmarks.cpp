@@ -71,8 +71,11 @@ void attach_landmarks(Archive& archive, int64_t case_id, const LandmarkSet& land
 }
 
 LandmarkSet latest_landmarks(const Archive& archive, int64_t case_id) {
+  return latest_landmarks(archive, archive.artefacts(case_id));
+}
+
+LandmarkSet latest_landmarks(const Archive& archive, const std::vector<ArtefactRecord>& artefacts) {
   const ArtefactRecord* newest = nullptr;
-  auto artefacts = archive.artefacts(case_id);
   for (const auto& a : artefacts)
     if (a.kind == kLandmarksKind && (!newest || a.id > newest->id)) newest = &a;
   if (!newest) return {};

@@ -39,6 +39,8 @@ void attach_landmarks(Archive& archive, int64_t case_id, const LandmarkSet& land
 
 // The newest landmark set attached to the case; empty when there is none.
 LandmarkSet latest_landmarks(const Archive& archive, int64_t case_id);
+// The same, among the case's artefacts already read (archive.artefacts(case_id)).
+LandmarkSet latest_landmarks(const Archive& archive, const std::vector<ArtefactRecord>& artefacts);
 
 struct StoredLandmarks {
   int64_t artefact_id = 0;

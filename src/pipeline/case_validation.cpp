@@ -206,13 +206,13 @@ std::optional<std::string> validation_inputs_hash(const Archive& archive, int64_
                                                   const ValidationOptions& options) {
   const auto contents = archive.case_contents(case_id);
   const auto post = postop_series(contents);
-  const auto plan = latest_plan(archive, case_id);
-  const auto landmarks = latest_landmarks(archive, case_id);
+  const auto artefacts = archive.artefacts(case_id);  // read once: the plan and the landmarks are among them
+  const auto plan = latest_plan_sha256(artefacts);
+  const auto landmarks = latest_landmarks(archive, artefacts);
   if (!post || !plan || landmarks.empty()) return std::nullopt;
   const int64_t pre = primary_series(contents);
-  return derivation_key(
-      {series_content_hash(archive, pre), series_content_hash(archive, *post), plan->sha256, landmarks_hash(landmarks)},
-      options.to_json());
+  const auto series = series_content_hashes(archive, {pre, *post});
+  return derivation_key({series[0], series[1], *plan, landmarks_hash(landmarks)}, options.to_json());
 }
 
 CaseValidation validate_case(Archive& archive, int64_t case_id, const ValidationOptions& options,

@@ -6,13 +6,26 @@
 
 namespace maxillo::pipeline {
 
-std::string series_content_hash(const Archive& archive, int64_t series) {
+namespace {
+std::string content_hash_of(const std::vector<std::string>& object_hashes) {
   Sha256 hash;
-  for (const auto& instance : archive.instances(series)) {
-    hash.update(instance.object_sha256);
+  for (const auto& sha : object_hashes) {
+    hash.update(sha);
     hash.update("\n");
   }
   return hash.hex_digest();
+}
+}  // namespace
+
+std::string series_content_hash(const Archive& archive, int64_t series) {
+  return content_hash_of(archive.series_object_hashes(series));
+}
+
+std::vector<std::string> series_content_hashes(const Archive& archive, const std::vector<int64_t>& series) {
+  const auto objects = archive.series_object_hashes(series);
+  std::vector<std::string> hashes;
+  for (int64_t id : series) hashes.push_back(content_hash_of(objects.at(id)));
+  return hashes;
 }
 
 std::string derivation_key(const std::vector<std::string>& input_hashes, const Json& parameters) {

@@ -13,6 +13,8 @@ namespace maxillo::pipeline {
 
 // SHA-256 over the object hashes of a series' instances in instance order: names the data.
 std::string series_content_hash(const Archive& archive, int64_t series);
+// The same for several series, read in one query.
+std::vector<std::string> series_content_hashes(const Archive& archive, const std::vector<int64_t>& series);
 
 // SHA-256 of (input hashes in order, parameters.dump(), program version).
 std::string derivation_key(const std::vector<std::string>& input_hashes, const Json& parameters);

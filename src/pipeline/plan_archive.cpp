@@ -60,6 +60,14 @@ std::optional<StoredPlan> latest_plan(const Archive& archive, int64_t case_id) {
   return history.back();
 }
 
+std::optional<std::string> latest_plan_sha256(const std::vector<ArtefactRecord>& case_artefacts) {
+  const ArtefactRecord* newest = nullptr;
+  for (const auto& a : case_artefacts)
+    if (a.kind == kPlanKind && (!newest || a.id > newest->id)) newest = &a;
+  if (!newest) return std::nullopt;
+  return newest->object_sha256;
+}
+
 void store_plan_result(Archive& archive, int64_t case_id, const StoredPlan& plan, const Json& result) {
   const std::string text = result.dump(2) + "\n";
   const std::string sha = archive.store_object(text);

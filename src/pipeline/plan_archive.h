@@ -30,6 +30,9 @@ StoredPlan store_plan(Archive& archive, int64_t case_id, const planning::Plan& p
 // by a newer program) throws Error naming the artefact.
 std::vector<StoredPlan> plan_history(const Archive& archive, int64_t case_id);
 std::optional<StoredPlan> latest_plan(const Archive& archive, int64_t case_id);
+// The newest stored plan's object name, from the index alone (what derivation keys need; the
+// nightly scan asks it of every case).
+std::optional<std::string> latest_plan_sha256(const std::vector<ArtefactRecord>& case_artefacts);
 
 void store_plan_result(Archive& archive, int64_t case_id, const StoredPlan& plan, const Json& result);
 // The newest stored plan result of the case (plan_result_json's document), if any.
