@@ -23,7 +23,7 @@ LandmarkSet phantom_landmarks(double maxillary_advancement_mm) {
 
 struct ArchivedCase {
   maxillo::testing::TemporaryFolder folder;
-  Archive archive = Archive::open(folder.path() / "archive", OpenMode::CreateIfMissing);
+  Archive archive = Archive::open(testing::archive_at(folder.path() / "archive"), OpenMode::CreateIfMissing);
   int64_t case_id = 0;
   ArchivedCase() {
     maxillo::testing::write_series(folder.path() / "dicom", 3, "P7");

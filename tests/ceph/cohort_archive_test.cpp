@@ -18,6 +18,7 @@
 #include "sample/phantom.h"
 #include "support/pdf_tools.h"
 #include "support/run_maxillo.h"
+#include "support/test_archive.h"
 
 namespace maxillo::pipeline {
 namespace {
@@ -61,7 +62,7 @@ TEST(SampleCohort, LandmarksWithoutTheVolumeEqualThePhantoms) {
 
 struct EmptyArchive {
   TemporaryFolder folder{"maxillo-cohort-test"};
-  Archive archive = Archive::open(folder.path() / "archive", OpenMode::CreateIfMissing);
+  Archive archive = Archive::open(testing::archive_at(folder.path() / "archive"), OpenMode::CreateIfMissing);
 };
 
 TEST(CohortArchive, CsvToArchiveToCohortGivesTheCsvData) {
