@@ -97,8 +97,15 @@ struct MetaInformation {
 MetaInformation read_meta(const Reader& in) {
   MetaInformation meta;
   size_t at = kPreamble;
+  int previous = -1;
   while (at + 8 <= in.size() && in.u16(at, false) == 0x0002) {
     const uint16_t element = in.u16(at + 2, false);
+    // Elements ascend (PS3.5 7.1). A repeated Transfer Syntax UID would let this walk check the
+    // data set under one syntax while DCMTK reads it under another (a fuzzing finding: deflated
+    // here, raw there, and a 2.9 GB allocation).
+    if (int(element) <= previous)
+      in.fail(ErrorCode::kNotDicom, at, "file meta element " + tag_text(2, element) + " repeats or is out of order");
+    previous = element;
     char vr[2];
     in.chars(at + 4, vr);
     if (!listed(kVrs, vr))
