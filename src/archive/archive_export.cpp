@@ -48,7 +48,7 @@ std::string random_secret() {
 std::string Archive::deidentification_secret() const {
   // Beside the index of an embedded archive; in the shared object folder of a server archive,
   // where every node finds it and where it outlives the index, like the objects it keys.
-  auto path = state_->location.embedded() ? state_->folder / kSecretFile
+  auto path = state_->location.embedded() ? state_->location.folder / kSecretFile
                                           : state_->objects.folder() / "settings" / kSecretFile;
   std::error_code ignored;
   std::filesystem::create_directories(path.parent_path(), ignored);

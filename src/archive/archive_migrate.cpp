@@ -121,7 +121,7 @@ MigrationReport Archive::migrate(const std::filesystem::path& source_folder, con
 
   Archive target = Archive::open(target_address, OpenMode::CreateIfMissing);
   State& state = *target.state_;
-  if (state.location.embedded() && std::filesystem::equivalent(state.folder, source.folder))
+  if (state.location.embedded() && std::filesystem::equivalent(state.location.folder, source.folder))
     throw Error(ErrorCode::kUsage, source_folder.string(), "the source and the target are the same archive");
   // Nothing else writes to the target while it is filled, on this node or any other.
   StoreLock lock(state, LockKind::Exclusive);

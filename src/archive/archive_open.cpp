@@ -125,7 +125,7 @@ int lock_store_file(const std::filesystem::path& folder, LockKind kind) {
 
 StoreLock::StoreLock(Archive::State& state, LockKind kind) : kind_(kind) {
   if (state.location.embedded()) {
-    fd_ = lock_store_file(state.folder, kind);
+    fd_ = lock_store_file(state.location.folder, kind);
     return;
   }
   static_cast<postgres::Connection&>(state.db).lock(postgres::kStoreLockKey, kind == LockKind::Shared);
@@ -142,7 +142,6 @@ StoreLock::~StoreLock() {
 
 Archive::State::State(ArchiveLocation where, std::unique_ptr<db::Connection> index)
     : location(std::move(where)),
-      folder(location.folder),
       connection(std::move(index)),
       db(*connection),
       objects(location.objects_folder()),
@@ -223,7 +222,7 @@ Archive::~Archive() = default;
 Archive::Archive(Archive&&) noexcept = default;
 Archive& Archive::operator=(Archive&&) noexcept = default;
 
-const std::filesystem::path& Archive::folder() const { return state_->folder; }
+const std::filesystem::path& Archive::folder() const { return state_->location.folder; }
 const std::filesystem::path& Archive::address() const { return state_->address; }
 bool Archive::embedded() const { return state_->location.embedded(); }
 int Archive::schema_version() const { return state_->schema_version; }

@@ -141,11 +141,7 @@ std::vector<IdentityFlag> Archive::identity_flags() const {
 }
 
 std::vector<std::string> Archive::series_object_hashes(int64_t series) const {
-  db::Statement query(state_->db, std::string(sql::kObjectsOfSeries) + sql::kOfSeriesInOrder);
-  query.bind(1, series);
-  std::vector<std::string> hashes;
-  while (query.step()) hashes.push_back(query.text(0));
-  return hashes;
+  return series_object_hashes(std::vector<int64_t>{series}).at(series);
 }
 
 std::map<int64_t, std::vector<std::string>> Archive::series_object_hashes(const std::vector<int64_t>& series) const {

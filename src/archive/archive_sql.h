@@ -68,7 +68,6 @@ inline constexpr const char* kSeries =
 inline constexpr const char* kInstanceColumns =
     "SELECT id, series, sop_instance_uid, sop_class_uid, instance_number, image_position, image_orientation, "
     "transfer_syntax, object, size, source_path, imported_at FROM instances ";
-inline constexpr const char* kObjectsOfSeries = "SELECT object FROM instances ";
 // kObjectsOfSeriesIn + "?1, ?2..." + kInSeriesOrder: several series at once, each in kOfSeriesInOrder's order.
 inline constexpr const char* kObjectsOfSeriesIn = "SELECT series, object FROM instances WHERE series IN (";
 inline constexpr const char* kInSeriesOrder = ") ORDER BY series, instance_number IS NULL, instance_number, id";

@@ -17,7 +17,6 @@ struct Archive::State {
   State(ArchiveLocation where, std::unique_ptr<db::Connection> index);
   ArchiveLocation location;
   std::filesystem::path address;  // as given to Archive::open
-  std::filesystem::path folder;  // location.folder
   std::unique_ptr<db::Connection> connection;
   db::Connection& db;  // *connection
   ObjectStore objects;

@@ -60,7 +60,7 @@ class ScratchIndex {
 std::vector<std::string> journal_differences(Archive::State& state) {
   std::vector<std::string> differences;
   try {
-    ScratchIndex scratch(state.location.embedded() ? state.folder : std::filesystem::temp_directory_path());
+    ScratchIndex scratch(state.location.embedded() ? state.location.folder : std::filesystem::temp_directory_path());
     sqlite::Database db(scratch.path(), sqlite::OpenKind::Create);
     db.execute("PRAGMA journal_mode = OFF; PRAGMA synchronous = OFF");
     upgrade_schema(db, state.journal);
@@ -69,7 +69,7 @@ std::vector<std::string> journal_differences(Archive::State& state) {
     std::vector<TableDifference> found;
     if (state.location.embedded()) {
       db::Statement attach(db, "ATTACH DATABASE ?1 AS live");
-      attach.bind(1, index_file(state.folder).string()).run();
+      attach.bind(1, index_file(state.location.folder).string()).run();
       found = compare_attached_indexes(db, "live");
     } else {
       found = compare_indexes(db, state.db);

@@ -1,13 +1,12 @@
 #include "archive/postgres.h"
 
-#include "archive/archive_location.h"
-
 #include <libpq-fe.h>
 
 #include <cstdlib>
 #include <cstring>
 #include <vector>
 
+#include "archive/archive_location.h"
 #include "core/error.h"
 
 namespace maxillo::postgres {
@@ -27,6 +26,12 @@ std::string server_name(pg_conn* connection) {
   std::string host = PQhost(connection) ? PQhost(connection) : "";
   return "postgresql://" + std::string(PQuser(connection)) + "@" + host + ":" + PQport(connection) + "/" +
          PQdb(connection);
+}
+
+// libpq's messages end in a newline.
+std::string without_trailing_space(std::string text) {
+  while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
+  return text;
 }
 
 void ignore_notice(void*, const char*) {}  // "relation already exists, skipping" and the like
@@ -150,8 +155,7 @@ std::string numbered_parameters(std::string_view sql) {
 Connection::Connection(const std::string& uri) : name_(without_password(uri)) {
   connection_ = PQconnectdb(uri.c_str());
   if (PQstatus(connection_) != CONNECTION_OK) {
-    std::string reason = connection_ ? PQerrorMessage(connection_) : "out of memory";
-    while (!reason.empty() && (reason.back() == '\n' || reason.back() == ' ')) reason.pop_back();
+    const std::string reason = connection_ ? without_trailing_space(PQerrorMessage(connection_)) : "out of memory";
     PQfinish(connection_);
     connection_ = nullptr;
     throw Error(ErrorCode::kArchiveUnreachable, name_, "cannot connect to the archive's index server: " + reason);
@@ -166,8 +170,8 @@ Connection::~Connection() { PQfinish(connection_); }
 void Connection::fail(const void* failed, std::string_view what) const {
   const auto* result = static_cast<const PGresult*>(failed);
   const char* sqlstate = result ? PQresultErrorField(result, PG_DIAG_SQLSTATE) : nullptr;
-  std::string reason = result && *PQresultErrorMessage(result) ? PQresultErrorMessage(result) : PQerrorMessage(connection_);
-  while (!reason.empty() && (reason.back() == '\n' || reason.back() == ' ')) reason.pop_back();
+  const std::string reason = without_trailing_space(
+      result && *PQresultErrorMessage(result) ? PQresultErrorMessage(result) : PQerrorMessage(connection_));
   // A dropped connection has no SQLSTATE: it is the server that went away.
   ErrorCode code = PQstatus(connection_) == CONNECTION_BAD ? ErrorCode::kArchiveUnreachable : code_for(sqlstate);
   throw Error(code, name_, std::string(what) + ": " + reason);
@@ -180,14 +184,14 @@ void Connection::execute(std::string_view sql) {
 
 std::unique_ptr<db::PreparedStatement> Connection::prepare(std::string_view sql) {
   auto known = prepared_.find(sql);
-  std::string numbered = numbered_parameters(sql);
-  if (known == prepared_.end()) {
-    std::string name = "maxillo_" + std::to_string(prepared_.size() + 1);
-    Result result(PQprepare(connection_, name.c_str(), numbered.c_str(), 0, nullptr));
+  if (known == prepared_.end()) {  // once per connection and SQL text; every later use is a lookup
+    const std::string numbered = numbered_parameters(sql);
+    Prepared statement{"maxillo_" + std::to_string(prepared_.size() + 1), highest_parameter(numbered)};
+    Result result(PQprepare(connection_, statement.name.c_str(), numbered.c_str(), 0, nullptr));
     if (!result.ok()) fail(result.get(), "cannot prepare \"" + std::string(sql.substr(0, 60)) + "\"");
-    known = prepared_.emplace(std::string(sql), std::move(name)).first;
+    known = prepared_.emplace(std::string(sql), std::move(statement)).first;
   }
-  return std::make_unique<PostgresStatement>(*this, known->second, highest_parameter(numbered));
+  return std::make_unique<PostgresStatement>(*this, known->second.name, known->second.parameters);
 }
 
 void Connection::begin(db::TransactionKind kind) {

@@ -54,7 +54,11 @@ class Connection final : public db::Connection {
  private:
   std::string name_;
   pg_conn* connection_ = nullptr;
-  std::map<std::string, std::string, std::less<>> prepared_;  // SQL text -> statement name
+  struct Prepared {
+    std::string name;
+    int parameters = 0;
+  };
+  std::map<std::string, Prepared, std::less<>> prepared_;  // SQL text -> its server-side statement
 };
 
 // Advisory lock keys of an archive database (any 64-bit numbers no other user of the

@@ -10,14 +10,11 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
-
-#include <unistd.h>
-
 #include <thread>
 
 #include "archive/archive.h"
-#include "cli/bench_archive.h"
 #include "archive/dicom_series_writer.h"
+#include "cli/bench_archive.h"
 #include "cli/command.h"
 #include "core/json.h"
 

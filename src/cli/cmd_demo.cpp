@@ -1,14 +1,14 @@
 // maxillo demo: the whole pipeline on the synthetic phantom, from nothing to a PDF report.
-#include <unistd.h>
-
 #include <chrono>
 #include <iostream>
+#include <optional>
 
 #include "archive/archive_location.h"
 #include "cli/command.h"
 #include "core/error.h"
 #include "core/json.h"
 #include "core/log.h"
+#include "core/temporary_folder.h"
 #include "net/loopback_server.h"
 #include "net/store_client.h"
 #include "pipeline/case_landmarks.h"
@@ -73,11 +73,12 @@ std::vector<std::filesystem::path> files_in(const std::filesystem::path& folder)
 net::StorageServerCounts push_over_dicom(const std::vector<std::filesystem::path>& files, const std::string& sender,
                                           const std::string& receiver, const std::filesystem::path& archive_dir) {
   // An archive on a PostgreSQL server has no folder of this machine's to receive into.
-  const auto spool = names_index_server(archive_dir.string())
-                         ? std::filesystem::temp_directory_path() / ("maxillo-demo-" + std::to_string(::getpid()) + "-" + receiver)
-                         : std::filesystem::path();
-  net::StorageServerOptions server{
-      .archive = archive_dir, .spool = spool, .ae_title = receiver, .allowed = {{sender, "127.0.0.1"}}};
+  std::optional<TemporaryFolder> spool;
+  if (names_index_server(archive_dir.string())) spool.emplace("demo-spool");
+  net::StorageServerOptions server{.archive = archive_dir,
+                                   .spool = spool ? spool->path() : std::filesystem::path(),
+                                   .ae_title = receiver,
+                                   .allowed = {{sender, "127.0.0.1"}}};
   const auto counts = net::with_loopback_server(server, [&](const net::DicomPeer& peer) {
     const auto sent = net::send_files(peer, files, {.calling_ae = sender, .progress = ProgressDisplay::Never});
     if (!sent.failures.empty())

@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "archive/archive.h"
+#include "archive/index_comparison.h"
 #include "archive/postgres.h"
 #include "archive_fixture.h"
 
@@ -125,6 +126,9 @@ TEST(ServerArchive, ALostDatabaseIsRebuiltFromTheSharedFolderRowForRow) {
   EXPECT_EQ(rebuilt.case_contents(1).series[1].role, before.case_contents(1).series[1].role);
   EXPECT_EQ(rebuilt.artefacts(2).size(), 1u);
   EXPECT_TRUE(rebuilt.verify(RepairMode::ReportOnly, ProgressDisplay::Never).consistent());
+  // Every table, row for row, ids included.
+  postgres::Connection lost(database_of(original)), replaced(database_of(replacement));
+  for (const auto& difference : compare_indexes(lost, replaced)) ADD_FAILURE() << difference.describe();
   // A database that holds an index is never rebuilt over, forced or not.
   try {
     Archive::rebuild_index(replacement, RebuildOptions{true, ProgressDisplay::Never});
