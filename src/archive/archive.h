@@ -211,7 +211,7 @@ class Archive {
   // Their sha256 names, in the same order, read from the index alone (what a series' content
   // hash is made of; the nightly scan computes it for every case).
   std::vector<std::string> series_object_hashes(int64_t series) const;
-  // The same for several series in one query: series id -> hashes.
+  // The same for many series in a few queries: series id -> hashes.
   std::map<int64_t, std::vector<std::string>> series_object_hashes(const std::vector<int64_t>& series) const;
 
   // --- cases ---
@@ -219,7 +219,10 @@ class Archive {
   // A case id (bare or typed "case:N"), or a Patient ID (its "default" case, else its only case).
   // Throws Error(NotFound).
   int64_t resolve_case(std::string_view text) const;
-  CaseContents case_contents(int64_t case_id) const;
+  CaseContents case_contents(int64_t case_id) const;  // Error(kNotFound) when there is no such case
+  // The same for many cases in a few queries (the nightly scan reads every case's): case id ->
+  // contents; ids with no case are left out.
+  std::map<int64_t, CaseContents> case_contents(const std::vector<int64_t>& case_ids) const;
   // The case `label` of the patient with this Patient ID, the patient and the case created when
   // missing (idempotent): for cases without images, e.g. a follow-up cohort's landmark sets. A
   // patient made here has no name, birth date or sex (DICOM files arriving later for that Patient
@@ -238,7 +241,9 @@ class Archive {
   // The newest artefact of this case and kind made from these inputs, if any.
   std::optional<ArtefactRecord> find_artefact(int64_t case_id, std::string_view kind,
                                               std::string_view inputs_hash) const;
-  std::vector<ArtefactRecord> artefacts(int64_t case_id) const;
+  std::vector<ArtefactRecord> artefacts(int64_t case_id) const;  // by id
+  // The same for many cases in a few queries: case id -> artefacts (empty for a case without).
+  std::map<int64_t, std::vector<ArtefactRecord>> artefacts(const std::vector<int64_t>& case_ids) const;
 
   // --- work shared between processes and nodes (nightly --claim; db/003_work_queue.sql) ---
   // Adds the items a queue does not hold yet (idempotent; finished items stay finished).

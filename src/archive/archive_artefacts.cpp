@@ -63,11 +63,15 @@ std::optional<ArtefactRecord> Archive::find_artefact(int64_t case_id, std::strin
 }
 
 std::vector<ArtefactRecord> Archive::artefacts(int64_t case_id) const {
-  db::Statement query(state_->db, std::string(sql::kArtefactColumns) + sql::kArtefactsOfCase);
-  query.bind(1, case_id);
-  std::vector<ArtefactRecord> rows;
-  while (query.step()) rows.push_back(artefact_from(query));
-  return rows;
+  return std::move(artefacts(std::vector<int64_t>{case_id})[case_id]);
+}
+
+std::map<int64_t, std::vector<ArtefactRecord>> Archive::artefacts(const std::vector<int64_t>& case_ids) const {
+  std::map<int64_t, std::vector<ArtefactRecord>> found;
+  for (int64_t id : case_ids) found[id];
+  db::for_each_row_with_ids(state_->db, std::string(sql::kArtefactColumns) + sql::kArtefactsOfCasesIn, sql::kInIdOrder,
+                            case_ids, [&](const db::Statement& row) { found[row.integer(1)].push_back(artefact_from(row)); });
+  return found;
 }
 
 }  // namespace maxillo

@@ -1,6 +1,7 @@
 // Cases: the unit of work. One "default" case per patient is made at first import.
 #include <algorithm>
 #include <charconv>
+#include <tuple>
 
 #include "archive/archive_sql.h"
 #include "archive/archive_state.h"
@@ -40,13 +41,10 @@ int64_t Archive::resolve_case(std::string_view text) const {
   throw Error(ErrorCode::kNotFound, std::string(text), "no case with this id and no patient with this Patient ID");
 }
 
-CaseContents Archive::case_contents(int64_t case_id) const {
-  CaseContents contents;
-  auto found = case_with_patient(state_->db, case_id);
-  if (!found) throw Error(ErrorCode::kNotFound, std::to_string(case_id), "no such case");
-  std::tie(contents.record, contents.patient) = std::move(*found);
-  contents.series = series_of_case(state_->db, case_id);
-  contents.studies = studies_of_case(state_->db, case_id);
+namespace {
+
+// Studies by date and time; series by their study's place in that order, then by number and id.
+void sort_contents(CaseContents& contents) {
   std::sort(contents.studies.begin(), contents.studies.end(),
             [](const StudyRecord& a, const StudyRecord& b) { return std::tie(a.date, a.time, a.id) < std::tie(b.date, b.time, b.id); });
   auto study_rank = [&](int64_t study) {
@@ -57,7 +55,20 @@ CaseContents Archive::case_contents(int64_t case_id) const {
     return std::make_tuple(study_rank(a.series.study), a.series.number.value_or(1 << 30), a.series.id) <
            std::make_tuple(study_rank(b.series.study), b.series.number.value_or(1 << 30), b.series.id);
   });
-  return contents;
+}
+
+}  // namespace
+
+std::map<int64_t, CaseContents> Archive::case_contents(const std::vector<int64_t>& case_ids) const {
+  auto found = read_case_contents(state_->db, case_ids);
+  for (auto& [id, contents] : found) sort_contents(contents);
+  return found;
+}
+
+CaseContents Archive::case_contents(int64_t case_id) const {
+  auto found = case_contents(std::vector<int64_t>{case_id});
+  if (found.empty()) throw Error(ErrorCode::kNotFound, std::to_string(case_id), "no such case");
+  return std::move(found.begin()->second);
 }
 
 void Archive::set_series_role(int64_t case_id, int64_t series, std::string_view role) {

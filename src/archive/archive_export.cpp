@@ -127,7 +127,12 @@ std::vector<std::filesystem::path> Archive::export_series(int64_t series, const 
       write_file_atomically(staging.path() / names.back(), bytes, Durability::Unflushed);
     } else {
       names.push_back(file_name(instance, pseudonymous_uid(secret, instance.sop_instance_uid)));
-      write_deidentified_copy(source, staging.path() / names.back(), secret);
+      try {
+        write_deidentified_copy(source, staging.path() / names.back(), secret);
+      } catch (const Error& e) {  // named as the user knows it, not by its object file
+        if (e.code() != ErrorCode::kCannotDeidentify) throw;
+        throw Error(e.code(), "series:" + std::to_string(series), e.reason());
+      }
     }
   }
   return staging.publish(names, target_dir);

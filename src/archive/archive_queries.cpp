@@ -1,5 +1,7 @@
 // Listing and resolving: read-only queries over the index.
+#include <algorithm>
 #include <charconv>
+#include <tuple>
 
 #include "archive/archive_sql.h"
 #include "archive/archive_state.h"
@@ -97,25 +99,20 @@ std::optional<SeriesRecord> Archive::series_by_id(int64_t id) const {
   return rows.empty() ? std::nullopt : std::optional(rows.front());
 }
 
-std::optional<std::pair<CaseRecord, PatientRecord>> case_with_patient(db::Connection& db, int64_t case_id) {
-  db::Statement query(db, sql::kCaseWithPatient);
-  query.bind(1, case_id);
-  if (!query.step()) return std::nullopt;
-  PatientRecord patient = patient_from(query);
-  CaseRecord record{case_id, patient.id, query.text(6), query.text(7)};
-  return std::make_pair(std::move(record), std::move(patient));
-}
-
-std::vector<CaseSeries> series_of_case(db::Connection& db, int64_t case_id) {
-  db::Statement query(db, sql::kSeriesOfCase);
-  query.bind(1, case_id);
-  std::vector<CaseSeries> members;
-  while (query.step()) members.push_back({series_from(query), query.text(12)});
-  return members;
-}
-
-std::vector<StudyRecord> studies_of_case(db::Connection& db, int64_t case_id) {
-  return all_rows<StudyRecord>(db, std::string(sql::kStudies) + sql::kStudiesOfCase, study_from, case_id);
+std::map<int64_t, CaseContents> read_case_contents(db::Connection& db, const std::vector<int64_t>& case_ids) {
+  std::map<int64_t, CaseContents> found;
+  db::for_each_row_with_ids(db, sql::kCasesWithPatientsIn, ")", case_ids, [&](const db::Statement& row) {
+    auto& contents = found[row.integer(8)];
+    contents.patient = patient_from(row);
+    contents.record = CaseRecord{row.integer(8), contents.patient.id, row.text(6), row.text(7)};
+  });
+  db::for_each_row_with_ids(db, sql::kSeriesOfCasesIn, ")", case_ids, [&](const db::Statement& row) {
+    if (auto c = found.find(row.integer(13)); c != found.end()) c->second.series.push_back({series_from(row), row.text(12)});
+  });
+  db::for_each_row_with_ids(db, sql::kStudiesOfCasesIn, ")", case_ids, [&](const db::Statement& row) {
+    if (auto c = found.find(row.integer(8)); c != found.end()) c->second.studies.push_back(study_from(row));
+  });
+  return found;
 }
 
 std::vector<InstanceRecord> Archive::instances(int64_t series) const {
@@ -145,14 +142,26 @@ std::vector<std::string> Archive::series_object_hashes(int64_t series) const {
 }
 
 std::map<int64_t, std::vector<std::string>> Archive::series_object_hashes(const std::vector<int64_t>& series) const {
+  // In kOfSeriesInOrder's order: by instance number, numberless instances last, then by id.
+  struct Member {
+    std::optional<int> number;
+    int64_t id;
+    std::string object;
+    bool operator<(const Member& other) const {
+      return std::make_tuple(!number, number.value_or(0), id) < std::make_tuple(!other.number, other.number.value_or(0), other.id);
+    }
+  };
+  std::map<int64_t, std::vector<Member>> members;
+  for (int64_t id : series) members[id];
+  db::for_each_row_with_ids(state_->db, sql::kObjectsOfSeriesIn, ")", series, [&](const db::Statement& row) {
+    members[row.integer(0)].push_back({optional_int(row, 2), row.integer(3), row.text(1)});
+  });
   std::map<int64_t, std::vector<std::string>> hashes;
-  if (series.empty()) return hashes;
-  std::string places;
-  for (size_t n = 0; n < series.size(); ++n) places += (n ? ", ?" : "?") + std::to_string(n + 1);
-  db::Statement query(state_->db, std::string(sql::kObjectsOfSeriesIn) + places + sql::kInSeriesOrder);
-  for (size_t n = 0; n < series.size(); ++n) query.bind(int(n + 1), series[n]);
-  for (int64_t id : series) hashes[id];
-  while (query.step()) hashes[query.integer(0)].push_back(query.text(1));
+  for (auto& [id, of_series] : members) {
+    std::sort(of_series.begin(), of_series.end());
+    auto& names = hashes[id];
+    for (auto& member : of_series) names.push_back(std::move(member.object));
+  }
   return hashes;
 }
 

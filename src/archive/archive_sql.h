@@ -68,28 +68,34 @@ inline constexpr const char* kSeries =
 inline constexpr const char* kInstanceColumns =
     "SELECT id, series, sop_instance_uid, sop_class_uid, instance_number, image_position, image_orientation, "
     "transfer_syntax, object, size, source_path, imported_at FROM instances ";
-// kObjectsOfSeriesIn + "?1, ?2..." + kInSeriesOrder: several series at once, each in kOfSeriesInOrder's order.
-inline constexpr const char* kObjectsOfSeriesIn = "SELECT series, object FROM instances WHERE series IN (";
-inline constexpr const char* kInSeriesOrder = ") ORDER BY series, instance_number IS NULL, instance_number, id";
+// kObjectsOfSeriesIn + "?1, ?2..." + ")": the objects of several series with what orders them
+// (kOfSeriesInOrder's order). Unsorted: sorting a whole archive's instances is the server's
+// slowest step (a spill to disk), and the client sorts each series' few hundred rows cheaply.
+inline constexpr const char* kObjectsOfSeriesIn =
+    "SELECT series, object, instance_number, id FROM instances WHERE series IN (";
 inline constexpr const char* kOfSeriesInOrder = "WHERE series = ?1 ORDER BY instance_number IS NULL, instance_number, id";
 inline constexpr const char* kWithId = "WHERE id = ?1";
 inline constexpr const char* kCases = "SELECT id, patient, label, created_at FROM cases";
 inline constexpr const char* kIdentityFlags =
     "SELECT id, patient, attribute, archived_value, arrived_value, source_path, sop_instance_uid, flagged_at "
     "FROM identity_flags ORDER BY id";
-// ?1 case: its patient (kPatients's columns) and its label and time, in one query.
-inline constexpr const char* kCaseWithPatient =
+// kCasesWithPatientsIn + "?1, ?2..." + ")": cases with their patient (kPatients's columns),
+// label, time and id, in one query.
+inline constexpr const char* kCasesWithPatientsIn =
     "SELECT p.id, p.patient_id, p.name, p.birth_date, p.sex, (SELECT COUNT(*) FROM studies s WHERE s.patient = p.id), "
-    "c.label, c.created_at FROM cases c JOIN patients p ON p.id = c.patient WHERE c.id = ?1";
-// ?1 case: its series (kSeries's columns) with their role, in one query.
-inline constexpr const char* kSeriesOfCase =
+    "c.label, c.created_at, c.id FROM cases c JOIN patients p ON p.id = c.patient WHERE c.id IN (";
+// kSeriesOfCasesIn + "?1, ?2..." + ")": the cases' series (kSeries's columns), role and case.
+inline constexpr const char* kSeriesOfCasesIn =
     "SELECT x.id, x.study, x.series_uid, x.modality, x.description, x.number, x.rows, x.columns, "
     "x.pixel_spacing_row, x.pixel_spacing_column, x.slice_thickness, "
-    "(SELECT COUNT(*) FROM instances i WHERE i.series = x.id), cs.role "
-    "FROM case_series cs JOIN series x ON x.id = cs.series WHERE cs.case_id = ?1";
-// ?1 case: the studies its series belong to.
-inline constexpr const char* kStudiesOfCase =
-    " WHERE s.id IN (SELECT x.study FROM series x JOIN case_series cs ON cs.series = x.id WHERE cs.case_id = ?1)";
+    "(SELECT COUNT(*) FROM instances i WHERE i.series = x.id), cs.role, cs.case_id "
+    "FROM case_series cs JOIN series x ON x.id = cs.series WHERE cs.case_id IN (";
+// kStudiesOfCasesIn + "?1, ?2..." + ")": the studies the cases' series belong to (kStudies's
+// columns) and the case.
+inline constexpr const char* kStudiesOfCasesIn =
+    "SELECT DISTINCT s.id, s.patient, s.study_uid, s.date, s.time, s.description, s.accession, "
+    "(SELECT COUNT(*) FROM series x WHERE x.study = s.id), cs.case_id "
+    "FROM studies s JOIN series y ON y.study = s.id JOIN case_series cs ON cs.series = y.id WHERE cs.case_id IN (";
 
 // --- resolving user-given IDs ---
 inline constexpr const char* kPatientIdOf = "SELECT id FROM patients WHERE patient_id = ?1";
@@ -111,7 +117,9 @@ inline constexpr const char* kArtefactColumns =
     "SELECT id, case_id, kind, object, media_type, inputs_hash, parameters, program_version, created_at FROM artefacts ";
 inline constexpr const char* kFindArtefact =
     "WHERE case_id = ?1 AND kind = ?2 AND inputs_hash = ?3 ORDER BY id DESC LIMIT 1";
-inline constexpr const char* kArtefactsOfCase = "WHERE case_id = ?1 ORDER BY id";
+// kArtefactColumns + kArtefactsOfCasesIn + "?1, ?2..." + kInIdOrder: the artefacts of several cases.
+inline constexpr const char* kArtefactsOfCasesIn = "WHERE case_id IN (";
+inline constexpr const char* kInIdOrder = ") ORDER BY id";
 
 // --- verify ---
 inline constexpr const char* kAllObjects = "SELECT sha256, size FROM objects";

@@ -54,11 +54,9 @@ inline std::filesystem::path journal_folder(const ArchiveLocation& location) { r
 // gets a snapshot journal entry of its rows. Returns the schema version.
 int upgrade_schema(db::Connection& db, const IndexJournal& journal);
 
-// A case's record and its patient's, or nothing when there is no such case.
-std::optional<std::pair<CaseRecord, PatientRecord>> case_with_patient(db::Connection& db, int64_t case_id);
-// A case's series with their roles, and their studies (two queries, whatever their number).
-std::vector<CaseSeries> series_of_case(db::Connection& db, int64_t case_id);
-std::vector<StudyRecord> studies_of_case(db::Connection& db, int64_t case_id);
+// The contents of these cases (record, patient, series with roles, studies), unsorted, read
+// with three queries per 4,096 cases; ids with no case are left out.
+std::map<int64_t, CaseContents> read_case_contents(db::Connection& db, const std::vector<int64_t>& case_ids);
 
 // Connection settings shared by every connection to an embedded archive index.
 void configure_connection(sqlite::Database& db);

@@ -61,6 +61,20 @@ void replace_identity(DcmDataset& dataset, std::string_view secret) {
                              "retained; keyed-hash pseudonyms and UIDs");
 }
 
+// What the profile cannot clean must not leave as if it were clean (PS3.15 E.1: such content is
+// removed or cleaned, never passed on): an encapsulated document (a consultation report as
+// Encapsulated PDF names the patient on its first page), and pixels marked as carrying burnt-in
+// text.
+void refuse_identity_beyond_reach(DcmDataset& dataset, const std::filesystem::path& source) {
+  if (dataset.tagExists(DCM_EncapsulatedDocument))
+    throw Error(ErrorCode::kCannotDeidentify, source.string(),
+                "an encapsulated document (" + text_of(dataset, DCM_MIMETypeOfEncapsulatedDocument) +
+                    ") carries the patient's identity inside the document, where de-identification cannot reach it");
+  if (text_of(dataset, DCM_BurnedInAnnotation) == "YES")
+    throw Error(ErrorCode::kCannotDeidentify, source.string(),
+                "Burned In Annotation is YES: the pixels carry text that de-identification does not remove");
+}
+
 }  // namespace
 
 std::string pseudonym_for(std::string_view secret, std::string_view patient_id) {
@@ -82,6 +96,7 @@ std::string write_deidentified_copy(const std::filesystem::path& source, const s
   OFCondition status = file.loadFile(source.c_str());
   if (status.bad()) throw Error(ErrorCode::kNotDicom, source.string(), std::string("cannot read: ") + status.text());
   DcmDataset& dataset = *file.getDataset();
+  refuse_identity_beyond_reach(dataset, source);
   replace_identity(dataset, secret);
   remove_private_attributes(dataset);
   std::string sop = replace_uids(dataset, *file.getMetaInfo(), secret);

@@ -9,7 +9,9 @@
 // (SHA-256 of a secret and the original), so the same patient and the same study map to the
 // same pseudonym in every export made with the same secret (follow-up series stay linked),
 // while nobody without the secret can recover or confirm an original ID by trying candidates.
-// Pixel data are untouched: burnt-in text is not detected (CT slices have none).
+// Pixel data are untouched: burnt-in text is not detected (CT slices have none), but a file that
+// says it has some (Burned In Annotation YES) is refused, and so is an encapsulated document
+// (e.g. an Encapsulated PDF report), whose content names the patient: Error(kCannotDeidentify).
 #include <cstddef>
 #include <filesystem>
 #include <string>
@@ -24,7 +26,8 @@ std::string pseudonym_for(std::string_view secret, std::string_view patient_id);
 std::string pseudonymous_uid(std::string_view secret, std::string_view uid);
 
 // Reads the DICOM file `source` and writes its de-identified copy to `target` atomically.
-// Returns the copy's SOP Instance UID. Throws Error(NotDicom / WriteFailed) naming the file.
+// Returns the copy's SOP Instance UID. Throws Error(NotDicom / CannotDeidentify / WriteFailed)
+// naming the file.
 std::string write_deidentified_copy(const std::filesystem::path& source, const std::filesystem::path& target,
                                     std::string_view secret);
 

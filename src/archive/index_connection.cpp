@@ -1,5 +1,6 @@
 #include "archive/index_connection.h"
 
+#include <algorithm>
 #include <chrono>
 #include <thread>
 
@@ -32,6 +33,23 @@ void retry_transaction(const std::function<void()>& body) {
       if (e.code() != ErrorCode::kArchiveBusy || attempt == kAttempts) throw;
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(5 * attempt));
+  }
+}
+
+void for_each_row_with_ids(Connection& connection, std::string_view before, std::string_view after,
+                           std::vector<int64_t> ids, const std::function<void(const Statement&)>& row) {
+  constexpr size_t kPlaces[] = {1, 8, 64, 512, 4096};
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  for (size_t first = 0; first < ids.size(); first += kPlaces[4]) {
+    const size_t count = std::min(ids.size() - first, kPlaces[4]);
+    const size_t places = *std::find_if(std::begin(kPlaces), std::end(kPlaces), [&](size_t n) { return n >= count; });
+    std::string sql(before);
+    for (size_t n = 1; n <= places; ++n) sql += (n > 1 ? ", ?" : "?") + std::to_string(n);
+    sql += after;
+    Statement query(connection, sql);
+    for (size_t n = 0; n < places; ++n) query.bind(int(n + 1), ids[first + std::min(n, count - 1)]);
+    while (query.step()) row(query);
   }
 }
 

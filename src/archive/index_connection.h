@@ -21,6 +21,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace maxillo::db {
 
@@ -155,5 +156,15 @@ std::optional<int64_t> inserted_id(Statement& insert);
 // writers on PostgreSQL, a busy SQLite file. The whole transaction is retried, never a part,
 // as Orthanc's PostgreSQL plugin and dcm4chee do. `body` must start from scratch each time.
 void retry_transaction(const std::function<void()>& body);
+
+// Runs `before + "?1, ?2, ..." + after`, an IN list of `ids`, and calls `row` on every result
+// row: many cases or series in a few round trips instead of one per id (on a server each costs
+// a network round trip). Ids are deduplicated and split into chunks of at most 4096 (a server
+// scans a large table once per chunk; SQLite takes up to 32766 parameters), each padded to 1, 8,
+// 64, 512 or 4096 places by repeating its last id (a repeated id in an IN list changes nothing),
+// so a server prepares at most five statements per query text. Rows come in the query's order
+// within a chunk; group them by id.
+void for_each_row_with_ids(Connection& connection, std::string_view before, std::string_view after,
+                           std::vector<int64_t> ids, const std::function<void(const Statement&)>& row);
 
 }  // namespace maxillo::db

@@ -63,11 +63,18 @@ void run_send(const SendArguments& a, CommandContext& ctx) {
   std::set<int64_t> seen;
   std::vector<std::filesystem::path> files;
   const TemporaryFolder scratch("maxillo-send");  // de-identified copies, removed when done
+  size_t withheld = 0;  // series that cannot leave de-identified: named, and the rest sent
   for (int64_t id : series) {
     if (!seen.insert(id).second) continue;
-    const auto these = a.deidentify ? archive.export_series(id, scratch / std::to_string(id), ExportProfile::Deidentified)
-                                    : archive.series_instance_files(id);
-    files.insert(files.end(), these.begin(), these.end());
+    try {
+      const auto these = a.deidentify ? archive.export_series(id, scratch / std::to_string(id), ExportProfile::Deidentified)
+                                      : archive.series_instance_files(id);
+      files.insert(files.end(), these.begin(), these.end());
+    } catch (const Error& e) {
+      if (e.code() != ErrorCode::kCannotDeidentify) throw;
+      std::cerr << e.what() << "; not sent\n";
+      ++withheld;
+    }
   }
   net::StoreOptions options = a.options;
   options.progress = ctx.global.quiet || ctx.global.json ? ProgressDisplay::Never : ProgressDisplay::Auto;
@@ -75,13 +82,16 @@ void run_send(const SendArguments& a, CommandContext& ctx) {
   for (const auto& failure : report.failures) std::cerr << failure.file.string() << ": " << failure.reason << "\n";
   if (ctx.global.json) {
     std::cout << json_text(Json{{"peer", net::to_string(peer)}, {"sent", report.sent}, {"failed", report.failures.size()},
-                                {"seconds", report.seconds}, {"deidentified", a.deidentify}})
+                                {"seconds", report.seconds}, {"deidentified", a.deidentify},
+                                {"series_withheld", withheld}})
               << "\n";
   } else {
     std::cout << "sent " << report.sent << " instances" << (a.deidentify ? " (de-identified)" : "") << " to "
-              << net::to_string(peer) << " in " << report.seconds << " s; " << report.failures.size() << " refused\n";
+              << net::to_string(peer) << " in " << report.seconds << " s; " << report.failures.size() << " refused";
+    if (withheld) std::cout << "; " << withheld << " series withheld (cannot be de-identified)";
+    std::cout << "\n";
   }
-  ctx.exit_code = report.failures.empty() ? 0 : exit_code_for(ErrorCode::kBatchPartlyFailed);
+  ctx.exit_code = report.failures.empty() && !withheld ? 0 : exit_code_for(ErrorCode::kBatchPartlyFailed);
 }
 
 }  // namespace

@@ -202,17 +202,62 @@ std::optional<int64_t> postop_series(const CaseContents& contents) {
   return newest;
 }
 
-std::optional<std::string> validation_inputs_hash(const Archive& archive, int64_t case_id,
-                                                  const ValidationOptions& options) {
-  const auto contents = archive.case_contents(case_id);
+namespace {
+
+// What a case's validation inputs hash is made of, but for the series' contents (read for all cases at once).
+struct InputsOfCase {
+  int64_t preop_series = 0, postop_series = 0;
+  std::string plan_sha256, landmarks_hash;
+};
+
+// Nothing when the case lacks a post-operative CT, a plan or landmarks (checked before the pre-operative CT, whose
+// absence throws). Reads the landmarks object.
+std::optional<InputsOfCase> inputs_of_case(const Archive& archive, const CaseContents& contents,
+                                           const std::vector<ArtefactRecord>& artefacts) {
   const auto post = postop_series(contents);
-  const auto artefacts = archive.artefacts(case_id);  // read once: the plan and the landmarks are among them
   const auto plan = latest_plan_sha256(artefacts);
   const auto landmarks = latest_landmarks(archive, artefacts);
   if (!post || !plan || landmarks.empty()) return std::nullopt;
-  const int64_t pre = primary_series(contents);
-  const auto series = series_content_hashes(archive, {pre, *post});
-  return derivation_key({series[0], series[1], *plan, landmarks_hash(landmarks)}, options.to_json());
+  return InputsOfCase{primary_series(contents), *post, *plan, landmarks_hash(landmarks)};
+}
+
+}  // namespace
+
+std::map<int64_t, CaseInputsHash> validation_inputs_hashes(const Archive& archive, const std::vector<int64_t>& case_ids,
+                                                           const ValidationOptions& options) {
+  const auto contents = archive.case_contents(case_ids);
+  auto artefacts = archive.artefacts(case_ids);
+  std::map<int64_t, CaseInputsHash> result;
+  std::map<int64_t, InputsOfCase> eligible;
+  for (int64_t id : case_ids) {
+    auto& entry = result[id];
+    entry.artefacts = std::move(artefacts[id]);
+    try {  // a case whose records cannot be read fails alone
+      const auto found = contents.find(id);
+      if (found == contents.end()) throw Error(ErrorCode::kNotFound, std::to_string(id), "no such case");
+      if (auto inputs = inputs_of_case(archive, found->second, entry.artefacts)) eligible[id] = std::move(*inputs);
+    } catch (...) {
+      entry.error = std::current_exception();
+    }
+  }
+  std::vector<int64_t> series;
+  for (const auto& [id, inputs] : eligible) series.insert(series.end(), {inputs.preop_series, inputs.postop_series});
+  const auto series_hashes = series_content_hashes(archive, series);  // in the order asked
+  const Json parameters = options.to_json();
+  size_t next = 0;
+  for (const auto& [id, inputs] : eligible) {
+    result[id].hash =
+        derivation_key({series_hashes[next], series_hashes[next + 1], inputs.plan_sha256, inputs.landmarks_hash}, parameters);
+    next += 2;
+  }
+  return result;
+}
+
+std::optional<std::string> validation_inputs_hash(const Archive& archive, int64_t case_id,
+                                                  const ValidationOptions& options) {
+  auto found = validation_inputs_hashes(archive, {case_id}, options).at(case_id);
+  if (found.error) std::rethrow_exception(found.error);
+  return found.hash;
 }
 
 CaseValidation validate_case(Archive& archive, int64_t case_id, const ValidationOptions& options,

@@ -12,7 +12,9 @@
 //   5. statistics for the face and per subregion (validation/face_regions.h), an error map and the profiles overlaid.
 #include <Eigen/Geometry>
 #include <cstdint>
+#include <exception>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -89,6 +91,18 @@ std::optional<int64_t> postop_series(const CaseContents& contents);
 // case lacks a post-operative CT, a plan or landmarks (cheap: reads no image).
 std::optional<std::string> validation_inputs_hash(const Archive& archive, int64_t case_id,
                                                   const ValidationOptions& options);
+
+// One case's part of validation_inputs_hashes.
+struct CaseInputsHash {
+  std::optional<std::string> hash;  // nothing: no post-operative CT, plan or landmarks
+  std::exception_ptr error;         // what reading this case's records threw (Error(kNotFound): no such case)
+  std::vector<ArtefactRecord> artefacts;  // the case's, read on the way: its stored validations are among them
+};
+// validation_inputs_hash of many cases, read set-wise: a few queries per 4,096 cases instead of several per case (the
+// nightly scan; on a server each query is a network round trip). Every id of `case_ids` is in the result; a case whose
+// records cannot be read carries its error, and the others their hashes.
+std::map<int64_t, CaseInputsHash> validation_inputs_hashes(const Archive& archive, const std::vector<int64_t>& case_ids,
+                                                           const ValidationOptions& options);
 
 // Runs the validation and writes its files into `out` (created): error-map-<view>.png, profile.png,
 // predicted-skin.vtp and actual-skin.vtp (with the distances), validation.json. `planned`: the case as

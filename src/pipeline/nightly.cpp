@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <chrono>
+#include <map>
 
 #include "core/atomic_file.h"
 #include "core/error.h"
@@ -24,25 +25,14 @@ struct EligibleCase {
   std::string key;  // validation inputs hash
 };
 
-std::optional<std::string> inputs_hash_or_none(const Archive& archive, int64_t case_id,
-                                               const ValidationOptions& options) {
-  try {
-    return validation_inputs_hash(archive, case_id, options);
-  } catch (const Error& e) {
-    if (e.code() == ErrorCode::kNotFound) return std::nullopt;  // e.g. a follow-up cohort's image-less case
-    throw;
-  }
-}
-
 // The cases of this shard, by case id. Whether each is eligible is decided case by case, so
 // that a case whose records cannot be read fails alone (run_nightly).
 std::vector<int64_t> shard_cases(const Archive& archive, const NightlyOptions& options) {
+  std::map<int64_t, std::string> patient_ids;
+  for (const auto& p : archive.patients()) patient_ids[p.id] = p.patient_id;
   std::vector<int64_t> cases;
-  for (const auto& c : archive.cases()) {
-    const auto patient = archive.patient(c.patient);
-    if (patient && shard_of(patient->patient_id, c.label, options.shard.count) == options.shard.index)
-      cases.push_back(c.id);
-  }
+  for (const auto& c : archive.cases())
+    if (shard_of(patient_ids[c.patient], c.label, options.shard.count) == options.shard.index) cases.push_back(c.id);
   std::sort(cases.begin(), cases.end());
   return cases;
 }
@@ -72,12 +62,12 @@ NightlyCase process_case(Archive& archive, const EligibleCase& c, const NightlyO
 }
 
 // One case of the run: nothing when it has no post-operative CT, plan or landmarks.
-std::optional<NightlyCase> nightly_case(Archive& archive, int64_t case_id, const NightlyOptions& options,
-                                        std::vector<StoredValidation>& shown) {
-  auto key = inputs_hash_or_none(archive, case_id, options.validation);
+std::optional<NightlyCase> nightly_case(Archive& archive, int64_t case_id, const CaseInputsHash& inputs,
+                                        const NightlyOptions& options, std::vector<StoredValidation>& shown) {
+  auto key = nightly_key(inputs);
   if (!key) return std::nullopt;
   const EligibleCase eligible{case_id, *key};
-  auto stored = find_validation(archive, case_id, eligible.key);
+  auto stored = find_validation(archive, inputs.artefacts, eligible.key);
   NightlyCase result = process_case(archive, eligible, options, stored);
   if (stored) shown.push_back(std::move(*stored));
   return result;
@@ -135,6 +125,16 @@ Shard parse_shard(std::string_view text) {
   return shard;
 }
 
+std::optional<std::string> nightly_key(const CaseInputsHash& inputs) {
+  if (inputs.error) try {
+      std::rethrow_exception(inputs.error);
+    } catch (const Error& e) {
+      if (e.code() == ErrorCode::kNotFound) return std::nullopt;
+      throw;
+    }
+  return inputs.hash;
+}
+
 int shard_of(const std::string& patient_id, const std::string& case_label, int count) {
   Sha256 hash;
   hash.update(patient_id + "\n" + case_label);
@@ -165,9 +165,11 @@ NightlyReport run_nightly(Archive& archive, const NightlyOptions& options) {
   std::filesystem::create_directories(options.out);
   NightlyReport report;
   std::vector<StoredValidation> shown;
-  for (int64_t case_id : shard_cases(archive, options)) {
+  const auto cases = shard_cases(archive, options);
+  const auto inputs = validation_inputs_hashes(archive, cases, options.validation);  // the scan: a few queries
+  for (int64_t case_id : cases) {
     try {  // whatever one case throws, the others still run
-      auto result = nightly_case(archive, case_id, options, shown);
+      auto result = nightly_case(archive, case_id, inputs.at(case_id), options, shown);
       if (!result) continue;
       report.cases.push_back(*result);
       log::info("case ", case_id, ": ", to_string(result->outcome));

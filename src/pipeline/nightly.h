@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -41,6 +42,11 @@ struct NightlyOptions {
   int64_t lease_seconds = 600;   // a dead worker's case is taken over after this long
   std::chrono::milliseconds poll{1000};  // how often a worker with nothing to claim looks again
 };
+
+// Whether the nightly run validates a case, from the scan of every case (validation_inputs_hashes): its inputs hash,
+// or nothing for a case without a post-operative CT, a plan, landmarks or images (Error(kNotFound): e.g. a follow-up
+// cohort's case). Rethrows any other error of reading the case.
+std::optional<std::string> nightly_key(const CaseInputsHash& inputs);
 
 enum class NightlyOutcome { kValidated, kUpToDate, kFailed, kNotValidated };
 std::string_view to_string(NightlyOutcome outcome);

@@ -64,16 +64,16 @@ class LeaseHeartbeat {
 
 // The eligible cases without a validation of their current inputs, as work items.
 std::vector<std::string> work_to_offer(const Archive& archive, const ValidationOptions& options) {
+  std::vector<int64_t> cases;
+  for (const auto& c : archive.cases()) cases.push_back(c.id);
   std::vector<std::string> items;
-  for (const auto& c : archive.cases()) {
-    std::optional<std::string> key;
+  for (const auto& [case_id, inputs] : validation_inputs_hashes(archive, cases, options)) {  // a few queries
     try {
-      key = validation_inputs_hash(archive, c.id, options);
-    } catch (const Error& e) {
-      if (e.code() != ErrorCode::kNotFound) log::error("case ", c.id, ": ", e.what());
-      continue;
+      const auto key = nightly_key(inputs);
+      if (key && !find_validation(archive, inputs.artefacts, *key)) items.push_back(nightly_work_item(case_id, *key));
+    } catch (const std::exception& e) {  // the case is reported; the others are offered
+      log::error("case ", case_id, ": ", e.what());
     }
-    if (key && !find_validation(archive, c.id, *key)) items.push_back(nightly_work_item(c.id, *key));
   }
   return items;
 }

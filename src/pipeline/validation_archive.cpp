@@ -44,8 +44,9 @@ std::optional<ArtefactRecord> newest(const std::vector<ArtefactRecord>& artefact
   return found;
 }
 
-std::optional<StoredValidation> load(const Archive& archive, const ArtefactRecord& summary) {
-  const auto artefacts = archive.artefacts(summary.case_id);
+// `artefacts`: the case's, among them the summary's pictures and distances.
+std::optional<StoredValidation> load(const Archive& archive, const std::vector<ArtefactRecord>& artefacts,
+                                     const ArtefactRecord& summary) {
   StoredValidation stored;
   stored.case_id = summary.case_id;
   stored.summary = read_json_object(archive, summary.object_sha256);
@@ -79,15 +80,23 @@ std::optional<StoredValidation> find_validation(const Archive& archive, int64_t 
                                                 const std::string& inputs_hash) {
   const auto summary = archive.find_artefact(case_id, kSummaryKind, inputs_hash);
   if (!summary) return std::nullopt;
-  return load(archive, *summary);
+  return load(archive, archive.artefacts(case_id), *summary);
+}
+
+std::optional<StoredValidation> find_validation(const Archive& archive, const std::vector<ArtefactRecord>& case_artefacts,
+                                                const std::string& inputs_hash) {
+  const auto summary = newest(case_artefacts, kSummaryKind, inputs_hash);
+  if (!summary) return std::nullopt;
+  return load(archive, case_artefacts, *summary);
 }
 
 std::optional<StoredValidation> latest_validation(const Archive& archive, int64_t case_id) {
+  const auto artefacts = archive.artefacts(case_id);
   std::optional<ArtefactRecord> found;
-  for (const auto& a : archive.artefacts(case_id))
+  for (const auto& a : artefacts)
     if (a.kind == kSummaryKind && (!found || a.id > found->id)) found = a;
   if (!found) return std::nullopt;
-  return load(archive, *found);
+  return load(archive, artefacts, *found);
 }
 
 }  // namespace maxillo::pipeline

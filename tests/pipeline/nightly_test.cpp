@@ -57,6 +57,39 @@ TEST(Nightly, ACaseWhoseStoredRecordIsUnreadableFailsAloneWithItsReason) {
   EXPECT_EQ(report.cases[1].outcome, NightlyOutcome::kNotValidated);
 }
 
+TEST(Nightly, TheScanOfEveryCaseGivesEachTheHashOfItsOwnAndFailsAnUnreadableOneAlone) {
+  TemporaryFolder folder;
+  Archive archive = Archive::open(folder / "archive", OpenMode::CreateIfMissing);
+  const int64_t first = eligible_case(archive, folder, "P1");
+  const int64_t second = eligible_case(archive, folder, "P2");
+  const int64_t damaged = eligible_case(archive, folder, "P3");
+  testing::write_series(folder / "P4", 3, "P4");  // a CT and nothing else: not eligible
+  archive.import_paths({folder / "P4"}, testing::quiet());
+  const int64_t bare = archive.resolve_case("P4");
+  const ValidationOptions options;
+  const auto before = validation_inputs_hash(archive, damaged, options);
+  attach_landmarks(archive, second, {{"S", {0, 0, 1}}, {"N", {0, -70, 10}}}, "test");  // its own, newer landmarks
+  // The damaged case's newest landmarks are not a landmark document.
+  archive.add_artefact(NewArtefact{damaged, "landmarks", archive.store_object("{ damaged"), "application/json", "", "{}"});
+
+  const int64_t missing = bare + 100;
+  const auto scan = validation_inputs_hashes(archive, {first, second, damaged, bare, missing}, options);
+  ASSERT_EQ(scan.size(), 5u);
+  EXPECT_EQ(scan.at(first).hash, validation_inputs_hash(archive, first, options));
+  EXPECT_EQ(scan.at(second).hash, validation_inputs_hash(archive, second, options));
+  EXPECT_NE(scan.at(first).hash, scan.at(second).hash);  // other landmarks, other inputs
+  ASSERT_TRUE(scan.at(first).hash && !scan.at(first).error);
+  EXPECT_FALSE(scan.at(bare).hash || scan.at(bare).error);
+  EXPECT_EQ(nightly_key(scan.at(bare)), std::nullopt);
+  ASSERT_TRUE(scan.at(damaged).error);
+  EXPECT_FALSE(scan.at(damaged).hash);
+  EXPECT_ANY_THROW(nightly_key(scan.at(damaged)));
+  EXPECT_NE(before, std::nullopt);
+  ASSERT_TRUE(scan.at(missing).error);
+  EXPECT_EQ(nightly_key(scan.at(missing)), std::nullopt);  // no such case: nothing to validate
+  EXPECT_EQ(scan.at(first).artefacts.size(), archive.artefacts(first).size());
+}
+
 TEST(NightlyWorkers, WorkItemsNameTheCaseAndItsInputsAndParseBack) {
   EXPECT_EQ(nightly_work_item(12, "abc"), "case:12:abc");
   EXPECT_EQ(parse_nightly_work_item("case:12:abc"), std::make_pair(int64_t(12), std::string("abc")));
