@@ -15,9 +15,11 @@
 
 #include <chrono>
 #include <fstream>
+#include <span>
 #include <thread>
 
 #include "archive/archive.h"
+#include "archive/dicom_encapsulated_pdf.h"
 #include "archive/dicom_series_writer.h"
 #include "support/run_command.h"
 #include "support/run_maxillo.h"
@@ -217,7 +219,8 @@ TEST_F(Serve, LosesNothingAcknowledgedAndKeepsNothingHalfReceived) {
 }
 
 // `maxillo send` from another archive into this server: the archived series arrives with its
-// UIDs and pixel data; --deidentify sends pseudonymised copies (new UIDs, an ANON- patient).
+// UIDs and pixel data; --deidentify sends pseudonymised copies (new UIDs, an ANON- patient) and
+// never the patient's report.
 TEST_F(Serve, ReceivesWhatMaxilloSendsOriginalAndDeidentified) {
   const auto written = write_series(folder_ / "source-files", "NETSEND", 12, 5);
   const auto source = folder_ / "source";
@@ -227,9 +230,23 @@ TEST_F(Serve, ReceivesWhatMaxilloSendsOriginalAndDeidentified) {
       {"--archive", source.string(), "send", written.series_instance_uid, "--to", peer, "--aet", "STORESCU"}, folder_.path());
   EXPECT_EQ(original.exit_code, 0) << original.err;
   EXPECT_NE(original.out.find("sent 12 instances"), std::string::npos) << original.out;
+  // The patient's report, filed in the study as an Encapsulated PDF, names the patient inside
+  // the document: the de-identified send withholds it, says so, and sends the CT.
+  {
+    Archive filed = Archive::open(source);
+    const auto contents = filed.case_contents(filed.resolve_case("NETSEND"));
+    const std::string pdf = "%PDF-1.4\n% report\n%%EOF\n";
+    std::filesystem::create_directories(folder_ / "report");
+    write_encapsulated_pdf(std::as_bytes(std::span(pdf)),
+                           EncapsulatedReport{contents.patient, contents.studies.front(), "Report"}, folder_ / "report" / "r.dcm");
+    ASSERT_TRUE(filed.import_paths({folder_ / "report"}, {.progress = ProgressDisplay::Never}).all_ok());
+  }
   const auto anonymous = testing::run_maxillo(
       {"--archive", source.string(), "send", "NETSEND", "--deidentify", "--to", peer, "--aet", "STORESCU"}, folder_.path());
-  EXPECT_EQ(anonymous.exit_code, 0) << anonymous.err;
+  EXPECT_EQ(anonymous.exit_code, exit_code_for(ErrorCode::kBatchPartlyFailed)) << anonymous.err;
+  EXPECT_NE(anonymous.out.find("sent 12 instances (de-identified)"), std::string::npos) << anonymous.out;
+  EXPECT_NE(anonymous.out.find("1 series withheld"), std::string::npos) << anonymous.out;
+  EXPECT_NE(anonymous.err.find("encapsulated document"), std::string::npos) << anonymous.err;
   const auto stranger = testing::run_maxillo(
       {"--archive", source.string(), "send", "NETSEND", "--to", peer, "--aet", "STRANGER"}, folder_.path());
   EXPECT_EQ(stranger.exit_code, exit_code_for(ErrorCode::kNetwork)) << stranger.err;

@@ -33,7 +33,7 @@ int64_t eligible_case(Archive& archive, const TemporaryFolder& folder, const std
 
 TEST(Nightly, ACaseWhoseStoredRecordIsUnreadableFailsAloneWithItsReason) {
   TemporaryFolder folder;
-  Archive archive = Archive::open(folder / "archive", OpenMode::CreateIfMissing);
+  Archive archive = Archive::open(testing::archive_at(folder / "archive"), OpenMode::CreateIfMissing);
   const int64_t broken = eligible_case(archive, folder, "P1");
   const int64_t sound = eligible_case(archive, folder, "P2");
   // A validation record of the broken case that is not JSON at all (a damaged artefact).
@@ -59,7 +59,7 @@ TEST(Nightly, ACaseWhoseStoredRecordIsUnreadableFailsAloneWithItsReason) {
 
 TEST(Nightly, TheScanOfEveryCaseGivesEachTheHashOfItsOwnAndFailsAnUnreadableOneAlone) {
   TemporaryFolder folder;
-  Archive archive = Archive::open(folder / "archive", OpenMode::CreateIfMissing);
+  Archive archive = Archive::open(testing::archive_at(folder / "archive"), OpenMode::CreateIfMissing);
   const int64_t first = eligible_case(archive, folder, "P1");
   const int64_t second = eligible_case(archive, folder, "P2");
   const int64_t damaged = eligible_case(archive, folder, "P3");
