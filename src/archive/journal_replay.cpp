@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "core/error.h"
+#include "core/utf8.h"
 
 namespace maxillo {
 namespace {
@@ -26,7 +27,7 @@ void bind_value(db::Statement& statement, int index, const Json& value, const st
   if (value.is_null()) statement.bind_null(index);
   else if (value.is_number_integer()) statement.bind(index, value.get<int64_t>());
   else if (value.is_number()) statement.bind(index, value.get<double>());
-  else if (value.is_string()) statement.bind(index, value.get<std::string>());
+  else if (value.is_string()) statement.bind(index, bytes_from_utf8(value.get<std::string>()));
   else refuse(source, "a value is neither a number, a string nor null");
 }
 

@@ -1,6 +1,7 @@
 #include "archive/journalled_transaction.h"
 
 #include "archive/archive_state.h"
+#include "core/utf8.h"
 #include "core/version.h"
 
 namespace maxillo {
@@ -11,7 +12,7 @@ Json column_value(const db::Statement& row, int column) {
     case db::ColumnType::Integer: return row.integer(column);
     case db::ColumnType::Real: return row.real(column);
     case db::ColumnType::Null: return nullptr;
-    default: return row.text(column);  // the schema stores no blobs
+    default: return bytes_as_utf8(row.text(column));  // no blobs; a Latin-1 file path stays its bytes in JSON
   }
 }
 

@@ -8,6 +8,7 @@
 
 #include "archive/archive_location.h"
 #include "core/error.h"
+#include "core/utf8.h"
 
 namespace maxillo::postgres {
 namespace {
@@ -70,7 +71,8 @@ class PostgresStatement final : public db::PreparedStatement {
     std::snprintf(text, sizeof text, "%.17g", value);  // round-trips every double
     value_at(index) = text;
   }
-  void bind_text(int index, std::string_view text) override { value_at(index) = std::string(text); }
+  // PostgreSQL's text must be UTF-8 without NUL; the index keeps bytes (core/utf8.h).
+  void bind_text(int index, std::string_view text) override { value_at(index) = bytes_as_utf8(text); }
   void bind_null(int index) override { value_at(index).reset(); }
 
   bool step() override {
@@ -95,7 +97,7 @@ class PostgresStatement final : public db::PreparedStatement {
   int64_t integer(int column) const override { return std::strtoll(PQgetvalue(result_, row_, column), nullptr, 10); }
   double real(int column) const override { return std::strtod(PQgetvalue(result_, row_, column), nullptr); }
   std::string text(int column) const override {
-    return std::string(PQgetvalue(result_, row_, column), size_t(PQgetlength(result_, row_, column)));
+    return bytes_from_utf8(std::string_view(PQgetvalue(result_, row_, column), size_t(PQgetlength(result_, row_, column))));
   }
 
  private:

@@ -58,4 +58,22 @@ std::string repaired_utf8(std::string_view text) {
   return is_valid_utf8(text) ? std::string(text) : latin1_to_utf8(text);
 }
 
+std::string bytes_as_utf8(std::string_view bytes) {
+  if (is_valid_utf8(bytes) && bytes.find('\0') == std::string_view::npos && !bytes.starts_with(kBytesMarker))
+    return std::string(bytes);
+  static constexpr char kHex[] = "0123456789abcdef";
+  std::string text(kBytesMarker);
+  for (unsigned char byte : bytes) text.append({kHex[byte >> 4], kHex[byte & 15]});
+  return text;
+}
+
+std::string bytes_from_utf8(std::string_view text) {
+  if (!text.starts_with(kBytesMarker)) return std::string(text);
+  auto nibble = [](char c) { return c <= '9' ? c - '0' : c - 'a' + 10; };
+  std::string bytes;
+  for (size_t n = kBytesMarker.size(); n + 1 < text.size(); n += 2)
+    bytes += char(nibble(text[n]) << 4 | nibble(text[n + 1]));
+  return bytes;
+}
+
 }  // namespace maxillo

@@ -17,4 +17,13 @@ std::string latin1_to_utf8(std::string_view text);
 // names made on such systems. Latin-1 maps every byte, so the result is always valid.
 std::string repaired_utf8(std::string_view text);
 
+// Bytes through a medium that holds only UTF-8 text without NUL (JSON, PostgreSQL's text), and
+// back unchanged: a file path is bytes on Linux, and a Latin-1 "schädel.dcm" must come back as
+// the same bytes, not a repaired look-alike. Text that is valid UTF-8 without NUL passes as it
+// is; anything else becomes kBytesMarker followed by the hex of its bytes (as does text that
+// happens to start with the marker). The same bytes always encode alike, so equality holds.
+inline constexpr std::string_view kBytesMarker = "\x01maxillo-bytes:";
+std::string bytes_as_utf8(std::string_view bytes);
+std::string bytes_from_utf8(std::string_view text);  // the inverse; other text is returned as it is
+
 }  // namespace maxillo

@@ -1,5 +1,7 @@
 // Black-box tests of the archive commands: import / list / show / verify / export, their exit
-// codes, stderr lines and --json keys; crash safety under kill -9; concurrent importers.
+// codes, stderr lines and --json keys; crash safety under kill -9; concurrent importers. Those
+// that are not about the embedded index's files also run with a PostgreSQL address
+// (tests/cli/CMakeLists.txt), and ServerAddressCli checks what only a server address can get wrong.
 #include <gtest/gtest.h>
 #include <signal.h>
 
@@ -10,6 +12,7 @@
 #include "archive_fixture.h"
 #include "core/error.h"
 #include "core/json.h"
+#include "net/net_fixture.h"
 #include "support/bad_dicom_files.h"
 #include "support/run_command.h"
 #include "support/run_maxillo.h"
@@ -34,7 +37,7 @@ TEST(ArchiveCli, ImportReportsEachBadFileOnOneLineAndImportsTheRest) {
   testing::write_series(folder / "in" / "good", 3);
   std::ofstream(folder / "in" / "readme.txt") << std::string(300, 'x');
   std::filesystem::create_symlink(folder / "nowhere", folder / "in" / "dangling.dcm");
-  auto archive = (folder / "archive").string();
+  auto archive = testing::archive_at(folder / "archive").string();
 
   auto result = testing::run_maxillo({"--archive", archive, "import", (folder / "in").string()}, folder.path());
   EXPECT_EQ(result.exit_code, 1);
@@ -86,7 +89,7 @@ TEST(ArchiveCli, UnreadableFileIsNamedAsPermissionDeniedAndTheRestImports) {
 TEST(ArchiveCli, ListShowVerifyAndExportByteIdentical) {
   TemporaryFolder folder;
   auto written = testing::write_series(folder / "in", 4);
-  auto archive = (folder / "archive").string();
+  auto archive = testing::archive_at(folder / "archive").string();
   ASSERT_EQ(testing::run_maxillo({"--archive", archive, "import", (folder / "in").string()}, folder.path()).exit_code, 0);
 
   auto patients = testing::run_maxillo({"--archive", archive, "--json", "list", "patients"}, folder.path());
@@ -221,7 +224,7 @@ TEST(ArchiveCli, JsonOutputSurvivesLatin1NamesAndFileNames) {
   std::filesystem::create_directories(folder / "latin");
   ASSERT_TRUE(file.saveFile((folder / "latin" / "sch\xE4" "del.dcm").c_str(), EXS_LittleEndianExplicit).good());
   std::ofstream(folder / "latin" / "notiz-\xFC.txt") << std::string(200, 'x');  // a failure naming a Latin-1 path
-  auto a = (folder / "archive").string();
+  auto a = testing::archive_at(folder / "archive").string();
 
   auto imported = testing::run_maxillo({"--archive", a, "--json", "import", (folder / "latin").string()}, folder.path());
   EXPECT_EQ(imported.exit_code, 1) << imported.err;
@@ -237,12 +240,44 @@ TEST(ArchiveCli, JsonOutputSurvivesLatin1NamesAndFileNames) {
   auto shown = testing::run_maxillo({"--archive", a, "--json", "show", "P-LATIN"}, folder.path());
   EXPECT_EQ(shown.exit_code, 0) << shown.err;
   EXPECT_NO_THROW((void)Json::parse(shown.out));
+  // The Latin-1 file name is kept as the bytes it is (on PostgreSQL too, whose text must be
+  // UTF-8), and the index still matches its journal.
+  auto verify = testing::run_maxillo({"--archive", a, "verify"}, folder.path());
+  EXPECT_EQ(verify.exit_code, 0) << verify.out << verify.err;
+}
+
+// A malformed address, an unreachable server, a missing shared folder: each refused with its own
+// exit code and a reason, whatever the command, and never with the password in the message.
+TEST(ServerAddressCli, BadAddressesAreRefusedWithTheirExitCodeAndAReason) {
+  TemporaryFolder folder;
+  const int closed_port = testing::free_loopback_port();  // nobody listens there
+  struct Case {
+    std::string address;
+    ErrorCode code;
+    std::string said;
+  };
+  const std::vector<Case> cases = {
+      {"postgresql://maxillo:secret@127.0.0.1:" + std::to_string(closed_port) + "/db?objects=" + folder.path().string(),
+       ErrorCode::kArchiveUnreachable, "127.0.0.1"},
+      {"postgresql://maxillo:secret@127.0.0.1/db", ErrorCode::kBadArchiveAddress, "objects"},
+      {"postgresql://maxillo:secret@127.0.0.1/db?objects=" + (folder / "not-there").string(), ErrorCode::kBadArchiveAddress,
+       "not-there"},
+  };
+  for (const auto& c : cases)
+    for (const std::vector<std::string> command : {std::vector<std::string>{"list", "patients"}, {"verify"}, {"import", folder.path().string()}}) {
+      std::vector<std::string> args{"--archive", c.address};
+      args.insert(args.end(), command.begin(), command.end());
+      const auto run = testing::run_maxillo(args, folder.path());
+      EXPECT_EQ(run.exit_code, exit_code_for(c.code)) << c.address << " " << command[0] << ": " << run.err;
+      EXPECT_NE(run.err.find(c.said), std::string::npos) << run.err;
+      EXPECT_EQ(run.err.find("secret"), std::string::npos) << "the password was shown: " << run.err;
+    }
 }
 
 TEST(ArchiveCli, TwoConcurrentImportersOfOverlappingSets) {
   TemporaryFolder folder;
   for (const char* name : {"a", "b", "c"}) testing::write_series(folder / "in" / name, 120, std::string("P") + name);
-  auto archive = (folder / "archive").string();
+  auto archive = testing::archive_at(folder / "archive").string();
   pid_t one = testing::start_maxillo({"--archive", archive, "import", "--batch", "25", (folder / "in" / "a").string(),
                                       (folder / "in" / "b").string()},
                                      folder / "one.out", folder / "one.err");
