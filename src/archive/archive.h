@@ -252,6 +252,9 @@ class Archive {
   // `now` (Unix seconds), to `holder` until now + lease_seconds. Nothing when no item can be
   // claimed now. On PostgreSQL, SELECT ... FOR UPDATE SKIP LOCKED: workers never wait for
   // each other's claims; on SQLite, BEGIN IMMEDIATE.
+  // The index's clock (Unix seconds) for `now` and lease ends: the database server's on
+  // PostgreSQL, so nodes whose clocks disagree still agree on when a lease ends.
+  int64_t clock_seconds() const;
   std::optional<std::string> claim_work(std::string_view queue, std::string_view holder, int64_t now,
                                         int64_t lease_seconds);
   // Extends a lease the holder still holds; false when it has lost it.

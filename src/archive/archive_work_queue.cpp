@@ -13,6 +13,8 @@ void Archive::offer_work(std::string_view queue, const std::vector<std::string>&
   });
 }
 
+int64_t Archive::clock_seconds() const { return state_->db.clock_seconds(); }
+
 std::optional<std::string> Archive::claim_work(std::string_view queue, std::string_view holder, int64_t now,
                                                int64_t lease_seconds) {
   // SQLite takes the file's write lock before looking (BEGIN IMMEDIATE), so two claims never

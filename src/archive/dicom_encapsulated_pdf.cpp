@@ -2,9 +2,10 @@
 
 #include <dcmtk/dcmdata/dctk.h>
 
+#include <algorithm>
 #include <cassert>
+#include <cctype>
 #include <cstring>
-#include <ctime>
 
 #include "archive/dicom_uid.h"
 #include "core/atomic_file.h"
@@ -21,10 +22,19 @@ void put(DcmDataset& dataset, const DcmTagKey& tag, const std::string& value) {
   assert(status.good() && "cannot insert a DICOM attribute");
 }
 
-// DICOM DA and TM of now, UTC (the report records when it was made, not when it was scanned).
-std::pair<std::string, std::string> utc_date_time() {
-  const std::string both = utc_time_text("%Y%m%d %H%M%S");  // one reading of the clock
-  return {both.substr(0, 8), both.substr(9)};
+// DICOM DA and TM of the document's own /CreationDate (D:YYYYMMDDHHmmSS), or empty (both are
+// type 2): never the clock, so the same PDF always gives the same file, as it gives the same SOP
+// Instance UID, and filing a report twice is "already archived", not a conflict.
+std::pair<std::string, std::string> creation_date_time(std::span<const std::byte> pdf) {
+  const std::string_view text(reinterpret_cast<const char*>(pdf.data()), pdf.size());
+  const auto at = text.find("/CreationDate (D:");
+  if (at == std::string_view::npos) return {};
+  const auto digits = text.substr(at + 17, 14);
+  if (digits.size() < 8 || !std::all_of(digits.begin(), digits.begin() + 8, [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }))
+    return {};
+  size_t time_digits = 8;
+  while (time_digits < digits.size() && std::isdigit(static_cast<unsigned char>(digits[time_digits]))) ++time_digits;
+  return {std::string(digits.substr(0, 8)), std::string(digits.substr(8, (time_digits - 8) / 2 * 2))};
 }
 
 void put_patient_and_study(DcmDataset& d, const EncapsulatedReport& r) {
@@ -43,7 +53,7 @@ void put_patient_and_study(DcmDataset& d, const EncapsulatedReport& r) {
 }
 
 void put_document(DcmDataset& d, const EncapsulatedReport& r, std::span<const std::byte> pdf, const std::string& sop) {
-  auto [date, time] = utc_date_time();
+  const auto [date, time] = creation_date_time(pdf);
   put(d, DCM_SOPClassUID, UID_EncapsulatedPDFStorage);
   put(d, DCM_SOPInstanceUID, sop);
   put(d, DCM_Modality, "DOC");

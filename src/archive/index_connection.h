@@ -67,6 +67,9 @@ class Connection {
   // migration's transaction.
   virtual int schema_version() = 0;
   virtual void set_schema_version(int version) = 0;
+  // The index's clock in Unix seconds: the server's on PostgreSQL, so that a lease means the
+  // same on every node whatever their own clocks say; this machine's for an embedded file.
+  virtual int64_t clock_seconds() = 0;
 };
 
 // A prepared statement, reset and re-bound for each use.

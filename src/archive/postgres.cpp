@@ -224,6 +224,12 @@ void Connection::set_schema_version(int version) {
           "INSERT INTO maxillo_schema(version) VALUES (" + std::to_string(version) + ")");
 }
 
+int64_t Connection::clock_seconds() {
+  // clock_timestamp(), not now(): now() stays at the start of an open transaction.
+  db::Statement query(*this, "SELECT CAST(FLOOR(EXTRACT(EPOCH FROM clock_timestamp())) AS BIGINT)");
+  return db::single_integer(query);
+}
+
 void Connection::lock(int64_t key, bool shared) {
   execute(std::string(shared ? "SELECT pg_advisory_lock_shared(" : "SELECT pg_advisory_lock(") + std::to_string(key) + ")");
 }

@@ -42,6 +42,7 @@ class Connection final : public db::Connection {
   // Kept in the table maxillo_schema (0 when it does not exist yet).
   int schema_version() override;
   void set_schema_version(int version) override;
+  int64_t clock_seconds() override;
 
   // Session-level advisory locks, released by unlock or when the connection ends (a killed
   // process's locks go with its connection).

@@ -78,6 +78,10 @@ int Database::schema_version() {
 
 void Database::set_schema_version(int version) { execute("PRAGMA user_version = " + std::to_string(version)); }
 
+int64_t Database::clock_seconds() {
+  return std::chrono::duration_cast<std::chrono::seconds>(std::chrono::system_clock::now().time_since_epoch()).count();
+}
+
 namespace {
 
 class SqliteStatement final : public db::PreparedStatement {

@@ -35,6 +35,7 @@ class Database final : public db::Connection {
   // PRAGMA user_version.
   int schema_version() override;
   void set_schema_version(int version) override;
+  int64_t clock_seconds() override;
 
   const std::filesystem::path& file() const { return file_; }
   sqlite3* handle() const { return db_; }

@@ -15,10 +15,6 @@
 namespace maxillo::pipeline {
 namespace {
 
-int64_t unix_now() {
-  return std::chrono::duration_cast<std::chrono::seconds>(std::chrono::system_clock::now().time_since_epoch()).count();
-}
-
 std::string default_worker_name() {
   char host[256] = {};
   ::gethostname(host, sizeof host - 1);
@@ -42,7 +38,7 @@ class LeaseHeartbeat {
     const auto period = std::chrono::milliseconds(std::max<int64_t>(200, lease_seconds * 1000 / 3));
     std::unique_lock lock(mutex_);
     while (!stop_.wait_for(lock, period, [this] { return stopping_; }))
-      if (!archive.renew_work(kNightlyQueue, item, holder, unix_now() + lease_seconds))
+      if (!archive.renew_work(kNightlyQueue, item, holder, archive.clock_seconds() + lease_seconds))
         log::warning("nightly: the lease of ", item, " was lost");
   }
 
@@ -110,7 +106,7 @@ NightlyCase work_on(Archive& archive, const std::string& item, const NightlyOpti
         validate_case(archive, case_id, options.validation, options.out / ("case-" + std::to_string(case_id)));
     // A worker that stalled past its lease may have lost the case to another one, which then
     // stores the validation: store it only while the lease is still ours.
-    if (!archive.renew_work(kNightlyQueue, item, holder, unix_now() + options.lease_seconds)) {
+    if (!archive.renew_work(kNightlyQueue, item, holder, archive.clock_seconds() + options.lease_seconds)) {
       result.reason = "its lease went to another worker while it ran; that worker stores the validation";
       log::warning("case ", case_id, ": ", result.reason);
       return result;
@@ -150,13 +146,13 @@ NightlyReport run_nightly_worker(Archive& archive, const NightlyOptions& options
   archive.offer_work(kNightlyQueue, work_to_offer(archive, options.validation));
   NightlyReport report;
   for (;;) {
-    if (auto item = archive.claim_work(kNightlyQueue, holder, unix_now(), options.lease_seconds)) {
+    if (auto item = archive.claim_work(kNightlyQueue, holder, archive.clock_seconds(), options.lease_seconds)) {
       auto result = work_on(archive, *item, options, holder);
       log::info("case ", result.case_id, ": ", to_string(result.outcome));
       report.cases.push_back(std::move(result));
       continue;
     }
-    const auto counts = archive.work_counts(kNightlyQueue, unix_now());
+    const auto counts = archive.work_counts(kNightlyQueue, archive.clock_seconds());
     if (counts.pending == 0 && counts.leased == 0) break;  // every item is finished
     // Others hold leases: wait, in case one of them dies and its case comes free.
     if (counts.pending == 0) std::this_thread::sleep_for(options.poll);

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
+#include <cstdlib>
 #include <mutex>
 #include <set>
 #include <thread>
@@ -18,6 +20,23 @@ using testing::TemporaryFolder;
 
 Archive fresh_archive(const TemporaryFolder& folder) {
   return Archive::open(testing::archive_at(folder / "archive"), OpenMode::CreateIfMissing);
+}
+
+// Leases are timed by the index's clock (the server's, on PostgreSQL): Unix seconds, moving on,
+// and here (server and test on one machine) this machine's time to within a second or two.
+TEST(WorkQueue, TheIndexClockIsUnixSecondsAndMovesOn) {
+  TemporaryFolder folder;
+  Archive archive = fresh_archive(folder);
+  const auto machine = [] {
+    return std::chrono::duration_cast<std::chrono::seconds>(std::chrono::system_clock::now().time_since_epoch()).count();
+  };
+  const int64_t before = machine();
+  const int64_t first = archive.clock_seconds();
+  EXPECT_LE(std::abs(first - before), 2);
+  std::this_thread::sleep_for(std::chrono::milliseconds(1100));
+  const int64_t second = archive.clock_seconds();
+  EXPECT_GE(second, first + 1);
+  EXPECT_LE(second, first + 3);
 }
 
 TEST(WorkQueue, OffersAreIdempotentAndItemsAreClaimedInOrderOnce) {

@@ -3,6 +3,9 @@
 // and filing the same report again changes nothing.
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <thread>
+
 #include "archive_fixture.h"
 #include "core/atomic_file.h"
 #include "pipeline/report_dicom.h"
@@ -23,8 +26,10 @@ TEST(ReportDicom, TheReportIsFiledInTheAnalysedStudyAndComesBackByteForByte) {
   write_file_atomically(folder / "report.pdf", pdf);
 
   const auto filed = write_report_dicom(archive, case_id, folder / "report.pdf", folder / "report.dcm", StoreInArchive::Yes);
+  std::this_thread::sleep_for(std::chrono::milliseconds(1100));  // the clock must not change the file
   const auto again = write_report_dicom(archive, case_id, folder / "report.pdf", folder / "again.dcm", StoreInArchive::Yes);
   EXPECT_EQ(again.sop_instance_uid, filed.sop_instance_uid);
+  EXPECT_EQ(read_file(folder / "again.dcm"), read_file(folder / "report.dcm"));
 
   const auto contents = archive.case_contents(case_id);
   ASSERT_EQ(contents.series.size(), 2u);
