@@ -46,13 +46,15 @@ inline constexpr const char* kAttachSeriesToCase =
     "CASE WHEN ?3 = 'CT' AND NOT EXISTS (SELECT 1 FROM case_series WHERE case_id = ?1 AND role = 'preop') "
     "THEN 'preop' ELSE 'unassigned' END) ON CONFLICT DO NOTHING";
 // ?1 sha256 ?2 size
-inline constexpr const char* kInsertObject = "INSERT INTO objects(sha256, size) VALUES (?1, ?2) ON CONFLICT DO NOTHING";
+// RETURNING *: the new row, for the journal without a second read (a round trip on a server).
+inline constexpr const char* kInsertObject =
+    "INSERT INTO objects(sha256, size) VALUES (?1, ?2) ON CONFLICT DO NOTHING RETURNING *";
 // ?1 series ?2 sop_instance_uid ?3 sop_class ?4 number ?5 position ?6 orientation ?7 syntax ?8 object
 // ?9 size ?10 source_path ?11 imported_at
 inline constexpr const char* kInsertInstance =
     "INSERT INTO instances(series, sop_instance_uid, sop_class_uid, instance_number, image_position, "
     "image_orientation, transfer_syntax, object, size, source_path, imported_at) "
-    "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11) ON CONFLICT(sop_instance_uid) DO NOTHING RETURNING id";
+    "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11) ON CONFLICT(sop_instance_uid) DO NOTHING RETURNING *";
 
 // --- listing ---
 inline constexpr const char* kPatients =

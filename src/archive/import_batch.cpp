@@ -107,15 +107,17 @@ ImportOutcome BatchWriter::insert(const ScannedFile& file, const std::string& no
   const PatientState& patient = patient_of(h, now);
   flag_identity(patient, file, now, report);
   int64_t series = series_of(h, study_of(h, patient.id), patient.default_case);
-  if (insert_object_.reset().bind(1, file.sha256).bind(2, int64_t(file.size)).run() == 1)
-    transaction_->written("objects", "sha256 = ?1", {file.sha256});
+  auto& object = insert_object_.reset().bind(1, file.sha256).bind(2, int64_t(file.size));
+  if (object.step()) transaction_->inserted_row("objects", object);  // none: another file of these bytes
+  object.reset();
   auto& s = insert_instance_.reset();
   s.bind(1, series).bind(2, h.sop_instance_uid).bind(3, h.sop_class_uid);
   s.bind(4, h.instance_number);
   s.bind(5, h.image_position).bind(6, h.image_orientation).bind(7, h.transfer_syntax_uid).bind(8, file.sha256);
   s.bind(9, int64_t(file.size)).bind(10, source_of(file)).bind(11, now);
   // archived_outcome() found no row for this SOP Instance UID, under the write lock.
-  if (auto id = db::inserted_id(s)) transaction_->inserted("instances", *id);
+  if (s.step()) transaction_->inserted_row("instances", s);
+  s.reset();
   return ImportOutcome::Imported;
 }
 

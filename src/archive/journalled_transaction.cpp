@@ -46,6 +46,10 @@ void JournalledTransaction::inserted(std::string_view table, int64_t id) {
   entry_.rows.push_back({std::string(table), row_as_json(db_, table, "id = ?1", {id})});
 }
 
+void JournalledTransaction::inserted_row(std::string_view table, const db::Statement& row) {
+  entry_.rows.push_back({std::string(table), row_json(row)});
+}
+
 void JournalledTransaction::written(std::string_view table, std::string_view where, const std::vector<SqlKey>& keys) {
   entry_.rows.push_back({std::string(table), row_as_json(db_, table, where, keys)});
 }

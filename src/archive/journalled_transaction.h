@@ -31,6 +31,9 @@ class JournalledTransaction {
 
   // Records the row just inserted into a table whose key is `id`.
   void inserted(std::string_view table, int64_t id);
+  // Records the row that an INSERT ... RETURNING * has just returned (`row` stands on it): no
+  // second read of it, which on a server is a round trip per imported file.
+  void inserted_row(std::string_view table, const db::Statement& row);
   // Records the row of `table` that `where` selects after a change (tables keyed otherwise,
   // updates).
   void written(std::string_view table, std::string_view where, const std::vector<SqlKey>& keys);
