@@ -248,13 +248,13 @@ class Archive {
   // --- work shared between processes and nodes (nightly --claim; db/003_work_queue.sql) ---
   // Adds the items a queue does not hold yet (idempotent; finished items stay finished).
   void offer_work(std::string_view queue, const std::vector<std::string>& items);
+  // The index's clock (Unix seconds) for `now` and lease ends: the database server's on
+  // PostgreSQL, so nodes whose clocks disagree still agree on when a lease ends.
+  int64_t clock_seconds() const;
   // Leases the first pending item (by name) that nobody holds, or whose lease ended before
   // `now` (Unix seconds), to `holder` until now + lease_seconds. Nothing when no item can be
   // claimed now. On PostgreSQL, SELECT ... FOR UPDATE SKIP LOCKED: workers never wait for
   // each other's claims; on SQLite, BEGIN IMMEDIATE.
-  // The index's clock (Unix seconds) for `now` and lease ends: the database server's on
-  // PostgreSQL, so nodes whose clocks disagree still agree on when a lease ends.
-  int64_t clock_seconds() const;
   std::optional<std::string> claim_work(std::string_view queue, std::string_view holder, int64_t now,
                                         int64_t lease_seconds);
   // Extends a lease the holder still holds; false when it has lost it.

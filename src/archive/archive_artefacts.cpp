@@ -23,7 +23,8 @@ std::string Archive::store_object(std::span<const std::byte> bytes) {
   state_->objects.make_durable();
   JournalledTransaction transaction(state_->db, state_->journal, "object");
   db::Statement insert(state_->db, sql::kInsertObject);
-  if (insert.bind(1, sha).bind(2, int64_t(bytes.size())).run() == 1) transaction.written("objects", "sha256 = ?1", {sha});
+  if (insert.bind(1, sha).bind(2, int64_t(bytes.size())).step()) transaction.inserted_row("objects", insert);
+  insert.reset();  // SQLite commits no transaction while a statement is in progress
   transaction.commit();
   return sha;
 }

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace maxillo {
@@ -117,5 +118,14 @@ struct ArtefactRecord {
   std::string program_version;
   std::string created_at;
 };
+
+// The newest (highest id) of a case's artefacts of this kind, or nullptr: the current plan,
+// landmark set or validation among all the versions a case keeps.
+inline const ArtefactRecord* newest_artefact(const std::vector<ArtefactRecord>& artefacts, std::string_view kind) {
+  const ArtefactRecord* newest = nullptr;
+  for (const auto& a : artefacts)
+    if (a.kind == kind && (!newest || a.id > newest->id)) newest = &a;
+  return newest;
+}
 
 }  // namespace maxillo

@@ -75,9 +75,7 @@ LandmarkSet latest_landmarks(const Archive& archive, int64_t case_id) {
 }
 
 LandmarkSet latest_landmarks(const Archive& archive, const std::vector<ArtefactRecord>& artefacts) {
-  const ArtefactRecord* newest = nullptr;
-  for (const auto& a : artefacts)
-    if (a.kind == kLandmarksKind && (!newest || a.id > newest->id)) newest = &a;
+  const ArtefactRecord* newest = newest_artefact(artefacts, kLandmarksKind);
   if (!newest) return {};
   return read_set(archive, *newest);
 }

@@ -13,7 +13,7 @@ namespace maxillo::pipeline {
 
 // SHA-256 over the object hashes of a series' instances in instance order: names the data.
 std::string series_content_hash(const Archive& archive, int64_t series);
-// The same for several series, read in one query.
+// The same for several series, read in a few queries (one per 4,096 series).
 std::vector<std::string> series_content_hashes(const Archive& archive, const std::vector<int64_t>& series);
 
 // SHA-256 of (input hashes in order, parameters.dump(), program version).

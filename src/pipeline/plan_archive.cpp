@@ -61,9 +61,7 @@ std::optional<StoredPlan> latest_plan(const Archive& archive, int64_t case_id) {
 }
 
 std::optional<std::string> latest_plan_sha256(const std::vector<ArtefactRecord>& case_artefacts) {
-  const ArtefactRecord* newest = nullptr;
-  for (const auto& a : case_artefacts)
-    if (a.kind == kPlanKind && (!newest || a.id > newest->id)) newest = &a;
+  const ArtefactRecord* newest = newest_artefact(case_artefacts, kPlanKind);
   if (!newest) return std::nullopt;
   return newest->object_sha256;
 }

@@ -78,9 +78,7 @@ void store_validation(Archive& archive, const CaseValidation& v) {
 
 std::optional<StoredValidation> find_validation(const Archive& archive, int64_t case_id,
                                                 const std::string& inputs_hash) {
-  const auto summary = archive.find_artefact(case_id, kSummaryKind, inputs_hash);
-  if (!summary) return std::nullopt;
-  return load(archive, archive.artefacts(case_id), *summary);
+  return find_validation(archive, archive.artefacts(case_id), inputs_hash);  // one query: load needs them all
 }
 
 std::optional<StoredValidation> find_validation(const Archive& archive, const std::vector<ArtefactRecord>& case_artefacts,
@@ -92,9 +90,7 @@ std::optional<StoredValidation> find_validation(const Archive& archive, const st
 
 std::optional<StoredValidation> latest_validation(const Archive& archive, int64_t case_id) {
   const auto artefacts = archive.artefacts(case_id);
-  std::optional<ArtefactRecord> found;
-  for (const auto& a : artefacts)
-    if (a.kind == kSummaryKind && (!found || a.id > found->id)) found = a;
+  const ArtefactRecord* found = newest_artefact(artefacts, kSummaryKind);
   if (!found) return std::nullopt;
   return load(archive, artefacts, *found);
 }
