@@ -1,12 +1,12 @@
 #include "ceph/sagittal_projection.h"
 
 #include <Eigen/Geometry>
-#include <Eigen/SVD>
 #include <array>
 #include <cassert>
 #include <cmath>
 
 #include "core/error.h"
+#include "geometry/plane_fit.h"
 
 namespace maxillo {
 namespace {
@@ -78,19 +78,14 @@ SagittalProjection project_to_mid_sagittal(const LandmarkSet& landmarks) {
     result.status = ProjectionStatus::kTooFewMidlinePoints;
     return result;
   }
-  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
-  for (const auto& p : fit) centroid += p;
-  centroid /= double(fit.size());
-  Eigen::MatrixXd centred(fit.size(), 3);
-  for (size_t i = 0; i < fit.size(); ++i) centred.row(Eigen::Index(i)) = (fit[i] - centroid).transpose();
-  Eigen::JacobiSVD<Eigen::MatrixXd> svd(centred, Eigen::ComputeThinV);
-  auto singular = svd.singularValues();
   // Points (nearly) on one line leave the plane's orientation undetermined.
-  if (singular(1) < 1e-3 * std::max(singular(0), 1.0)) {
+  const std::optional<FittedPlane> plane = fit_plane(fit);
+  if (!plane) {
     result.status = ProjectionStatus::kDegenerate;
     return result;
   }
-  Eigen::Vector3d normal = svd.matrixV().col(2).normalized();
+  const Eigen::Vector3d& centroid = plane->centroid;
+  Eigen::Vector3d normal = plane->normal;
   if (normal.x() < 0) normal = -normal;  // towards the patient's left
   // LPS anterior (-y) minus its component along the normal.
   Eigen::Vector3d anterior = Eigen::Vector3d(0, -1, 0) - Eigen::Vector3d(0, -1, 0).dot(normal) * normal;

@@ -12,7 +12,7 @@
 #include "imaging/segmentation.h"
 #include "imaging/volume_assembly.h"
 #include "mesh/mesh_io.h"
-#include "mesh/mesh_measures.h"
+#include "geometry/mesh_measures.h"
 #include "mesh/surface_extraction.h"
 
 namespace maxillo::cli {

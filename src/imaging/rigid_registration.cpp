@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "geometry/rigid_fit.h"
 #include "imaging/itk_registration.h"
 #include "imaging/registration_samples.h"
 
@@ -131,9 +132,8 @@ Eigen::Isometry3d from_itk_map(const itk_registration::RigidMap& map) {
     for (int c = 0; c < 3; ++c) r(a, c) = map.matrix[size_t(3 * a + c)];
   }
   // Re-orthonormalise: ITK's versor matrix is orthonormal to ~1e-15 already; this keeps it so.
-  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(r, Eigen::ComputeFullU | Eigen::ComputeFullV);
   Eigen::Isometry3d fixed_to_moving = Eigen::Isometry3d::Identity();
-  fixed_to_moving.linear() = svd.matrixU() * svd.matrixV().transpose();
+  fixed_to_moving.linear() = nearest_rotation(r);
   fixed_to_moving.translation() = centre + t - fixed_to_moving.linear() * centre;
   return fixed_to_moving.inverse();
 }

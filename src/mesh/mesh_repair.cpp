@@ -5,7 +5,7 @@
 #include <map>
 #include <unordered_map>
 
-#include "mesh/topology_helpers.h"
+#include "geometry/topology_helpers.h"
 
 namespace maxillo {
 

@@ -17,7 +17,7 @@
 
 #include "core/iso_restriction.h"
 #include "core/log.h"
-#include "mesh/mesh_measures.h"
+#include "geometry/mesh_measures.h"
 #include "mesh/mesh_repair.h"
 #include "mesh/quadric_decimation.h"
 #include "mesh/vtk_bridge.h"

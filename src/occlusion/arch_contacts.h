@@ -5,7 +5,7 @@
 #include <Eigen/Geometry>
 #include <vector>
 
-#include "occlusion/signed_distance.h"
+#include "geometry/signed_distance.h"
 
 namespace maxillo::occlusion {
 

@@ -1,10 +1,12 @@
 #include "occlusion/guided_alignment.h"
 
 #include <Eigen/Cholesky>
-#include <Eigen/SVD>
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <vector>
+
+#include "geometry/rigid_fit.h"
 
 namespace maxillo::occlusion {
 namespace {
@@ -110,18 +112,9 @@ double separate_and_align(MotionEngine& engine, const std::vector<SpringPair>& p
 
 Eigen::Isometry3d best_fit_transform(const std::vector<SpringPair>& pairs) {
   assert(pairs.size() >= 3 && "best_fit_transform needs at least three pairs");
-  Vector3d cu = Vector3d::Zero(), cl = Vector3d::Zero();
-  for (const SpringPair& p : pairs) cu += p.upper, cl += p.lower;
-  cu /= double(pairs.size()), cl /= double(pairs.size());
-  Matrix3d covariance = Matrix3d::Zero();
-  for (const SpringPair& p : pairs) covariance += (p.lower - cl) * (p.upper - cu).transpose();
-  Eigen::JacobiSVD<Matrix3d> svd(covariance, Eigen::ComputeFullU | Eigen::ComputeFullV);
-  Matrix3d d = Matrix3d::Identity();
-  d(2, 2) = (svd.matrixU() * svd.matrixV().transpose()).determinant() < 0 ? -1 : 1;
-  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
-  t.linear() = svd.matrixU() * d * svd.matrixV().transpose();
-  t.translation() = cl - t.linear() * cu;
-  return t;
+  std::vector<Vector3d> upper, lower;
+  for (const SpringPair& p : pairs) upper.push_back(p.upper), lower.push_back(p.lower);
+  return best_rigid_transform(upper, lower);
 }
 
 namespace {

@@ -7,7 +7,7 @@
 // exact triangle test finds contact; the angle is then bisected to tolerance_deg.
 #include <Eigen/Geometry>
 
-#include "occlusion/signed_distance.h"
+#include "geometry/signed_distance.h"
 
 namespace maxillo::occlusion {
 

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "core/volume.h"
-#include "occlusion/signed_distance.h"
+#include "geometry/signed_distance.h"
 
 namespace maxillo::occlusion {
 

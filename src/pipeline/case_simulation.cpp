@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "ceph/landmark_frame.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/json.h"
@@ -157,7 +158,7 @@ SimulationResult simulate_case(Archive& archive, int64_t case_id, const Simulati
   if (request.uncertainty) result.uncertainty = prediction_uncertainty(result.prediction, result.skin_before, request.options);
 
   std::filesystem::create_directories(request.out);
-  const auto frame = render::anatomical_frame(landmarks);
+  const auto frame = anatomical_frame(landmarks);
   result.views = render_soft_tissue_views(result.skin_before, result.prediction, frame, request.out);
   SoftTissueSummary summary{request.plan_text.empty() ? request.plan.description : request.plan_text, request.options,
                             soft_landmarks_of(landmarks)};

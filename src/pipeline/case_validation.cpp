@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "ceph/landmark_frame.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/log.h"
@@ -12,7 +13,7 @@
 #include "imaging/segmentation.h"
 #include "imaging/volume_assembly.h"
 #include "mesh/mesh_io.h"
-#include "mesh/mesh_transform.h"
+#include "geometry/mesh_transform.h"
 #include "mesh/surface_extraction.h"
 #include "pipeline/archived_series.h"
 #include "pipeline/case_landmarks.h"
@@ -21,7 +22,7 @@
 #include "pipeline/plan_archive.h"
 #include "pipeline/validation_json.h"
 #include "pipeline/validation_views.h"
-#include "planning/plan_views.h"
+#include "pipeline/plan_views.h"
 #include "render/anatomical_views.h"
 #include "validation/region_statistics.h"
 #include "validation/skin_cavities.h"
@@ -59,7 +60,7 @@ validation::FaceLandmarks face_landmarks(const LandmarkSet& landmarks) {
 }
 
 validation::FaceAxes face_axes(const LandmarkSet& landmarks) {
-  const auto frame = render::anatomical_frame(landmarks);
+  const auto frame = anatomical_frame(landmarks);
   return {frame.anterior, frame.superior, frame.left};
 }
 
@@ -79,13 +80,13 @@ std::pair<double, double> move_difference(const TriangleMesh& surface, const Eig
 // The surface of each moved segment and of the cranium at the CT's bone threshold inside the segment (and along its
 // cuts): the same definition of "bone surface" as the post-operative bone it is fitted to. Surfaces of the label mask instead sit up to half a
 // voxel off it, which biased the fitted moves by ~0.2 mm.
-std::vector<planning::SegmentSurface> segment_bone_surfaces(const PlannedCase& planned) {
+std::vector<SegmentSurface> segment_bone_surfaces(const PlannedCase& planned) {
   const double bone_hu = SegmentationOptions{}.bone_hu;
   SurfaceOptions options;
   options.keep_largest_components = 0;  // a segment may be several pieces
   options.target_triangles = 80000;
   options.grid = SurfaceGrid::Native;  // the fit's precision: every voxel of the bone's edge
-  std::vector<planning::SegmentSurface> surfaces;
+  std::vector<SegmentSurface> surfaces;
   for (const auto& stats : planned.cut.stats)
     if (stats.segment == planning::Segment::kCranium || planned.planned_moves.count(uint8_t(stats.segment)) > 0)
       surfaces.push_back({stats.segment, {}});
@@ -105,7 +106,7 @@ std::vector<planning::SegmentSurface> segment_bone_surfaces(const PlannedCase& p
 
 // Step 2: each moved segment onto the post-operative bone, from its planned move.
 std::vector<SegmentOutcome> actual_segment_moves(const PlannedCase& planned,
-                                                 const std::vector<planning::SegmentSurface>& surfaces,
+                                                 const std::vector<SegmentSurface>& surfaces,
                                                  const TriangleMesh& postop_bone, const validation::IcpOptions& icp) {
   std::vector<SegmentOutcome> outcomes;
   for (const auto& [segment, move] : planned.planned_moves) {
@@ -123,7 +124,7 @@ std::vector<SegmentOutcome> actual_segment_moves(const PlannedCase& planned,
   return outcomes;
 }
 
-double cranium_residual(const std::vector<planning::SegmentSurface>& surfaces, const TriangleMesh& postop_bone,
+double cranium_residual(const std::vector<SegmentSurface>& surfaces, const TriangleMesh& postop_bone,
                         const validation::IcpOptions& icp) {
   for (const auto& s : surfaces)
     if (s.segment == planning::Segment::kCranium)
@@ -286,7 +287,7 @@ CaseValidation validate_case(Archive& archive, int64_t case_id, const Validation
   std::optional<CaseSurfaces> postop = stored_case_surfaces(archive, case_id, v.postop_series);
   const bool extract_postop = !postop;
   if (extract_postop) postop.emplace();
-  std::vector<planning::SegmentSurface> surfaces;
+  std::vector<SegmentSurface> surfaces;
   // The post-operative surfaces (4 s on the demo) are extracted beside the registration and the pre-operative bone
   // segments (1.7 + 3.5 s): each reads only the loaded CTs and writes only its own result, and the archive stays on
   // this thread. (All three at once were no faster on two cores and raised the demo's peak memory by 0.1 GB more.)
@@ -316,7 +317,7 @@ CaseValidation validate_case(Archive& archive, int64_t case_id, const Validation
   v.regions = face_regions_of(planned.skin, planned.landmarks, options.regions);
   const auto face = validation::region_mask(v.regions, validation::FaceRegion::kOutside);
   std::filesystem::create_directories(out);
-  const auto frame = render::anatomical_frame(planned.landmarks);
+  const auto frame = anatomical_frame(planned.landmarks);
   // The corresponding points (coherent point drift, the longest step here) need nothing the closest-point map and
   // its views make: they run beside them, each writing only its own member; rendering stays on this thread.
   run_concurrently({[&] {

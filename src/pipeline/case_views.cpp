@@ -2,6 +2,7 @@
 
 #include <array>
 
+#include "ceph/landmark_frame.h"
 #include "core/atomic_file.h"
 #include "core/sha256.h"
 #include "core/temporary_folder.h"
@@ -25,10 +26,10 @@ std::string landmarks_hash(const LandmarkSet& landmarks) {
 
 constexpr std::array kTissues = {ViewedTissue::Skin, ViewedTissue::Bone};
 
-std::string caption_for(ViewedTissue tissue, render::StandardView view, const render::AnatomicalFrame& frame) {
+std::string caption_for(ViewedTissue tissue, render::StandardView view, const AnatomicalFrame& frame) {
   std::string caption = std::string(name_of(tissue)) + ", " + std::string(render::name_of(view));
   if (view == render::StandardView::Lateral) caption += " (right)";
-  return caption + (frame.source == render::FrameSource::Frankfort ? "; Frankfort frame" : "; patient axes");
+  return caption + (frame.source == FrameSource::Frankfort ? "; Frankfort frame" : "; patient axes");
 }
 
 std::string artefact_kind(ViewedTissue tissue, render::StandardView view) {
@@ -44,7 +45,7 @@ render::Scene scene_of(ViewedTissue tissue, const CaseSurfaces& surfaces) {
 
 // Renders every tissue and view and stores each PNG as an artefact under `key`.
 void render_and_store(Archive& archive, int64_t case_id, const CaseSurfaces& surfaces,
-                      const render::AnatomicalFrame& frame, const ViewRecipe& recipe, const std::string& key,
+                      const AnatomicalFrame& frame, const ViewRecipe& recipe, const std::string& key,
                       const Json& parameters) {
   auto skin_bounds = render::scene_bounds(scene_of(ViewedTissue::Skin, surfaces));
   std::vector<render::Camera> cameras;
@@ -71,7 +72,7 @@ std::string_view name_of(ViewedTissue tissue) { return tissue == ViewedTissue::S
 
 std::vector<CaseView> case_views(Archive& archive, int64_t case_id, const CaseSurfaces& surfaces,
                                  const LandmarkSet& landmarks, const ViewRecipe& recipe) {
-  auto frame = render::anatomical_frame(landmarks);
+  auto frame = anatomical_frame(landmarks);
   Json parameters{{"image_size_px", recipe.image_size_px}};
   auto key = derivation_key({surfaces.key, landmarks_hash(landmarks)}, parameters);
 

@@ -21,7 +21,7 @@ std::vector<std::string> motion_row(const std::string& label, const AnatomicalMo
           fixed(m.pitch_deg, 2), fixed(m.roll_deg, 2), fixed(m.yaw_deg, 2)};
 }
 
-report::Table transform_table(const OcclusionRun& run, const render::AnatomicalFrame& frame) {
+report::Table transform_table(const OcclusionRun& run, const AnatomicalFrame& frame) {
   report::Table table;
   table.columns = {{"upper arch", 0.31},
                    {"anterior mm", 0.115, report::Align::Right},
@@ -86,7 +86,7 @@ report::KeyValueBlock splint_facts(const OcclusionRun& run) {
 
 }  // namespace
 
-AnatomicalMotion anatomical_motion(const Eigen::Isometry3d& motion, const render::AnatomicalFrame& frame,
+AnatomicalMotion anatomical_motion(const Eigen::Isometry3d& motion, const AnatomicalFrame& frame,
                                    const Eigen::Vector3d& reference) {
   const Eigen::Vector3d shift = motion * reference - reference;
   const Eigen::AngleAxisd rotation(motion.linear());
@@ -101,7 +101,7 @@ AnatomicalMotion anatomical_motion(const Eigen::Isometry3d& motion, const render
   return m;
 }
 
-report::Section occlusion_section(const OcclusionRun& run, const render::AnatomicalFrame& frame,
+report::Section occlusion_section(const OcclusionRun& run, const AnatomicalFrame& frame,
                                   const std::filesystem::path& splint_png) {
   report::Section section{"occlusion", {}};
   section.blocks.push_back(report::Paragraph{
@@ -122,20 +122,20 @@ report::Section occlusion_section(const OcclusionRun& run, const render::Anatomi
       std::string("Translation of the upper arch's centroid; rotation in degrees (rotation-vector components): "
                   "pitch positive front up, roll positive left side up, yaw positive front to the patient's left. "
                   "Frame: ") +
-      (frame.source == render::FrameSource::Frankfort ? "Frankfort horizontal from landmarks." : "scanner axes.")});
+      (frame.source == FrameSource::Frankfort ? "Frankfort horizontal from landmarks." : "scanner axes.")});
   section.blocks.push_back(report::Paragraph{"Surgical splint"});
   section.blocks.push_back(splint_facts(run));
   return section;
 }
 
-void render_splint(const OcclusionRun& run, const render::AnatomicalFrame& frame, const std::filesystem::path& png) {
+void render_splint(const OcclusionRun& run, const AnatomicalFrame& frame, const std::filesystem::path& png) {
   render::Scene scene;
   scene.meshes.push_back({&run.lower, render::kTeethWhite, 1.0, std::nullopt});
   if (run.splint) scene.meshes.push_back({&run.splint->mesh, render::ColourRGB{0.45, 0.7, 0.95}, 0.85, std::nullopt});
   const render::Bounds bounds = render::scene_bounds(scene);
   // From the front and 45 degrees above, so the occlusal side of the splint shows: the frontal
   // view of a frame pitched down (still right-handed: anterior x left = superior).
-  render::AnatomicalFrame tilted = frame;
+  AnatomicalFrame tilted = frame;
   tilted.anterior = (frame.anterior + frame.superior).normalized();
   tilted.superior = (frame.superior - frame.anterior).normalized();
   const render::Camera camera = render::standard_camera(render::StandardView::Frontal, tilted, bounds, 1.0);

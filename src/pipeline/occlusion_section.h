@@ -24,17 +24,17 @@ struct AnatomicalMotion {
   double anterior_mm = 0, superior_mm = 0, left_mm = 0;
   double pitch_deg = 0, roll_deg = 0, yaw_deg = 0;
 };
-AnatomicalMotion anatomical_motion(const Eigen::Isometry3d& motion, const render::AnatomicalFrame& frame,
+AnatomicalMotion anatomical_motion(const Eigen::Isometry3d& motion, const AnatomicalFrame& frame,
                                    const Eigen::Vector3d& reference);
 
 // The section. `splint_png` (may be empty) is a render of the splint shown beside the
 // occlusionogram (render_splint below). The upper arch's motion (from the start pose to the
 // final one) is read at the upper arch's centroid at the start.
-report::Section occlusion_section(const OcclusionRun& run, const render::AnatomicalFrame& frame,
+report::Section occlusion_section(const OcclusionRun& run, const AnatomicalFrame& frame,
                                   const std::filesystem::path& splint_png = {});
 
 // The run's splint over its lower arch, seen obliquely from the front, into `png`.
-void render_splint(const OcclusionRun& run, const render::AnatomicalFrame& frame, const std::filesystem::path& png);
+void render_splint(const OcclusionRun& run, const AnatomicalFrame& frame, const std::filesystem::path& png);
 
 // Stores occlusion.json, occlusionogram.png and splint.stl (when made) of the run's folder as
 // artefacts of the case ("occlusion", "occlusionogram", "splint"), keyed by their inputs.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "ceph/landmark_frame.h"
 #include "core/error.h"
 #include "mesh/surface_extraction.h"
 #include "occlusion/arch_contacts.h"
@@ -61,7 +62,7 @@ Eigen::Isometry3d phantom_start_pose(const TriangleMesh& upper) {
 }
 
 OcclusionRun phantom_occlusion(const PhantomArches& arches, const std::filesystem::path& folder) {
-  const occlusion::DistanceField upper(arches.upper), lower(arches.lower);
+  const DistanceField upper(arches.upper), lower(arches.lower);
   auto pairs = occlusion::contact_spring_pairs(upper, lower, Eigen::Isometry3d::Identity(), 4, 1.0);
   // Smoothing leaves the phantom's label surfaces up to ~1 mm apart where the teeth touch: each
   // spring ends where its upper point lies in the phantom's occlusion, not on the lower
@@ -91,7 +92,7 @@ report::Section phantom_occlusion_section(Archive& archive, int64_t case_id, Ske
   spec.noise_sigma_hu = 0;  // only the labels are used
   const OcclusionRun run = phantom_occlusion(phantom_arches(make_phantom(spec)), folder);
   store_occlusion_artefacts(archive, case_id, run, {});
-  const render::AnatomicalFrame frame = render::anatomical_frame(landmarks);
+  const AnatomicalFrame frame = anatomical_frame(landmarks);
   std::filesystem::path splint_png;
   if (run.splint) {
     splint_png = folder / "splint.png";

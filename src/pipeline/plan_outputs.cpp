@@ -3,9 +3,10 @@
 #include <array>
 #include <cstdio>
 
+#include "ceph/landmark_frame.h"
 #include "mesh/mesh_io.h"
-#include "mesh/mesh_transform.h"
-#include "planning/plan_views.h"
+#include "geometry/mesh_transform.h"
+#include "pipeline/plan_views.h"
 
 #include "report/number_text.h"
 
@@ -16,8 +17,8 @@ constexpr double kBoreClearanceMm = 0.2;  // printing tolerance around the screw
 
 using report::fixed;
 
-std::vector<planning::ScrewAxis> screws_of(const planning::PlanResult& result) {
-  std::vector<planning::ScrewAxis> screws;
+std::vector<ScrewAxis> screws_of(const planning::PlanResult& result) {
+  std::vector<ScrewAxis> screws;
   if (!result.distraction || !result.plan.distraction) return screws;
   const auto& device = result.plan.distraction->device;
   for (const auto* v : {&result.distraction->vectors.right, &result.distraction->vectors.left})
@@ -26,8 +27,8 @@ std::vector<planning::ScrewAxis> screws_of(const planning::PlanResult& result) {
   return screws;
 }
 
-std::vector<planning::SegmentTransform> transforms_of(const planning::PlanResult& result) {
-  std::vector<planning::SegmentTransform> moves;
+std::vector<SegmentTransform> transforms_of(const planning::PlanResult& result) {
+  std::vector<SegmentTransform> moves;
   for (const auto& m : result.moves) moves.push_back({m.segment, m.transform});
   return moves;
 }
@@ -42,7 +43,7 @@ PlanOutputs write_plan_outputs(const LabelVolume& labels, const LandmarkSet& lan
   outputs.segments = cut.stats;
   outputs.bone_voxels = cut.input_bone_voxels;
 
-  const auto surfaces = planning::segment_surfaces(cut);
+  const auto surfaces = segment_surfaces(cut);
   const auto moves = transforms_of(result);
   for (const auto& surface : surfaces) {
     Eigen::Isometry3d move = Eigen::Isometry3d::Identity();
@@ -56,9 +57,9 @@ PlanOutputs write_plan_outputs(const LabelVolume& labels, const LandmarkSet& lan
 
   const auto screws = screws_of(result);
   if (!screws.empty()) {
-    planning::TransferModelOptions options;
+    TransferModelOptions options;
     options.bore_radius_mm = result.plan.distraction->device.screw_diameter_mm / 2 + kBoreClearanceMm;
-    outputs.transfer_model = planning::make_transfer_model(cut.segments, screws, options);
+    outputs.transfer_model = make_transfer_model(cut.segments, screws, options);
     const auto file = out_dir / "transfer-model.stl";
     write_mesh(outputs.transfer_model->mesh, file);
     outputs.files.push_back({"transfer model (STL)", file});
@@ -67,7 +68,7 @@ PlanOutputs write_plan_outputs(const LabelVolume& labels, const LandmarkSet& lan
   const std::array views{render::StandardView::Frontal, render::StandardView::Lateral, render::StandardView::Oblique};
   render::RenderSettings settings;
   settings.size = {640, 640};
-  for (const auto& view : planning::render_planned_skeleton(surfaces, moves, screws, render::anatomical_frame(landmarks),
+  for (const auto& view : render_planned_skeleton(surfaces, moves, screws, anatomical_frame(landmarks),
                                                             views, out_dir, "plan-", settings))
     outputs.renders.push_back(view.png);
   return outputs;

@@ -1,8 +1,8 @@
 #pragma once
 // What a plan gives the operating room and the report besides numbers: the bone cut into its
 // segments (planning/osteotomy.h), the planned bone surfaces as STL, the stereolithographic
-// transfer model with a tube along each distraction screw (planning/transfer_model.h), and
-// renders of the planned skeleton with the screw axes (planning/plan_views.h).
+// transfer model with a tube along each distraction screw (pipeline/transfer_model.h), and
+// renders of the planned skeleton with the screw axes (pipeline/plan_views.h).
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -14,7 +14,7 @@
 #include "core/volume.h"
 #include "planning/osteotomy.h"
 #include "planning/plan_application.h"
-#include "planning/transfer_model.h"
+#include "pipeline/transfer_model.h"
 #include "report/report_model.h"
 
 namespace maxillo::pipeline {
@@ -22,7 +22,7 @@ namespace maxillo::pipeline {
 struct PlanOutputs {
   std::vector<planning::SegmentStats> segments;  // volumes of the cut segments
   int64_t bone_voxels = 0;                       // input bone and teeth (== the segments' sum)
-  std::optional<planning::TransferModel> transfer_model;  // with a distraction only
+  std::optional<TransferModel> transfer_model;  // with a distraction only
   std::vector<std::pair<std::string, std::filesystem::path>> files;  // label -> file
   std::vector<std::filesystem::path> renders;    // frontal, lateral, oblique
 };

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 
+#include "ceph/landmark_frame.h"
 #include "core/error.h"
 #include "core/sha256.h"
 #include "render/anatomical_views.h"
@@ -115,7 +116,7 @@ std::optional<SoftTissueModel> parse_model(std::string_view name) {
 }
 
 std::vector<softtissue::RegionPlane> default_face_region_planes(const LandmarkSet& landmarks) {
-  const auto frame = render::anatomical_frame(landmarks);
+  const auto frame = anatomical_frame(landmarks);
   const auto orbitale = bilateral_mean(landmarks, "Or"), porion = bilateral_mean(landmarks, "Po");
   if (!orbitale || !porion) throw Error(ErrorCode::kBadValue, "face region", "needs the landmarks Or and Po (or their R/L)");
   const Eigen::Vector3d menton = require_landmark(landmarks, "Me", "face region");

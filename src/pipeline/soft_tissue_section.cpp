@@ -39,7 +39,7 @@ std::string count_text(const softtissue::BoundaryConditions& bc) {
          std::to_string(softtissue::count_nodes(bc, NodeConstraint::kFree)) + " free";
 }
 
-report::Table landmark_table(const SoftTissuePrediction& prediction, const render::AnatomicalFrame& frame,
+report::Table landmark_table(const SoftTissuePrediction& prediction, const AnatomicalFrame& frame,
                              const LandmarkSet& landmarks) {
   report::Table table;
   table.columns = {{"landmark", 0.25},
@@ -66,7 +66,7 @@ const std::vector<std::string>& soft_tissue_landmark_labels() {
 }
 
 SoftTissueViewFiles render_soft_tissue_views(const TriangleMesh& skin_before, const SoftTissuePrediction& prediction,
-                                             const render::AnatomicalFrame& frame, const std::filesystem::path& folder) {
+                                             const AnatomicalFrame& frame, const std::filesystem::path& folder) {
   std::filesystem::create_directories(folder);
   const auto bounds = union_bounds(skin_before, prediction.skin_after);  // the same cameras for all
   render::RenderSettings settings;
@@ -101,7 +101,7 @@ SoftTissueViewFiles render_soft_tissue_views(const TriangleMesh& skin_before, co
 }
 
 report::ImageGrid render_uncertainty_views(const TriangleMesh& skin_after, const std::vector<double>& spread_mm,
-                                           const render::AnatomicalFrame& frame, const std::filesystem::path& folder) {
+                                           const AnatomicalFrame& frame, const std::filesystem::path& folder) {
   const std::array views{render::StandardView::Frontal, render::StandardView::Lateral};
   render::VertexScalars spread;
   spread.values = spread_mm;
@@ -122,7 +122,7 @@ report::ImageGrid render_uncertainty_views(const TriangleMesh& skin_after, const
 }
 
 report::Section soft_tissue_section(const SoftTissuePrediction& prediction, const SoftTissueViewFiles& views,
-                                    const render::AnatomicalFrame& frame, const SoftTissueSummary& summary) {
+                                    const AnatomicalFrame& frame, const SoftTissueSummary& summary) {
   report::Section section{"soft_tissue", {}};
   section.blocks.push_back(report::Paragraph{
       "Predicted face for the planned bone moves (" + summary.plan_text + "), computed with the " +

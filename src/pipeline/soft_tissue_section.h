@@ -21,12 +21,12 @@ struct SoftTissueViewFiles {
 
 // Renders the nine images into `folder` (created) as soft-tissue-{before,after,displacement}-<view>.png.
 SoftTissueViewFiles render_soft_tissue_views(const TriangleMesh& skin_before, const SoftTissuePrediction& prediction,
-                                             const render::AnatomicalFrame& frame, const std::filesystem::path& folder);
+                                             const AnatomicalFrame& frame, const std::filesystem::path& folder);
 
 // The per-vertex uncertainty band on the predicted skin (frontal and lateral), as an image grid
 // of soft-tissue-uncertainty-<view>.png files written into `folder`.
 report::ImageGrid render_uncertainty_views(const TriangleMesh& skin_after, const std::vector<double>& spread_mm,
-                                           const render::AnatomicalFrame& frame, const std::filesystem::path& folder);
+                                           const AnatomicalFrame& frame, const std::filesystem::path& folder);
 
 struct SoftTissueSummary {
   std::string plan_text;          // e.g. "Le Fort I, maxilla 6.0 mm advancement"
@@ -35,7 +35,7 @@ struct SoftTissueSummary {
 };
 
 report::Section soft_tissue_section(const SoftTissuePrediction& prediction, const SoftTissueViewFiles& views,
-                                    const render::AnatomicalFrame& frame, const SoftTissueSummary& summary);
+                                    const AnatomicalFrame& frame, const SoftTissueSummary& summary);
 
 // The soft tissue landmarks the report lists when present (mid-sagittal profile points).
 const std::vector<std::string>& soft_tissue_landmark_labels();

@@ -7,7 +7,7 @@
 #include <limits>
 #include <string>
 
-#include "mesh/mesh_measures.h"
+#include "geometry/mesh_measures.h"
 
 namespace maxillo::pipeline {
 namespace {

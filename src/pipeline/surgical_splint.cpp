@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "core/error.h"
-#include "mesh/mesh_measures.h"
+#include "geometry/mesh_measures.h"
 #include "mesh/surface_extraction.h"
 
 namespace maxillo::pipeline {

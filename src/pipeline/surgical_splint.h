@@ -34,7 +34,7 @@ struct Splint {
 
 // The splint between the arches at their final occlusion (upper placed by upper_pose).
 // Throws Error(kProcessing) when the arches are not in occlusion or no closed surface results.
-Splint make_splint(const occlusion::DistanceField& upper, const occlusion::DistanceField& lower,
+Splint make_splint(const DistanceField& upper, const DistanceField& lower,
                    const Eigen::Isometry3d& upper_pose, const occlusion::SplintOptions& options = {});
 
 // Total length of `mesh`'s interior along the line through `point` with unit `direction` (the

@@ -10,8 +10,8 @@
 #include "imaging/segmentation.h"
 #include "imaging/volume_resample.h"
 #include "mesh/surface_extraction.h"
-#include "mesh/vertex_normals.h"
-#include "occlusion/signed_distance.h"
+#include "geometry/vertex_normals.h"
+#include "geometry/signed_distance.h"
 
 namespace maxillo::pipeline {
 namespace {
@@ -204,7 +204,7 @@ class PostopVoxels {
   }
 
   const PlannedCase& planned_;
-  occlusion::DistanceField skin_field_;
+  DistanceField skin_field_;
   double reach_mm_;
   SkinRamp ramp_;
   Box box_;

@@ -44,7 +44,7 @@ render::Bounds defined_bounds(const TriangleMesh& mesh, const std::vector<double
 // The longest run of consecutive polyline points inside the facial window, as (anterior, superior) millimetres from
 // the origin.
 render::ChartSeries facial_profile(const TriangleMesh& skin, const Eigen::Vector3d& origin,
-                                   const render::AnatomicalFrame& frame, double top, double bottom, double back,
+                                   const AnatomicalFrame& frame, double top, double bottom, double back,
                                    const std::string& name, render::ColourRGB colour) {
   render::ChartSeries best{name, {}, {}, colour};
   for (const auto& line : plane_section(skin, origin, frame.left)) {
@@ -72,7 +72,7 @@ render::ChartSeries facial_profile(const TriangleMesh& skin, const Eigen::Vector
 
 std::vector<std::filesystem::path> render_error_maps(const TriangleMesh& predicted,
                                                      const std::vector<double>& distance_mm,
-                                                     const render::AnatomicalFrame& frame, double range_mm,
+                                                     const AnatomicalFrame& frame, double range_mm,
                                                      const std::filesystem::path& folder) {
   if (std::all_of(distance_mm.begin(), distance_mm.end(), [](double d) { return std::isnan(d); }))
     throw Error(ErrorCode::kEmptyResult, "error map", "no predicted vertex has a distance to the post-operative skin");
@@ -100,7 +100,7 @@ std::vector<std::filesystem::path> render_error_maps(const TriangleMesh& predict
 }
 
 void write_profile_overlay(const TriangleMesh& preop, const TriangleMesh& predicted, const TriangleMesh& actual,
-                           const LandmarkSet& landmarks, const render::AnatomicalFrame& frame,
+                           const LandmarkSet& landmarks, const AnatomicalFrame& frame,
                            const std::filesystem::path& png) {
   const std::string subject = "profile overlay";
   const Eigen::Vector3d origin = require_landmark(landmarks, "Sn", subject);

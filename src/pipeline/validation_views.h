@@ -16,14 +16,14 @@ namespace maxillo::pipeline {
 // has one value per vertex, NaN outside the region.
 std::vector<std::filesystem::path> render_error_maps(const TriangleMesh& predicted,
                                                      const std::vector<double>& distance_mm,
-                                                     const render::AnatomicalFrame& frame, double range_mm,
+                                                     const AnatomicalFrame& frame, double range_mm,
                                                      const std::filesystem::path& folder);
 
 // The three skins cut by the mid-sagittal plane (through subnasale, normal to the frame's left axis), the facial part
 // of each profile (from above nasion to below the chin, the front of the head) drawn to scale: anterior to the right,
 // superior up, millimetres from subnasale.
 void write_profile_overlay(const TriangleMesh& preop, const TriangleMesh& predicted, const TriangleMesh& actual,
-                           const LandmarkSet& landmarks, const render::AnatomicalFrame& frame,
+                           const LandmarkSet& landmarks, const AnatomicalFrame& frame,
                            const std::filesystem::path& png);
 
 }  // namespace maxillo::pipeline

@@ -5,7 +5,7 @@
 #include <numbers>
 
 #include "ceph/cephalometric_measures.h"
-#include "render/anatomical_views.h"
+#include "ceph/landmark_frame.h"
 
 namespace maxillo::planning {
 namespace {
@@ -36,13 +36,13 @@ Matrix3d PlanningFrame::basis() const {
 }
 
 PlanningFrame planning_frame(const LandmarkSet& landmarks) {
-  const render::AnatomicalFrame frankfort = render::anatomical_frame(landmarks);
+  const AnatomicalFrame frankfort = anatomical_frame(landmarks);
   PlanningFrame frame;
   frame.origin = frankfort.origin;
   frame.anterior = frankfort.anterior;
   frame.left = frankfort.left;
   frame.superior = frankfort.superior;
-  frame.source = frankfort.source == render::FrameSource::Frankfort ? "Frankfort" : "patient axes";
+  frame.source = frankfort.source == FrameSource::Frankfort ? "Frankfort" : "patient axes";
 
   const auto s = find_landmark(landmarks, "S");
   const auto n = find_landmark(landmarks, "N");

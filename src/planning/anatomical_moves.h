@@ -2,12 +2,12 @@
 // The planning frame and rigid moves of a bone segment expressed in it (thesis ch. 5, Fig. 8).
 //
 // Frame (planning_frame): the source's nasion frame in 3D.
-//   left      = the Frankfort frame's transverse axis (render/anatomical_views.h: porions and
+//   left      = the Frankfort frame's transverse axis (geometry/anatomical_frame.h: porions and
 //               orbitales), which fixes the mid-sagittal plane far better than N and S;
 //   anterior  = S->N projected on the mid-sagittal plane, rotated about `left` by
 //               ceph::kNasionFrameRotationDeg (6 deg) so that its anterior end goes down: the
 //               source's X axis, close to Frankfort horizontal;
-//   superior  = anterior x left (right-handed, as render::AnatomicalFrame);
+//   superior  = anterior x left (right-handed, as AnatomicalFrame);
 //   origin    = N.
 //   Without S and N the Frankfort frame itself is used (source "Frankfort"), and without
 //   porions/orbitales the scanner's patient axes (source "patient axes").

@@ -7,7 +7,7 @@
 #include "core/error.h"
 #include "planning/osteotomy.h"
 #include "planning/voxel_components.h"
-#include "render/anatomical_views.h"
+#include "ceph/landmark_frame.h"
 
 namespace maxillo::planning {
 namespace {
@@ -29,14 +29,14 @@ CutPlane occlusal_plane(const LandmarkSet& landmarks) {
   const Eigen::Vector3d incisor = contact(landmarks, "U1", "L1");
   const Eigen::Vector3d right = contact(landmarks, "U6R", "L6R"), left = contact(landmarks, "U6L", "L6L");
   Eigen::Vector3d normal = (right - incisor).cross(left - incisor).normalized();
-  const auto frame = render::anatomical_frame(landmarks);
+  const auto frame = anatomical_frame(landmarks);
   if (normal.dot(frame.superior) > 0) normal = -normal;
   return {(incisor + right + left) / 3.0, normal};
 }
 
 // Coronal plane behind the second molars (normal pointing back): the rami lie behind it.
 CutPlane dental_arch_end(const LandmarkSet& landmarks, const JawSeparationOptions& o) {
-  const auto frame = render::anatomical_frame(landmarks);
+  const auto frame = anatomical_frame(landmarks);
   const Eigen::Vector3d molars = 0.5 * (contact(landmarks, "U6R", "L6R") + contact(landmarks, "U6L", "L6L"));
   return {molars - o.arch_behind_first_molar_mm * frame.anterior, -frame.anterior};
 }
@@ -45,7 +45,7 @@ CutPlane dental_arch_end(const LandmarkSet& landmarks, const JawSeparationOption
 std::optional<CutPlane> in_front_of_ears(const LandmarkSet& landmarks, const JawSeparationOptions& o) {
   auto right = find_landmark(landmarks, "PoR"), left = find_landmark(landmarks, "PoL");
   if (!right || !left) return std::nullopt;
-  const auto frame = render::anatomical_frame(landmarks);
+  const auto frame = anatomical_frame(landmarks);
   return CutPlane{0.5 * (*right + *left) + o.condyle_in_front_of_porion_mm * frame.anterior, frame.anterior};
 }
 

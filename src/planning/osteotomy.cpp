@@ -7,7 +7,7 @@
 
 #include "core/error.h"
 #include "planning/voxel_components.h"
-#include "render/anatomical_views.h"
+#include "ceph/landmark_frame.h"
 
 namespace maxillo::planning {
 namespace {
@@ -142,7 +142,7 @@ std::optional<Segment> parse_segment(std::string_view name) {
 
 CutPlane default_le_fort_i(const LandmarkSet& landmarks, LeFortVariant variant) {
   const auto ans = require_landmark(landmarks, "ANS", "Le Fort I"), pns = require_landmark(landmarks, "PNS", "Le Fort I");
-  const auto frame = render::anatomical_frame(landmarks);
+  const auto frame = anatomical_frame(landmarks);
   // Parallel to the palatal plane: its anterior direction, tilted about the transverse axis only.
   Eigen::Vector3d palatal = ans - pns;
   palatal -= frame.left * frame.left.dot(palatal);
@@ -160,12 +160,12 @@ CutPlane default_le_fort_i(const LandmarkSet& landmarks, LeFortVariant variant) 
 
 CutPlane default_pterygomaxillary(const LandmarkSet& landmarks) {
   const auto pns = require_landmark(landmarks, "PNS", "pterygomaxillary junction");
-  const auto frame = render::anatomical_frame(landmarks);
+  const auto frame = anatomical_frame(landmarks);
   return {pns - kPterygomaxillaryBehindPns * frame.anterior, frame.anterior};
 }
 
 std::pair<CutPlane, CutPlane> default_bsso(const LandmarkSet& landmarks) {
-  const auto frame = render::anatomical_frame(landmarks);
+  const auto frame = anatomical_frame(landmarks);
   auto side_cut = [&](const char* side) {
     const std::string molar = std::string("L6") + side;
     return CutPlane{require_landmark(landmarks, molar, "BSSO") - kBssoBehindFirstMolar * frame.anterior, frame.anterior};
@@ -187,7 +187,7 @@ Osteotomies default_osteotomies(const LandmarkSet& landmarks, const OsteotomyCho
 CutPlane default_genioplasty(const LandmarkSet& landmarks) {
   const auto b = require_landmark(landmarks, "B", "genioplasty"), me = require_landmark(landmarks, "Me", "genioplasty");
   const auto pog = require_landmark(landmarks, "Pog", "genioplasty");
-  const auto frame = render::anatomical_frame(landmarks);
+  const auto frame = anatomical_frame(landmarks);
   const double height = frame.superior.dot(b - me);
   // On the chin's front at the cut height, descending posteriorly by the tilt.
   Eigen::Vector3d point = pog + frame.superior * (frame.superior.dot(me - pog) + kGenioplastyFractionAboveMe * height);

@@ -9,39 +9,7 @@
 namespace maxillo::render {
 namespace {
 
-constexpr double kMinPorionDistanceMm = 20;
 constexpr double kPerspectiveAngleDeg = 15;
-
-std::optional<Eigen::Vector3d> mean_of_present(const std::optional<Eigen::Vector3d>& a,
-                                               const std::optional<Eigen::Vector3d>& b) {
-  if (a && b) return 0.5 * (*a + *b);
-  if (a) return a;
-  return b;
-}
-
-std::optional<AnatomicalFrame> frankfort_frame(const LandmarkSet& landmarks) {
-  auto po_r = find_landmark(landmarks, "PoR"), po_l = find_landmark(landmarks, "PoL");
-  auto or_r = find_landmark(landmarks, "OrR"), or_l = find_landmark(landmarks, "OrL");
-  auto orbitale = mean_of_present(or_r, or_l);
-  if (!po_r || !po_l || !orbitale) return std::nullopt;
-  Eigen::Vector3d transverse = *po_l - *po_r;
-  if (transverse.norm() < kMinPorionDistanceMm) return std::nullopt;
-  Eigen::Vector3d left = transverse.normalized();
-  if (or_r && or_l && (*or_l - *or_r).norm() > kMinPorionDistanceMm / 2)
-    left = (left + (*or_l - *or_r).normalized()).normalized();
-
-  AnatomicalFrame frame;
-  frame.origin = 0.5 * (*po_r + *po_l);
-  Eigen::Vector3d forward = *orbitale - frame.origin;
-  Eigen::Vector3d superior = forward.cross(left);
-  // Orbitales must lie well in front of the porions, not along the transverse axis.
-  if (superior.norm() < 0.5 * forward.norm()) return std::nullopt;
-  frame.left = left;
-  frame.superior = superior.normalized();
-  frame.anterior = frame.left.cross(frame.superior);
-  frame.source = FrameSource::Frankfort;
-  return frame;
-}
 
 // Unit vector from the focal point towards the camera.
 Eigen::Vector3d towards_camera(StandardView view, const AnatomicalFrame& frame) {
@@ -55,11 +23,6 @@ Eigen::Vector3d towards_camera(StandardView view, const AnatomicalFrame& frame) 
 }
 
 }  // namespace
-
-AnatomicalFrame anatomical_frame(const LandmarkSet& landmarks) {
-  if (auto frame = frankfort_frame(landmarks)) return *frame;
-  return AnatomicalFrame{};
-}
 
 std::string_view name_of(StandardView view) {
   switch (view) {

@@ -1,21 +1,6 @@
 #pragma once
-// Where to put the camera for the standard clinical views. Pure Eigen, no VTK.
-//
-// Anatomical frame. Built from landmarks when they allow it, otherwise from the patient axes:
-//   * Landmarks (FrameSource::Frankfort): needs PoR, PoL (porions) and OrR and/or OrL (orbitales).
-//       left      = unit(PoL - PoR), averaged with unit(OrL - OrR) when both orbitales exist
-//                   (the two transverse axes of the Frankfort horizontal agree to a few degrees,
-//                   and averaging halves the effect of one misplaced point);
-//       superior  = unit(forward x left), forward = mean(Or) - mean(Po): the normal of the
-//                   Frankfort horizontal (the plane through the porions and orbitales);
-//       anterior  = left x superior (in the FH plane, perpendicular to the transverse axis).
-//       origin    = midpoint of the porions.
-//     Why not the mid-sagittal plane through N, S: N and S lie 60-70 mm apart on nearly the
-//     same line as the FH's anterior axis, so the plane's tilt is poorly conditioned; the
-//     porion-porion distance (~120 mm) fixes the transverse axis far better.
-//     Degenerate input (porions < 20 mm apart, orbitales not anterior to them) falls back.
-//   * Patient axes (FrameSource::PatientAxes): anterior = -y, superior = +z, left = +x (LPS),
-//     origin = 0. Correct for a head scanned in the usual supine position.
+// Where to put the camera for the standard clinical views, in the patient's anatomical frame
+// (geometry/anatomical_frame.h). Pure Eigen, no VTK.
 //
 // Views (each looks at the scene centre, superior axis up in the image):
 //   Frontal : camera in front of the face; the patient's left is on the image's right.
@@ -26,23 +11,10 @@
 #include <optional>
 #include <string_view>
 
-#include "ceph/landmark.h"
+#include "geometry/anatomical_frame.h"
 #include "render/scene.h"
 
 namespace maxillo::render {
-
-enum class FrameSource { Frankfort, PatientAxes };
-
-struct AnatomicalFrame {
-  Eigen::Vector3d origin = Eigen::Vector3d::Zero();     // LPS mm
-  Eigen::Vector3d anterior = -Eigen::Vector3d::UnitY();  // unit vectors, right-handed:
-  Eigen::Vector3d superior = Eigen::Vector3d::UnitZ();   // anterior x left = superior
-  Eigen::Vector3d left = Eigen::Vector3d::UnitX();
-  FrameSource source = FrameSource::PatientAxes;
-};
-
-// The Frankfort frame when the landmarks allow it, else the patient-axes frame (see above).
-AnatomicalFrame anatomical_frame(const LandmarkSet& landmarks);
 
 enum class StandardView { Frontal, Lateral, Oblique };
 

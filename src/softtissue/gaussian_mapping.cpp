@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <deque>
 
-#include "occlusion/aabb_tree.h"
+#include "geometry/aabb_tree.h"
 #include "softtissue/tet_boundary.h"
 
 namespace maxillo::softtissue {
@@ -31,7 +31,7 @@ void vertex_adjacency(const TriangleMesh& mesh, std::vector<int>& offsets, std::
 }
 
 // The skin vertex closest to p: the nearest vertex of the nearest skin triangle.
-int closest_vertex(const occlusion::AabbTree& tree, const TriangleMesh& skin, const Eigen::Vector3d& p, double reach) {
+int closest_vertex(const AabbTree& tree, const TriangleMesh& skin, const Eigen::Vector3d& p, double reach) {
   const auto nearest = tree.nearest(p, reach);
   if (nearest.face < 0) return -1;
   int best = -1;

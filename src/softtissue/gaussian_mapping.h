@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "core/triangle_mesh.h"
-#include "occlusion/aabb_tree.h"
+#include "geometry/aabb_tree.h"
 #include "softtissue/tet_boundary.h"
 #include "softtissue/tet_mesh.h"
 
@@ -34,7 +34,7 @@ struct GaussianMapping {
 struct SkinIndex {
   explicit SkinIndex(const TriangleMesh& skin);
   const TriangleMesh* skin;
-  occlusion::AabbTree tree;
+  AabbTree tree;
   std::vector<int> offsets, neighbours;
 };
 

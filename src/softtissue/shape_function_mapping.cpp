@@ -3,7 +3,7 @@
 #include <Eigen/LU>
 #include <algorithm>
 
-#include "occlusion/aabb_tree.h"
+#include "geometry/aabb_tree.h"
 #include "softtissue/tet_boundary.h"
 #include "softtissue/tet_locator.h"
 
@@ -24,7 +24,7 @@ Eigen::Vector4d shape_functions(const TetMesh& mesh, int t, const Eigen::Vector3
 ShapeFunctionMapping init_shape_function_mapping(const TetMesh& mesh, const VertexMatrix& points,
                                                  double max_distance_mm) {
   const TetBoundary boundary = tet_boundary(mesh);
-  const occlusion::AabbTree tree(boundary.surface);
+  const AabbTree tree(boundary.surface);
   const TetLocator locator(mesh);
   ShapeFunctionMapping mapping;
   mapping.tet.assign(size_t(points.rows()), -1);

@@ -11,8 +11,8 @@
 #include <unordered_map>
 
 #include "core/error.h"
-#include "occlusion/aabb_tree.h"
-#include "occlusion/signed_distance.h"
+#include "geometry/aabb_tree.h"
+#include "geometry/signed_distance.h"
 
 namespace maxillo::validation {
 namespace {
@@ -266,7 +266,7 @@ TriangleMesh included_faces(const TriangleMesh& mesh, const std::vector<bool>& i
 // The vertices of `actual` within `reach` mm of `region` (all of them when the region has no faces).
 VertexMatrix vertices_near(const TriangleMesh& actual, const TriangleMesh& region, double reach) {
   if (region.face_count() == 0) return actual.vertices;
-  const occlusion::AabbTree tree(region);
+  const AabbTree tree(region);
   std::vector<Eigen::Index> kept;
   for (Eigen::Index v = 0; v < actual.vertex_count(); ++v)
     if (tree.nearest(actual.vertices.row(v).transpose(), reach).face >= 0) kept.push_back(v);
@@ -297,7 +297,7 @@ std::vector<double> corresponding_point_distances(const TriangleMesh& predicted,
   const CpdResult registration = nonrigid_cpd(fixed, moving, options);
 
   // Each correspondence projected onto the actual surface; the sign from its outward normal there.
-  const occlusion::DistanceField field(actual);
+  const DistanceField field(actual);
   std::vector<double> distances;
   distances.reserve(chosen.size());
   for (Eigen::Index i = 0; i < moving.rows(); ++i) {

@@ -5,7 +5,7 @@
 #include <limits>
 #include <numeric>
 
-#include "occlusion/signed_distance.h"
+#include "geometry/signed_distance.h"
 
 namespace maxillo::validation {
 
@@ -53,7 +53,7 @@ std::vector<double> signed_surface_distances(const TriangleMesh& predicted, cons
 
 std::vector<double> signed_distance_map(const TriangleMesh& predicted, const TriangleMesh& actual,
                                         const std::vector<bool>& include, double max_distance_mm) {
-  const occlusion::DistanceField field(actual);
+  const DistanceField field(actual);
   std::vector<double> map(size_t(predicted.vertex_count()), std::numeric_limits<double>::quiet_NaN());
   for (Eigen::Index v = 0; v < predicted.vertex_count(); ++v) {
     if (!include.empty() && !include[size_t(v)]) continue;

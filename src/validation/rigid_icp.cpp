@@ -10,13 +10,12 @@
 #include <vector>
 
 #include "core/error.h"
-#include "mesh/vertex_normals.h"
-#include "occlusion/aabb_tree.h"
+#include "geometry/vertex_normals.h"
+#include "geometry/aabb_tree.h"
 
 namespace maxillo::validation {
 namespace {
 
-using occlusion::TriangleFeature;
 
 // Pairs whose normals differ by more than this are not the same piece of surface.
 const double kMinNormalCosine = std::cos(60.0 * M_PI / 180.0);
@@ -103,10 +102,10 @@ class Matcher {
  private:
   const TriangleMesh& moving_;
   const TriangleMesh& target_;
-  occlusion::AabbTree tree_;
+  AabbTree tree_;
   Border border_;
   const IcpOptions& options_;
-  VertexMatrix moving_normals_;  // unit, area-weighted (mesh/vertex_normals.h)
+  VertexMatrix moving_normals_;  // unit, area-weighted (geometry/vertex_normals.h)
   std::vector<Eigen::Vector3d> face_normals_;
   std::vector<int> samples_;
 };

@@ -2,14 +2,14 @@
 
 #include <algorithm>
 
-#include "mesh/vertex_normals.h"
-#include "occlusion/signed_distance.h"
+#include "geometry/vertex_normals.h"
+#include "geometry/signed_distance.h"
 
 namespace maxillo::validation {
 
 std::vector<bool> cavity_vertices(const TriangleMesh& skin, const std::vector<bool>& include,
                                   const CavityOptions& options) {
-  const occlusion::DistanceField field(skin);
+  const DistanceField field(skin);
   const VertexMatrix normals = vertex_normals(skin);
   std::vector<bool> cavity(size_t(skin.vertex_count()), false);
   for (Eigen::Index v = 0; v < skin.vertex_count(); ++v) {

@@ -9,7 +9,7 @@
 #include "archive_fixture.h"
 #include "core/error.h"
 #include "mesh/mesh_io.h"
-#include "mesh/test_shapes.h"
+#include "support/test_shapes.h"
 #include "support/run_maxillo.h"
 
 namespace maxillo {

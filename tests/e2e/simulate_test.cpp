@@ -8,7 +8,7 @@
 #include "core/json.h"
 #include "core/temporary_folder.h"
 #include "mesh/mesh_io.h"
-#include "mesh/mesh_measures.h"
+#include "geometry/mesh_measures.h"
 #include "support/run_maxillo.h"
 
 namespace maxillo {

@@ -13,7 +13,7 @@
 #include "imaging/segmentation.h"
 #include "imaging/volume_assembly.h"
 #include "imaging/volume_file.h"
-#include "mesh/mesh_measures.h"
+#include "geometry/mesh_measures.h"
 #include "mesh/surface_extraction.h"
 #include "support/run_command.h"
 #include "support/temporary_folder.h"

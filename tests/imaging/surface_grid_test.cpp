@@ -8,7 +8,7 @@
 
 #include "core/iso_restriction.h"
 #include "imaging/segmentation.h"
-#include "mesh/mesh_measures.h"
+#include "geometry/mesh_measures.h"
 #include "mesh/surface_extraction.h"
 #include "sample/phantom.h"
 #include "validation/distance_statistics.h"

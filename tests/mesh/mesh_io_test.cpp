@@ -6,10 +6,10 @@
 #include <fstream>
 
 #include "core/error.h"
-#include "mesh/mesh_measures.h"
+#include "geometry/mesh_measures.h"
 #include "mesh/surface_extraction.h"
 #include "support/temporary_folder.h"
-#include "test_shapes.h"
+#include "support/test_shapes.h"
 
 namespace maxillo {
 namespace {

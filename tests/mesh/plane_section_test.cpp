@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "core/error.h"
-#include "mesh/mesh_transform.h"
+#include "geometry/mesh_transform.h"
 #include "mesh/plane_section.h"
 #include "mesh/surface_extraction.h"
 

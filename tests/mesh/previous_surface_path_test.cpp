@@ -17,7 +17,7 @@
 
 #include "imaging/segmentation.h"
 #include "imaging/volume_file.h"
-#include "mesh/mesh_measures.h"
+#include "geometry/mesh_measures.h"
 #include "mesh/mesh_repair.h"
 #include "mesh/surface_extraction.h"
 #include "mesh/vtk_bridge.h"  // the mesh module's own tests may use its VTK bridge

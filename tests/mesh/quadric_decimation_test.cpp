@@ -9,8 +9,8 @@
 #include <map>
 #include <numbers>
 
-#include "mesh/mesh_measures.h"
-#include "test_shapes.h"
+#include "geometry/mesh_measures.h"
+#include "support/test_shapes.h"
 
 namespace maxillo {
 namespace {

@@ -7,8 +7,8 @@
 #include <Eigen/Geometry>
 #include <numbers>
 
-#include "mesh/mesh_measures.h"
-#include "test_shapes.h"
+#include "geometry/mesh_measures.h"
+#include "support/test_shapes.h"
 
 namespace maxillo {
 namespace {

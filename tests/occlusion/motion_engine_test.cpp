@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "occlusion/guided_alignment.h"
-#include "occlusion/test_meshes.h"
+#include "support/test_meshes.h"
 
 namespace maxillo::occlusion {
 namespace {

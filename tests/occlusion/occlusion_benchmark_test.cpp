@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "occlusion/test_meshes.h"
+#include "support/test_meshes.h"
 
 namespace maxillo::occlusion {
 namespace {

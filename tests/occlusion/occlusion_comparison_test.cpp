@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "occlusion/test_meshes.h"
+#include "support/test_meshes.h"
 
 namespace maxillo::occlusion {
 namespace {

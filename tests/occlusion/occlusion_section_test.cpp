@@ -8,8 +8,8 @@ namespace maxillo::pipeline {
 namespace {
 
 // A Frankfort-like frame turned 90 degrees from the scanner axes, so a wrong axis shows.
-render::AnatomicalFrame turned_frame() {
-  render::AnatomicalFrame frame;
+AnatomicalFrame turned_frame() {
+  AnatomicalFrame frame;
   frame.anterior = Eigen::Vector3d(1, 0, 0);
   frame.left = Eigen::Vector3d(0, 1, 0);
   frame.superior = frame.anterior.cross(frame.left);  // (0, 0, 1)
@@ -29,7 +29,7 @@ TEST(AnatomicalMotion, ReadsATranslationAlongTheFrameAxes) {
 }
 
 TEST(AnatomicalMotion, ARotationAboutTheLeftAxisIsPitchWithTheFrontGoingUp) {
-  const render::AnatomicalFrame frame = turned_frame();
+  const AnatomicalFrame frame = turned_frame();
   const Eigen::Vector3d reference(0, 0, 0);
   // anterior x left = superior, so turning the front up is a negative turn about `left`.
   Eigen::Isometry3d motion(Eigen::AngleAxisd(-4 * M_PI / 180, frame.left));
@@ -45,7 +45,7 @@ TEST(AnatomicalMotion, ARotationAboutTheLeftAxisIsPitchWithTheFrontGoingUp) {
 }
 
 TEST(AnatomicalMotion, YawAndRollFollowTheirAxes) {
-  const render::AnatomicalFrame frame = turned_frame();
+  const AnatomicalFrame frame = turned_frame();
   const AnatomicalMotion yaw =
       anatomical_motion(Eigen::Isometry3d(Eigen::AngleAxisd(-3 * M_PI / 180, frame.superior)), frame, {0, 0, 0});
   EXPECT_NEAR(yaw.yaw_deg, -3, 1e-9);

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <random>
 
-#include "mesh/mesh_measures.h"
+#include "geometry/mesh_measures.h"
 #include "occlusion/splint_field.h"
-#include "occlusion/test_meshes.h"
+#include "support/test_meshes.h"
 #include "pipeline/surgical_splint.h"
 
 namespace maxillo::occlusion {

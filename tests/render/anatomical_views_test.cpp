@@ -7,65 +7,9 @@
 namespace maxillo::render {
 namespace {
 
-// Porions and orbitales of an average adult head in a frame where anterior = -y,
-// superior = +z, left = +x (mm).
-LandmarkSet canonical_landmarks() {
-  return {{"PoR", {-60, 10, 0}}, {"PoL", {60, 10, 0}}, {"OrR", {-33, -70, 0}}, {"OrL", {33, -70, 0}},
-          {"N", {0, -90, 25}}, {"S", {0, -20, 20}}};
-}
-
-LandmarkSet transformed(const LandmarkSet& set, const Eigen::Matrix3d& rotation, const Eigen::Vector3d& shift) {
-  LandmarkSet out = set;
-  for (auto& landmark : out) landmark.position = rotation * landmark.position + shift;
-  return out;
-}
-
 void expect_near(const Eigen::Vector3d& actual, const Eigen::Vector3d& expected, double tolerance) {
   EXPECT_LT((actual - expected).norm(), tolerance) << "actual " << actual.transpose() << " expected "
                                                    << expected.transpose();
-}
-
-TEST(AnatomicalFrame, WithoutLandmarksUsesPatientAxes) {
-  auto frame = anatomical_frame({});
-  EXPECT_EQ(frame.source, FrameSource::PatientAxes);
-  expect_near(frame.anterior, {0, -1, 0}, 1e-12);
-  expect_near(frame.superior, {0, 0, 1}, 1e-12);
-  expect_near(frame.left, {1, 0, 0}, 1e-12);
-}
-
-TEST(AnatomicalFrame, FrankfortFrameFollowsARotatedHead) {
-  // Head pitched 20 degrees chin-down and turned 30 degrees, then moved.
-  Eigen::Matrix3d rotation = (Eigen::AngleAxisd(0.35, Eigen::Vector3d::UnitX()) *
-                              Eigen::AngleAxisd(0.52, Eigen::Vector3d::UnitZ())).toRotationMatrix();
-  Eigen::Vector3d shift(12, -150, 300);
-  auto frame = anatomical_frame(transformed(canonical_landmarks(), rotation, shift));
-  EXPECT_EQ(frame.source, FrameSource::Frankfort);
-  expect_near(frame.anterior, rotation * Eigen::Vector3d(0, -1, 0), 1e-9);
-  expect_near(frame.superior, rotation * Eigen::Vector3d(0, 0, 1), 1e-9);
-  expect_near(frame.left, rotation * Eigen::Vector3d(1, 0, 0), 1e-9);
-  expect_near(frame.origin, rotation * Eigen::Vector3d(0, 10, 0) + shift, 1e-9);
-  EXPECT_NEAR(frame.anterior.cross(frame.left).dot(frame.superior), 1.0, 1e-12);  // right-handed
-}
-
-TEST(AnatomicalFrame, OneOrbitaleIsEnoughAndFrameStaysOrthonormal) {
-  LandmarkSet set = {{"PoR", {-60, 10, 3}}, {"PoL", {60, 12, -2}}, {"OrL", {33, -70, 1}}};
-  auto frame = anatomical_frame(set);
-  ASSERT_EQ(frame.source, FrameSource::Frankfort);
-  EXPECT_NEAR(frame.anterior.norm(), 1, 1e-12);
-  EXPECT_NEAR(frame.anterior.dot(frame.left), 0, 1e-12);
-  EXPECT_NEAR(frame.superior.dot(frame.left), 0, 1e-12);
-  EXPECT_GT(frame.anterior.dot(Eigen::Vector3d(0, -1, 0)), 0.99);
-}
-
-TEST(AnatomicalFrame, DegenerateLandmarksFallBack) {
-  // Porions 5 mm apart: no reliable transverse axis.
-  EXPECT_EQ(anatomical_frame({{"PoR", {-2, 0, 0}}, {"PoL", {3, 0, 0}}, {"OrR", {0, -70, 0}}}).source,
-            FrameSource::PatientAxes);
-  // Orbitale on the porion axis: no forward direction.
-  EXPECT_EQ(anatomical_frame({{"PoR", {-60, 0, 0}}, {"PoL", {60, 0, 0}}, {"OrR", {30, 0, 0}}}).source,
-            FrameSource::PatientAxes);
-  // Missing orbitales.
-  EXPECT_EQ(anatomical_frame({{"PoR", {-60, 0, 0}}, {"PoL", {60, 0, 0}}}).source, FrameSource::PatientAxes);
 }
 
 TEST(StandardView, NamesRoundTripAndUnknownIsRejected) {

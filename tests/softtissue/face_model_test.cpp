@@ -2,7 +2,7 @@
 // mappings from the tet mesh to the skin.
 #include <gtest/gtest.h>
 
-#include "mesh/mesh_measures.h"
+#include "geometry/mesh_measures.h"
 #include "softtissue/bone_attachment.h"
 #include "softtissue/cube_mesh.h"
 #include "softtissue/face_region.h"

@@ -1,15 +1,15 @@
-#include "planning/transfer_model.h"
+#include "pipeline/transfer_model.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 
 #include "core/error.h"
-#include "mesh/mesh_measures.h"
+#include "geometry/mesh_measures.h"
 #include "mesh/surface_extraction.h"
 #include "planning/osteotomy.h"
 
-namespace maxillo::planning {
+namespace maxillo::pipeline {
 namespace {
 
 struct Box {
@@ -28,7 +28,7 @@ Box model_box(const LabelVolume& segments, const std::vector<ScrewAxis>& screws,
   Box box;
   const int64_t nx = g.size.x(), ny = g.size.y();
   for (int64_t v = 0; v < int64_t(segments.labels.size()); ++v)
-    if (segments.labels[size_t(v)] == uint8_t(Segment::kMaxilla))
+    if (segments.labels[size_t(v)] == uint8_t(planning::Segment::kMaxilla))
       box.extend(Eigen::Vector3d(double(v % nx), double((v / nx) % ny), double(v / (nx * ny))).cwiseProduct(g.spacing));
   if (box.empty()) throw Error(ErrorCode::kEmptyResult, "transfer model", "the plan has no Le Fort I maxilla segment");
   for (const auto& s : screws) {
@@ -67,7 +67,7 @@ TubePart tube_part(const Eigen::Vector3d& p, const std::vector<ScrewAxis>& screw
 }
 
 bool is_midface(uint8_t segment) {
-  return segment == uint8_t(Segment::kCranium) || segment == uint8_t(Segment::kMaxilla);
+  return segment == uint8_t(planning::Segment::kCranium) || segment == uint8_t(planning::Segment::kMaxilla);
 }
 
 }  // namespace
@@ -108,4 +108,4 @@ TransferModel make_transfer_model(const LabelVolume& segments, const std::vector
   return result;
 }
 
-}  // namespace maxillo::planning
+}  // namespace maxillo::pipeline

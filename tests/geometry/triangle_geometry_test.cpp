@@ -1,10 +1,10 @@
-#include "occlusion/triangle_geometry.h"
+#include "geometry/triangle_geometry.h"
 
 #include <gtest/gtest.h>
 
 #include <random>
 
-namespace maxillo::occlusion {
+namespace maxillo {
 namespace {
 
 using Eigen::Vector3d;
@@ -97,4 +97,4 @@ TEST(ClosestPointOnTriangle, ReportsTheFeature) {
 }
 
 }  // namespace
-}  // namespace maxillo::occlusion
+}  // namespace maxillo

@@ -1,9 +1,9 @@
-#include "occlusion/aabb_tree.h"
+#include "geometry/aabb_tree.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace maxillo::occlusion {
+namespace maxillo {
 namespace {
 
 constexpr int kLeafSize = 4;
@@ -167,4 +167,4 @@ NearestPoint AabbTree::nearest(const Eigen::Vector3d& p, double max_distance) co
   return best;
 }
 
-}  // namespace maxillo::occlusion
+}  // namespace maxillo

@@ -14,7 +14,7 @@
 #include "core/triangle_mesh.h"
 #include "core/volume.h"
 
-namespace maxillo::planning {
+namespace maxillo::pipeline {
 
 // A distraction screw: it enters the anterior maxillary wall at `entry` and runs `length_mm`
 // along the unit `direction` (the distraction vector, pointing backwards into the sinus).
@@ -45,4 +45,4 @@ struct TransferModel {
 TransferModel make_transfer_model(const LabelVolume& segments, const std::vector<ScrewAxis>& screws,
                                   const TransferModelOptions& options = {});
 
-}  // namespace maxillo::planning
+}  // namespace maxillo::pipeline

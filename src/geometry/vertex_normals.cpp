@@ -1,4 +1,4 @@
-#include "mesh/vertex_normals.h"
+#include "geometry/vertex_normals.h"
 
 #include <Eigen/Geometry>
 

@@ -3,7 +3,7 @@
 // distance queries. Coordinates in any common frame, millimetres.
 #include <Eigen/Geometry>
 
-namespace maxillo::occlusion {
+namespace maxillo {
 
 struct Triangle {
   Eigen::Vector3d a, b, c;
@@ -27,4 +27,4 @@ struct ClosestPoint {
 // The point of the closed triangle nearest to `p` (Ericson, Real-Time Collision Detection 5.1.5).
 ClosestPoint closest_point_on_triangle(const Eigen::Vector3d& p, const Triangle& t);
 
-}  // namespace maxillo::occlusion
+}  // namespace maxillo

@@ -1,11 +1,11 @@
 // The hierarchy must give exactly the brute-force answers: every triangle pair tested.
-#include "occlusion/aabb_tree.h"
+#include "geometry/aabb_tree.h"
 
 #include <gtest/gtest.h>
 
-#include "occlusion/test_meshes.h"
+#include "support/test_meshes.h"
 
-namespace maxillo::occlusion {
+namespace maxillo {
 namespace {
 
 using testing::random_pose;
@@ -93,4 +93,4 @@ TEST(AabbTree, FacesNearContainEveryFaceWithinTheGap) {
 }
 
 }  // namespace
-}  // namespace maxillo::occlusion
+}  // namespace maxillo

@@ -1,10 +1,10 @@
-#include "occlusion/signed_distance.h"
+#include "geometry/signed_distance.h"
 
 #include <algorithm>
 #include <cmath>
 #include <map>
 
-namespace maxillo::occlusion {
+namespace maxillo {
 namespace {
 
 using Eigen::Vector3d;
@@ -74,4 +74,4 @@ SignedDistance DistanceField::signed_distance(const Vector3d& p, double max_dist
   return {true, sign * nearest.distance, nearest.point, normal, nearest.face};
 }
 
-}  // namespace maxillo::occlusion
+}  // namespace maxillo

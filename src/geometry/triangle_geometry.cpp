@@ -1,9 +1,9 @@
-#include "occlusion/triangle_geometry.h"
+#include "geometry/triangle_geometry.h"
 
 #include <algorithm>
 #include <array>
 
-namespace maxillo::occlusion {
+namespace maxillo {
 namespace {
 
 using Eigen::Vector3d;
@@ -93,4 +93,4 @@ ClosestPoint closest_point_on_triangle(const Eigen::Vector3d& p, const Triangle&
   return {t.a + ab * v + ac * w, TriangleFeature::Face};
 }
 
-}  // namespace maxillo::occlusion
+}  // namespace maxillo

@@ -1,12 +1,12 @@
-#include "planning/plan_views.h"
+#include "pipeline/plan_views.h"
 
 #include <deque>
 
 #include "core/parallel_slabs.h"
-#include "mesh/mesh_transform.h"
+#include "geometry/mesh_transform.h"
 #include "mesh/surface_extraction.h"
 
-namespace maxillo::planning {
+namespace maxillo::pipeline {
 namespace {
 
 constexpr render::ColourRGB kMovedSegment{0.55, 0.75, 0.95};  // planned position: light blue
@@ -20,7 +20,7 @@ constexpr double kScrewRadiusMm = 1.0;
 constexpr double kRodInFrontMm = 12;
 constexpr double kFocusMarginMm = 25;  // around the moved segments and screws  // the activation rod's part in front of the entry point
 
-const SegmentTransform* move_of(const std::vector<SegmentTransform>& moves, Segment segment) {
+const SegmentTransform* move_of(const std::vector<SegmentTransform>& moves, planning::Segment segment) {
   for (const auto& m : moves)
     if (m.segment == segment) return &m;
   return nullptr;
@@ -30,7 +30,7 @@ bool moves(const SegmentTransform* move) { return move && !move->transform.isApp
 
 }  // namespace
 
-std::vector<SegmentSurface> segment_surfaces(const OsteotomyResult& cut, int64_t target_triangles) {
+std::vector<SegmentSurface> segment_surfaces(const planning::OsteotomyResult& cut, int64_t target_triangles) {
   SurfaceOptions options;
   options.keep_largest_components = 0;  // a segment may be several pieces (nasal bones, rami)
   options.target_triangles = target_triangles;
@@ -40,7 +40,7 @@ std::vector<SegmentSurface> segment_surfaces(const OsteotomyResult& cut, int64_t
       0, int(cut.stats.size()),
       [&](int first, int last) {
         for (int s = first; s < last; ++s) {
-          const Segment segment = cut.stats[size_t(s)].segment;
+          const planning::Segment segment = cut.stats[size_t(s)].segment;
           surfaces[size_t(s)] = {segment, extract_surface(cut.segments, uint8_t(segment), options)};
         }
       },
@@ -51,7 +51,7 @@ std::vector<SegmentSurface> segment_surfaces(const OsteotomyResult& cut, int64_t
 std::vector<render::ViewFile> render_planned_skeleton(const std::vector<SegmentSurface>& surfaces,
                                                       const std::vector<SegmentTransform>& moves_by_segment,
                                                       const std::vector<ScrewAxis>& screws,
-                                                      const render::AnatomicalFrame& frame,
+                                                      const AnatomicalFrame& frame,
                                                       std::span<const render::StandardView> views,
                                                       const std::filesystem::path& folder, std::string_view prefix,
                                                       const render::RenderSettings& settings) {
@@ -81,4 +81,4 @@ std::vector<render::ViewFile> render_planned_skeleton(const std::vector<SegmentS
   return render::render_view_files(scene, frame, views, folder, prefix, settings, bounds);
 }
 
-}  // namespace maxillo::planning
+}  // namespace maxillo::pipeline

@@ -1,34 +1,27 @@
 // Vertex normals on shapes whose normals are known: a sphere's point outwards along the radius, a cube's corners
 // along the diagonal.
-#include "mesh/vertex_normals.h"
+#include "geometry/vertex_normals.h"
 
 #include <gtest/gtest.h>
 
-#include "mesh/surface_extraction.h"
-#include "test_shapes.h"
+#include "support/test_shapes.h"
 
 namespace maxillo {
 namespace {
 
 TEST(VertexNormals, SphereNormalsPointAlongTheRadius) {
-  const Eigen::Vector3d centre(20, 20, 20);
-  const TriangleMesh sphere = extract_surface(testing::sphere_volume(41, centre, 12), 0, {.smoothing_iterations = 0});
+  const Eigen::Vector3d centre(20, -5, 7);
+  const TriangleMesh sphere = testing::uv_sphere(centre, 12);
   const VertexMatrix normals = vertex_normals(sphere);
-  // Marching cubes leaves a few vertices whose triangles all have zero area: those get no normal.
-  int without_normal = 0;
   double worst_cosine = 1;
   for (Eigen::Index v = 0; v < sphere.vertex_count(); ++v) {
-    if (normals.row(v).norm() == 0) {
-      ++without_normal;
-      continue;
-    }
     const Eigen::Vector3d radial = (sphere.vertices.row(v).transpose() - centre).normalized();
     EXPECT_NEAR(normals.row(v).norm(), 1.0, 1e-12);
     worst_cosine = std::min(worst_cosine, radial.dot(normals.row(v).transpose()));
   }
-  EXPECT_LT(without_normal, sphere.vertex_count() / 200);
-  EXPECT_GT(worst_cosine,
-            0.98);  // within ~11 degrees of the radius on a 12-voxel sphere
+  // Each vertex's fan is symmetric about its meridian; the bands above and below differ in area,
+  // which tilts the normal along the meridian: by 1.3 degrees next to the poles on 24 bands.
+  EXPECT_GT(worst_cosine, std::cos(2.0 * M_PI / 180));
 }
 
 TEST(VertexNormals, CubeCornersPointOutwardsAlongTheirDiagonal) {

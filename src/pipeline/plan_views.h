@@ -7,22 +7,22 @@
 
 #include "core/triangle_mesh.h"
 #include "planning/osteotomy.h"
-#include "planning/transfer_model.h"
+#include "pipeline/transfer_model.h"
 #include "render/view_files.h"
 
-namespace maxillo::planning {
+namespace maxillo::pipeline {
 
 struct SegmentSurface {
-  Segment segment = Segment::kNone;
+  planning::Segment segment = planning::Segment::kNone;
   TriangleMesh mesh;  // closed, LPS mm, pre-operative position
 };
 
 // One closed surface per segment present in the osteotomy result, each decimated to about
 // `target_triangles` (the cranium dominates: a smaller budget per segment keeps renders fast).
-std::vector<SegmentSurface> segment_surfaces(const OsteotomyResult& cut, int64_t target_triangles = 80000);
+std::vector<SegmentSurface> segment_surfaces(const planning::OsteotomyResult& cut, int64_t target_triangles = 80000);
 
 struct SegmentTransform {
-  Segment segment = Segment::kNone;
+  planning::Segment segment = planning::Segment::kNone;
   Eigen::Isometry3d transform = Eigen::Isometry3d::Identity();  // pre-op -> planned, LPS mm
 };
 
@@ -33,10 +33,10 @@ struct SegmentTransform {
 std::vector<render::ViewFile> render_planned_skeleton(const std::vector<SegmentSurface>& surfaces,
                                                       const std::vector<SegmentTransform>& moves,
                                                       const std::vector<ScrewAxis>& screws,
-                                                      const render::AnatomicalFrame& frame,
+                                                      const AnatomicalFrame& frame,
                                                       std::span<const render::StandardView> views,
                                                       const std::filesystem::path& folder,
                                                       std::string_view prefix = "plan-",
                                                       const render::RenderSettings& settings = {});
 
-}  // namespace maxillo::planning
+}  // namespace maxillo::pipeline

@@ -1,10 +1,10 @@
-#include "occlusion/signed_distance.h"
+#include "geometry/signed_distance.h"
 
 #include <gtest/gtest.h>
 
-#include "occlusion/test_meshes.h"
+#include "support/test_meshes.h"
 
-namespace maxillo::occlusion {
+namespace maxillo {
 namespace {
 
 using Eigen::Vector3d;
@@ -54,4 +54,4 @@ TEST(DistanceField, UnderARigidTransformTheDistanceIsInvariant) {
 }
 
 }  // namespace
-}  // namespace maxillo::occlusion
+}  // namespace maxillo

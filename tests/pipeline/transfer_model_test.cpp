@@ -1,17 +1,17 @@
 // The transfer model: a watertight midface with an open bore along each screw axis.
 #include <gtest/gtest.h>
 
-#include "mesh/mesh_measures.h"
+#include "geometry/mesh_measures.h"
 #include "planning/osteotomy.h"
-#include "planning/transfer_model.h"
+#include "pipeline/transfer_model.h"
 #include "sample/phantom.h"
 
-namespace maxillo::planning {
+namespace maxillo::pipeline {
 namespace {
 
 struct Fixture {
   Phantom phantom;
-  OsteotomyResult cut;
+  planning::OsteotomyResult cut;
   std::vector<ScrewAxis> screws;
 };
 
@@ -21,7 +21,7 @@ const Fixture& fixture() {
     spec.spacing_mm = 1.5;
     spec.noise_sigma_hu = 0;
     Fixture f{make_phantom(spec), {}, {}};
-    f.cut = cut_skeleton(f.phantom.labels, default_osteotomies(f.phantom.landmarks, {}));
+    f.cut = planning::cut_skeleton(f.phantom.labels, planning::default_osteotomies(f.phantom.landmarks, {}));
     // Screws from the anterior maxillary wall backwards through each sinus (x = -/+ 22 mm).
     for (double x : {-22.0, 22.0})
       f.screws.push_back({x < 0 ? "right" : "left", Eigen::Vector3d(x, -58, -18), Eigen::Vector3d(0, 1, 0), 26});
@@ -60,4 +60,4 @@ TEST(TransferModel, TheBoreIsOpenAndTheWallSurroundsIt) {
 }
 
 }  // namespace
-}  // namespace maxillo::planning
+}  // namespace maxillo::pipeline

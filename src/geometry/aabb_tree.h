@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "core/triangle_mesh.h"
-#include "occlusion/triangle_geometry.h"
+#include "geometry/triangle_geometry.h"
 
-namespace maxillo::occlusion {
+namespace maxillo {
 
 struct Aabb {
   Eigen::Vector3d min = Eigen::Vector3d::Constant(1e300);
@@ -69,4 +69,4 @@ class AabbTree {
   std::vector<int> order_;  // face indices grouped by leaf
 };
 
-}  // namespace maxillo::occlusion
+}  // namespace maxillo

@@ -5,7 +5,7 @@
 
 #include "core/triangle_mesh.h"
 
-namespace maxillo::occlusion::testing {
+namespace maxillo::testing {
 
 // Closed axis-aligned box, outward normals, 12 triangles.
 inline TriangleMesh make_box(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) {
@@ -59,4 +59,4 @@ inline Eigen::Isometry3d random_pose(std::mt19937& rng, double max_translation, 
   return pose;
 }
 
-}  // namespace maxillo::occlusion::testing
+}  // namespace maxillo::testing

@@ -3,13 +3,14 @@
 
 #include <cstdlib>
 
-#include "mesh/mesh_measures.h"
-#include "planning/plan_views.h"
+#include "ceph/landmark_frame.h"
+#include "geometry/mesh_measures.h"
+#include "pipeline/plan_views.h"
 #include "render/render_views.h"
 #include "sample/phantom.h"
 #include "support/temporary_folder.h"
 
-namespace maxillo::planning {
+namespace maxillo::pipeline {
 namespace {
 
 // Pixels whose colour is within `tolerance` of a pure hue direction: red-dominant or blue-dominant.
@@ -27,24 +28,24 @@ TEST(PlanViews, ShowTheMovedMaxillaAndTheScrews) {
   spec.spacing_mm = 2.0;
   spec.noise_sigma_hu = 0;
   const auto phantom = make_phantom(spec);
-  const auto cut = cut_skeleton(phantom.labels, default_osteotomies(phantom.landmarks, {}));
+  const auto cut = planning::cut_skeleton(phantom.labels, planning::default_osteotomies(phantom.landmarks, {}));
   const auto surfaces = segment_surfaces(cut, 20000);
   ASSERT_EQ(surfaces.size(), 3u);  // cranium, maxilla, mandible
   for (const auto& s : surfaces) {
-    EXPECT_GT(s.mesh.face_count(), 100) << segment_name(s.segment);
+    EXPECT_GT(s.mesh.face_count(), 100) << planning::segment_name(s.segment);
     const auto edges = count_edges(s.mesh);  // closed surfaces: no border edge, consistent orientation
-    EXPECT_EQ(edges.boundary, 0) << segment_name(s.segment);
-    EXPECT_EQ(edges.inconsistent, 0) << segment_name(s.segment);
-    EXPECT_GT(signed_volume(s.mesh), 0) << segment_name(s.segment);
+    EXPECT_EQ(edges.boundary, 0) << planning::segment_name(s.segment);
+    EXPECT_EQ(edges.inconsistent, 0) << planning::segment_name(s.segment);
+    EXPECT_GT(signed_volume(s.mesh), 0) << planning::segment_name(s.segment);
   }
 
-  std::vector<SegmentTransform> moves{{Segment::kMaxilla, Eigen::Isometry3d(Eigen::Translation3d(0, -10, 0))}};
+  std::vector<SegmentTransform> moves{{planning::Segment::kMaxilla, Eigen::Isometry3d(Eigen::Translation3d(0, -10, 0))}};
   std::vector<ScrewAxis> screws{{"right", {-22, -58, -18}, {0, 1, 0}, 26}, {"left", {22, -58, -18}, {0, 1, 0}, 26}};
   TemporaryFolder folder("plan-views");
   const std::array views{render::StandardView::Frontal, render::StandardView::Lateral};
   render::RenderSettings settings;
   settings.size = {320, 320};
-  auto files = render_planned_skeleton(surfaces, moves, screws, render::anatomical_frame(phantom.landmarks), views,
+  auto files = render_planned_skeleton(surfaces, moves, screws, anatomical_frame(phantom.landmarks), views,
                                        folder.path(), "plan-", settings);
   ASSERT_EQ(files.size(), 2u);
   EXPECT_EQ(files[1].png.filename(), "plan-lateral.png");
@@ -56,4 +57,4 @@ TEST(PlanViews, ShowTheMovedMaxillaAndTheScrews) {
 }
 
 }  // namespace
-}  // namespace maxillo::planning
+}  // namespace maxillo::pipeline

@@ -6,9 +6,9 @@
 #include <Eigen/Geometry>
 #include <vector>
 
-#include "occlusion/aabb_tree.h"
+#include "geometry/aabb_tree.h"
 
-namespace maxillo::occlusion {
+namespace maxillo {
 
 struct SignedDistance {
   bool found = false;                                // false: no surface within the search radius (value unknown)
@@ -38,4 +38,4 @@ class DistanceField {
   std::vector<Eigen::Vector3d> vertex_normals_;  // angle weighted
 };
 
-}  // namespace maxillo::occlusion
+}  // namespace maxillo

@@ -1,4 +1,4 @@
-#include "mesh/mesh_transform.h"
+#include "geometry/mesh_transform.h"
 
 #include <cassert>
 #include <cmath>

@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "mesh/mesh_measures.h"
-#include "mesh/mesh_transform.h"
+#include "geometry/mesh_measures.h"
+#include "geometry/mesh_transform.h"
 
 namespace maxillo {
 namespace {

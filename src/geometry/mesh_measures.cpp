@@ -1,7 +1,7 @@
 // Mesh measures: closed-form sums over faces, union-find components, a hash of directed edges.
-#include "mesh/mesh_measures.h"
+#include "geometry/mesh_measures.h"
 
-#include "mesh/topology_helpers.h"
+#include "geometry/topology_helpers.h"
 
 #include <algorithm>
 #include <numeric>

@@ -1,0 +1,98 @@
+# The module layers of docs/ARCHITECTURE.md, checked when the build is configured.
+#
+# Each module may link only the maxillo modules its row allows (a module links nothing above
+# it), and the numerical modules may not reach a toolkit through any link, direct or inherited:
+# they build and test with Eigen, nlohmann-json, OpenSSL (core's SHA-256), OpenMP and CHOLMOD
+# only. A violation stops the configuration with the module and the offending link named.
+
+set(maxillo_allowed_links_core "")
+set(maxillo_allowed_links_geometry core)
+set(maxillo_allowed_links_ceph core geometry)
+set(maxillo_allowed_links_occlusion core geometry)
+set(maxillo_allowed_links_softtissue core geometry)
+set(maxillo_allowed_links_validation core geometry)
+set(maxillo_allowed_links_planning core geometry ceph)
+set(maxillo_allowed_links_sample core geometry ceph)
+set(maxillo_allowed_links_archive core geometry ceph)
+set(maxillo_allowed_links_net core geometry ceph archive)
+set(maxillo_allowed_links_imaging core geometry ceph archive)
+set(maxillo_allowed_links_mesh core geometry)
+set(maxillo_allowed_links_render core geometry)
+set(maxillo_allowed_links_report core)
+set(maxillo_allowed_links_tetmesh core geometry softtissue)
+set(maxillo_allowed_links_pipeline
+  core geometry ceph occlusion softtissue validation planning sample archive imaging mesh render
+  report tetmesh)
+
+set(maxillo_numerical_modules core geometry ceph occlusion softtissue validation planning)
+# Anything whose name matches is a toolkit the numerical modules must not link.
+set(maxillo_toolkit_pattern "VTK|vtk|ITK|itk|OSMesa|OSMESA|CGAL|DCMTK|hpdf|SQLite|PostgreSQL|CURL")
+
+# Every link item of `target`, followed through maxillo targets (both the libraries it links
+# and those it passes on), generator expressions such as $<LINK_ONLY:x> unwrapped.
+function(maxillo_link_closure target out_var)
+  set(pending ${target})
+  set(seen "")
+  set(items "")
+  while(pending)
+    list(POP_FRONT pending current)
+    if(current IN_LIST seen)
+      continue()
+    endif()
+    list(APPEND seen ${current})
+    set(links "")
+    if(TARGET ${current})
+      get_target_property(type ${current} TYPE)
+      if(NOT type STREQUAL "INTERFACE_LIBRARY")
+        get_target_property(direct ${current} LINK_LIBRARIES)
+        if(direct)
+          list(APPEND links ${direct})
+        endif()
+      endif()
+      get_target_property(passed ${current} INTERFACE_LINK_LIBRARIES)
+      if(passed)
+        list(APPEND links ${passed})
+      endif()
+    endif()
+    foreach(link IN LISTS links)
+      string(REGEX REPLACE "^\\$<LINK_ONLY:(.*)>$" "\\1" link "${link}")
+      list(APPEND items ${link})
+      if(TARGET ${link})
+        list(APPEND pending ${link})
+      endif()
+    endforeach()
+  endwhile()
+  list(REMOVE_DUPLICATES items)
+  set(${out_var} ${items} PARENT_SCOPE)
+endfunction()
+
+function(maxillo_check_module_layers)
+  foreach(module IN ITEMS core geometry ceph occlusion softtissue validation planning sample archive net
+                          imaging mesh render report tetmesh pipeline)
+    if(NOT TARGET maxillo_${module})
+      message(FATAL_ERROR "ModuleLayers: no target maxillo_${module}")
+    endif()
+    get_target_property(direct maxillo_${module} LINK_LIBRARIES)
+    foreach(link IN LISTS direct)
+      if(link MATCHES "^maxillo_(.*)$")
+        set(other ${CMAKE_MATCH_1})
+        if(other STREQUAL "warnings" OR other STREQUAL "sanitizers")
+          continue()
+        endif()
+        if(NOT other IN_LIST maxillo_allowed_links_${module})
+          message(FATAL_ERROR "ModuleLayers: maxillo_${module} links maxillo_${other}, which its row in "
+                              "docs/ARCHITECTURE.md does not allow (allowed: ${maxillo_allowed_links_${module}})")
+        endif()
+      endif()
+    endforeach()
+  endforeach()
+  foreach(module IN LISTS maxillo_numerical_modules)
+    maxillo_link_closure(maxillo_${module} closure)
+    foreach(link IN LISTS closure)
+      if(link MATCHES "${maxillo_toolkit_pattern}")
+        message(FATAL_ERROR "ModuleLayers: the numerical module maxillo_${module} reaches the toolkit "
+                            "'${link}'; it must build and link without VTK, ITK, OSMesa or the other toolkits")
+      endif()
+    endforeach()
+  endforeach()
+endfunction()
