@@ -76,7 +76,7 @@ void run_face_bench(const FaceBenchArguments& args) {
   }
   std::sort(meshing.begin(), meshing.end());
   std::printf("meshing: %.2f s -> %d tets, %d nodes (cell %.2f mm), min dihedral %.1f deg, aspect mean %.2f max %.1f\n",
-              meshing[meshing.size() / 2], base.mesh.tet_count(), base.mesh.node_count(), base.cell_size_mm,
+              meshing[meshing.size() / 2], base.mesh.tet_count(), base.mesh.node_count(), base.meshing.cell_size_mm,
               base.quality.min_dihedral_deg, base.quality.mean_aspect_ratio, base.quality.max_aspect_ratio);
 
   for (auto model : {pipeline::SoftTissueModel::kMassTensor, pipeline::SoftTissueModel::kLinearFem,
@@ -105,7 +105,7 @@ void run_face_bench(const FaceBenchArguments& args) {
     (void)softtissue::map_displacement(base.mesh, shape, base.node_displacement);
   });
   softtissue::GaussianMappingOptions gaussian_options;
-  gaussian_options.radius_mm = std::max(3.0, base.cell_size_mm);  // must reach the next surface node
+  gaussian_options.radius_mm = std::max(3.0, base.meshing.cell_size_mm);  // must reach the next surface node
   softtissue::TetBoundary boundary;
   const double boundary_seconds = median_seconds(args.runs, [&] { boundary = softtissue::tet_boundary(base.mesh); });
   std::optional<softtissue::SkinIndex> skin_index;

@@ -47,10 +47,13 @@ Json write_outputs(SimulationResult& result, const std::filesystem::path& out, c
   write_mesh(p.skin_after, files[2]);
   softtissue::write_vtu(files[3], p.mesh, p.node_displacement, p.bc);
   Json summary{{"model", model_name(options.model)},
+               {"plan_application", result.reused_plan_application ? "stored" : "applied"},
                {"poisson_ratio", options.poisson_ratio},
                {"tetrahedra", p.mesh.tet_count()},
                {"nodes", p.mesh.node_count()},
-               {"cell_size_mm", p.cell_size_mm},
+               {"cell_size_mm", p.meshing.cell_size_mm},
+               {"tet_budget", p.meshing.tet_budget},
+               {"over_tet_budget", p.meshing.over_budget(p.mesh)},
                {"min_dihedral_deg", p.quality.min_dihedral_deg},
                {"max_aspect_ratio", p.quality.max_aspect_ratio},
                {"prescribed_nodes", softtissue::count_nodes(p.bc, softtissue::NodeConstraint::kPrescribed)},
@@ -143,17 +146,17 @@ SimulationResult simulate_case(Archive& archive, int64_t case_id, const Simulati
 
   const CaseTissues loaded = given ? CaseTissues{} : load_case_tissues(archive, case_id, landmarks);
   const CaseTissues& case_tissues = given ? *given : loaded;
-  const auto applied =
-      planning::apply_plan(request.plan, case_tissues.segmentation, landmarks, planning::segmentation_anatomy_labels());
+  SimulationResult result;
+  const auto moves =
+      plan_moves(archive, case_id, request.plan, landmarks, case_tissues.segmentation, &result.reused_plan_application);
   const LabelVolume& tissues = case_tissues.jaws;
   const auto cut = planning::cut_skeleton(tissues, planning::resolve_osteotomies(request.plan.osteotomies, landmarks));
   for (const auto& s : cut.stats) log::info("bone segment ", planning::segment_name(s.segment), ": ", s.volume_ml, " ml");
 
-  SimulationResult result;
   const SurfaceRecipe recipe;
   result.skin_before =
       case_surfaces(archive, case_id, series, recipe, case_tissues.ct_labels_for(recipe.segmentation)).skin;
-  SoftTissueInput input{&tissues, &cut.segments, &result.skin_before, landmarks, moves_by_segment(applied)};
+  SoftTissueInput input{&tissues, &cut.segments, &result.skin_before, landmarks, moves_by_segment(moves)};
   result.prediction = predict_soft_tissue(input, request.options, request.face_model.get());
   if (request.uncertainty) result.uncertainty = prediction_uncertainty(result.prediction, result.skin_before, request.options);
 

@@ -46,6 +46,7 @@ struct SimulationResult {
   report::Section section;                          // "soft_tissue", ready for the report
   std::vector<std::filesystem::path> files;         // predicted skin (vtp, stl, ply), model (vtu), json
   Json summary;                                     // what simulation.json holds
+  bool reused_plan_application = false;             // the plan's moves came from `plan apply`'s stored result
 };
 
 // The uncertainty band: the same model re-solved with every other model and with Poisson

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "ceph/landmark_io.h"
+#include "core/error.h"
 #include "core/sha256.h"
 
 namespace maxillo::pipeline {
@@ -66,11 +68,33 @@ std::optional<std::string> latest_plan_sha256(const std::vector<ArtefactRecord>&
   return newest->object_sha256;
 }
 
-void store_plan_result(Archive& archive, int64_t case_id, const StoredPlan& plan, const Json& result) {
+std::string plan_application_key(const std::string& plan_sha256, const LandmarkSet& landmarks) {
+  Sha256 hash;
+  hash.update("plan " + plan_sha256 + "\nlandmarks\n");
+  hash.update(format_landmarks(landmarks, LandmarkFormat::kSlicerMarkupsJson));
+  return hash.hex_digest();
+}
+
+void store_plan_result(Archive& archive, int64_t case_id, const StoredPlan& plan, const LandmarkSet& landmarks,
+                       const Json& result) {
   const std::string text = result.dump(2) + "\n";
   const std::string sha = archive.store_object(text);
   const Json parameters{{"plan_artefact", plan.artefact_id}, {"plan_version", plan.version}};
-  archive.add_artefact(NewArtefact{case_id, kPlanResultKind, sha, "application/json", plan.sha256, parameters.dump()});
+  archive.add_artefact(NewArtefact{case_id, kPlanResultKind, sha, "application/json",
+                                   plan_application_key(plan.sha256, landmarks), parameters.dump()});
+}
+
+std::optional<std::vector<planning::PlannedMove>> stored_plan_moves(const Archive& archive, int64_t case_id,
+                                                                     const std::string& plan_sha256,
+                                                                     const LandmarkSet& landmarks) {
+  const std::string key = plan_application_key(plan_sha256, landmarks);
+  const auto results = artefacts_of_kind(archive, case_id, kPlanResultKind);
+  const auto newest = std::find_if(results.rbegin(), results.rend(), [&](const auto& a) { return a.inputs_hash == key; });
+  if (newest == results.rend()) return std::nullopt;
+  const std::string source = "artefact " + std::to_string(newest->id) + " (plan result)";
+  const Json json = Json::parse(object_text(archive, newest->object_sha256), nullptr, /*allow_exceptions=*/false);
+  if (json.is_discarded()) throw Error(ErrorCode::kArchiveCorrupt, source, "is not JSON");
+  return planning::planned_moves_from_json(json, source);
 }
 
 std::optional<Json> latest_plan_result(const Archive& archive, int64_t case_id) {

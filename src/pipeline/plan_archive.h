@@ -11,7 +11,9 @@
 
 #include "archive/archive.h"
 #include "core/json.h"
+#include "ceph/landmark.h"
 #include "planning/plan.h"
+#include "planning/plan_application.h"
 
 namespace maxillo::pipeline {
 
@@ -34,7 +36,20 @@ std::optional<StoredPlan> latest_plan(const Archive& archive, int64_t case_id);
 // nightly scan asks it of every case).
 std::optional<std::string> latest_plan_sha256(const std::vector<ArtefactRecord>& case_artefacts);
 
-void store_plan_result(Archive& archive, int64_t case_id, const StoredPlan& plan, const Json& result);
+// The key a plan's result is filed under: what its moves depend on, the plan's text (by its
+// SHA-256, StoredPlan::sha256) and the landmarks, which place the frame and the pivots.
+std::string plan_application_key(const std::string& plan_sha256, const LandmarkSet& landmarks);
+
+// Stores the result of `plan` applied with `landmarks` (plan_result_json's document).
+void store_plan_result(Archive& archive, int64_t case_id, const StoredPlan& plan, const LandmarkSet& landmarks,
+                       const Json& result);
+// The moves of the newest stored result of the plan with this text applied with these
+// landmarks, so that simulate and validate reuse `plan apply`'s work instead of applying the
+// plan again; none when it was not applied with them. A stored result whose moves do not read
+// back is Error(kArchiveCorrupt) naming the artefact and the key, never a re-application.
+std::optional<std::vector<planning::PlannedMove>> stored_plan_moves(const Archive& archive, int64_t case_id,
+                                                                     const std::string& plan_sha256,
+                                                                     const LandmarkSet& landmarks);
 // The newest stored plan result of the case (plan_result_json's document), if any.
 std::optional<Json> latest_plan_result(const Archive& archive, int64_t case_id);
 

@@ -39,7 +39,7 @@ CasePlanResult apply_case_plan(Archive& archive, int64_t case_id, const std::fil
   Json json = planning::plan_result_json(out.result);
   json["osteotomy"] = plan_outputs_json(outputs);
   write_file_atomically(out.result_json, json.dump(2) + "\n");
-  store_plan_result(archive, case_id, out.plan, json);
+  store_plan_result(archive, case_id, out.plan, landmarks, json);
   return out;
 }
 

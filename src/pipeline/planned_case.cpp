@@ -3,6 +3,8 @@
 #include <mutex>
 
 #include "core/error.h"
+#include "core/log.h"
+#include "core/sha256.h"
 #include "imaging/volume_assembly.h"
 #include "pipeline/archived_series.h"
 #include "pipeline/case_landmarks.h"
@@ -18,10 +20,21 @@ struct PlannedCase::FaceModels {
 };
 
 
-SegmentMoves moves_by_segment(const planning::PlanResult& applied) {
-  SegmentMoves moves;
-  for (const auto& m : applied.moves) moves[uint8_t(m.segment)] = m.transform;
-  return moves;
+SegmentMoves moves_by_segment(const std::vector<planning::PlannedMove>& moves) {
+  SegmentMoves by_segment;
+  for (const auto& m : moves) by_segment[uint8_t(m.segment)] = m.transform;
+  return by_segment;
+}
+
+std::vector<planning::PlannedMove> plan_moves(const Archive& archive, int64_t case_id, const planning::Plan& plan,
+                                              const LandmarkSet& landmarks, const LabelVolume& segmentation,
+                                              bool* reused) {
+  const std::string plan_sha256 = sha256_hex(planning::serialise_plan(plan));
+  auto stored = stored_plan_moves(archive, case_id, plan_sha256, landmarks);
+  if (reused) *reused = bool(stored);
+  if (stored) return std::move(*stored);
+  log::info("plan: no stored result for this plan and these landmarks; applying it");
+  return planning::apply_plan(plan, segmentation, landmarks, planning::segmentation_anatomy_labels()).moves;
 }
 
 PlannedCase load_planned_case(Archive& archive, int64_t case_id, const CaseTissues* tissues) {
@@ -38,10 +51,8 @@ PlannedCase load_planned_case(Archive& archive, int64_t case_id, const CaseTissu
   c.face_models = std::make_shared<PlannedCase::FaceModels>();
   c.preop_ct = load_archived_series(archive, c.preop_series);
   c.tissues = tissues ? *tissues : segment_case_tissues(c.preop_ct, c.landmarks);
-  c.applied =
-      planning::apply_plan(c.plan.plan, c.tissues.segmentation, c.landmarks, planning::segmentation_anatomy_labels());
+  c.planned_moves = moves_by_segment(plan_moves(archive, case_id, c.plan.plan, c.landmarks, c.tissues.segmentation));
   c.cut = planning::cut_skeleton(c.tissues.jaws, planning::resolve_osteotomies(c.plan.plan.osteotomies, c.landmarks));
-  c.planned_moves = moves_by_segment(c.applied);
   const SurfaceRecipe recipe;
   c.skin = case_surfaces(archive, case_id, c.preop_series, recipe, c.tissues.ct_labels_for(recipe.segmentation)).skin;
   return c;

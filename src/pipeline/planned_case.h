@@ -29,9 +29,8 @@ struct PlannedCase {
   LandmarkSet landmarks;  // the newest landmark set
   CaseTissues tissues;
   StoredPlan plan;  // the newest plan
-  planning::PlanResult applied;
   planning::OsteotomyResult cut;  // bone segments of tissues.jaws
-  SegmentMoves planned_moves;     // the segments the plan moves
+  SegmentMoves planned_moves;     // the segments the plan moves: stored by `plan apply`, or applied here
   TriangleMesh skin;              // pre-operative skin (case_surfaces.h)
 
   // The face's tet model of these tissues and landmarks (soft_tissue_prediction.h), built on first
@@ -46,9 +45,16 @@ struct PlannedCase {
 
 // Error(kNotFound) naming the case when it has no plan, no landmarks or no CT; what loading, segmentation and
 // apply_plan throw otherwise. `tissues`: the case's segmented CT when the caller has it already (e.g. from `plan
-// apply`); null segments it.
+// apply`); null segments it. The planned moves come from the result `plan apply` stored for this plan and these
+// landmarks (plan_archive.h); the plan is applied again only when there is none.
 PlannedCase load_planned_case(Archive& archive, int64_t case_id, const CaseTissues* tissues = nullptr);
 
-SegmentMoves moves_by_segment(const planning::PlanResult& applied);
+SegmentMoves moves_by_segment(const std::vector<planning::PlannedMove>& moves);
+
+// The moves of `plan` on this case: those `plan apply` stored for its text and `landmarks`
+// when there are, else apply_plan's on `segmentation`. `reused` says which.
+std::vector<planning::PlannedMove> plan_moves(const Archive& archive, int64_t case_id, const planning::Plan& plan,
+                                              const LandmarkSet& landmarks, const LabelVolume& segmentation,
+                                              bool* reused = nullptr);
 
 }  // namespace maxillo::pipeline

@@ -54,6 +54,7 @@ Solved solve(const softtissue::TetMesh& mesh, const softtissue::BoundaryConditio
   const softtissue::Material material{o.young_modulus_mpa, o.poisson_ratio};
   softtissue::LocalIterationOptions local;
   local.gradient_threshold_mm = o.gradient_threshold_mm;
+  local.max_iterations = o.max_sweeps;
   if (o.model == SoftTissueModel::kNonlinearFem) {
     assembly_seconds = 0;  // the tangent is assembled inside every Newton step
     softtissue::NewtonOptions newton;
@@ -160,7 +161,7 @@ FaceModel build_face_model(const LabelVolume& tissues, const LandmarkSet& landma
   start = Clock::now();
   auto meshed = tetmesh::mesh_label(region, 1, options.meshing);
   model.mesh = std::move(meshed.mesh);
-  model.cell_size_mm = meshed.cell_size_mm;
+  model.meshing = {meshed.cell_size_mm, meshed.attempts, meshed.tet_budget};
   model.quality = softtissue::mesh_quality(model.mesh);
   model.meshing_seconds = seconds_since(start);
   return model;
@@ -175,7 +176,7 @@ SoftTissuePrediction predict_soft_tissue(const SoftTissueInput& input, const Sof
   const FaceModel& model = given ? *given : built;
   SoftTissuePrediction prediction;
   prediction.mesh = model.mesh;
-  prediction.cell_size_mm = model.cell_size_mm;
+  prediction.meshing = model.meshing;
   prediction.quality = model.quality;
   prediction.seconds.region = given ? 0 : model.region_seconds;
   prediction.seconds.meshing = given ? 0 : model.meshing_seconds;
@@ -203,7 +204,7 @@ SoftTissuePrediction resolve_soft_tissue(const SoftTissuePrediction& base, const
   prediction.mesh = base.mesh;
   prediction.quality = base.quality;
   prediction.bc = base.bc;
-  prediction.cell_size_mm = base.cell_size_mm;
+  prediction.meshing = base.meshing;
   auto start = Clock::now();
   auto solved = solve(prediction.mesh, prediction.bc, options, prediction.seconds.assembly);
   prediction.node_displacement = std::move(solved.displacement);

@@ -35,6 +35,7 @@ struct SoftTissueOptions {
   double poisson_ratio = 0.46;
   double young_modulus_mpa = 0.003;  // scales forces only: the static answer does not depend on it
   double gradient_threshold_mm = 1e-3;  // local dynamic stop criterion (mass tensor, mass-spring)
+  int max_sweeps = 100000;  // their sweep limit: a model still moving after it is an error, not an answer
   tetmesh::TetMeshingOptions meshing;
   softtissue::AttachmentOptions attachment;
   double skin_binding_mm = 4.0;     // skin farther from the model keeps its place
@@ -54,6 +55,15 @@ struct SoftTissueTimings {
   double total() const { return region + meshing + attachment + assembly + solve + mapping; }
 };
 
+// How the face's tet mesh met its budget (tetmesh::TetMeshingResult's numbers): a mesh over its
+// budget is kept, and the report and simulation.json say so.
+struct MeshingOutcome {
+  double cell_size_mm = 0;  // of the meshing kept
+  int attempts = 0;         // meshings run, each coarser than the last
+  int tet_budget = 0;       // the most tetrahedra asked for
+  bool over_budget(const softtissue::TetMesh& mesh) const { return mesh.tet_count() > tet_budget; }
+};
+
 struct SoftTissuePrediction {
   softtissue::TetMesh mesh;
   softtissue::MeshQuality quality;
@@ -63,7 +73,7 @@ struct SoftTissuePrediction {
   TriangleMesh skin_after;              // the skin's vertices moved, same faces
   Eigen::MatrixX3d skin_displacement;   // per skin vertex, mm
   int skin_vertices_bound = 0;
-  double cell_size_mm = 0;
+  MeshingOutcome meshing;
   SoftTissueTimings seconds;
 };
 
@@ -79,7 +89,7 @@ struct FaceModel {
   std::vector<softtissue::RegionPlane> planes;
   softtissue::TetMesh mesh;
   softtissue::MeshQuality quality;
-  double cell_size_mm = 0;
+  MeshingOutcome meshing;
   double region_seconds = 0, meshing_seconds = 0;
   std::string key;
 };

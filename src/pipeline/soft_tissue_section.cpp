@@ -133,7 +133,7 @@ report::Section soft_tissue_section(const SoftTissuePrediction& prediction, cons
       {"Model", std::string(model_title(summary.options.model)) + ", Poisson ratio " + fixed(summary.options.poisson_ratio, 2)},
       {"Tetrahedral mesh", std::to_string(prediction.mesh.tet_count()) + " tetrahedra, " +
                                std::to_string(prediction.mesh.node_count()) + " nodes (cell size " +
-                               fixed(prediction.cell_size_mm, 1) + " mm)"},
+                               fixed(prediction.meshing.cell_size_mm, 1) + " mm)"},
       {"Element quality", "smallest dihedral angle " + fixed(prediction.quality.min_dihedral_deg, 1) +
                               "°, aspect ratio mean " + fixed(prediction.quality.mean_aspect_ratio, 2) + ", max " +
                               fixed(prediction.quality.max_aspect_ratio, 1)},
@@ -144,6 +144,12 @@ report::Section soft_tissue_section(const SoftTissuePrediction& prediction, cons
                    fixed(prediction.seconds.mapping, 2) + " s"},
   }};
   section.blocks.push_back(facts);
+  if (prediction.meshing.over_budget(prediction.mesh))
+    section.blocks.push_back(report::Note{
+        "The tetrahedral mesh is over its budget: " + std::to_string(prediction.mesh.tet_count()) +
+        " tetrahedra against at most " + std::to_string(prediction.meshing.tet_budget) + " asked for, after " +
+        std::to_string(prediction.meshing.attempts) + " meshings up to a cell size of " +
+        fixed(prediction.meshing.cell_size_mm, 1) + " mm. The prediction used it as it is; it took longer than planned."});
   auto grid = [](const std::vector<std::filesystem::path>& files, const std::string& what) {
     report::ImageGrid g;
     g.per_row = 3;

@@ -8,92 +8,22 @@
 
 #include "core/error.h"
 #include "core/json_input.h"
+#include "core/json_reader.h"
 
 namespace maxillo::planning {
 namespace {
 
 using Eigen::Vector3d;
 
-// Reads one JSON object, remembering the path for messages and refusing keys nobody asked for.
-class Reader {
- public:
-  Reader(const Json& json, std::string path, const std::string& source) : json_(json), path_(std::move(path)), source_(source) {
-    if (!json_.is_object()) fail(path_.empty() ? "plan" : path_, "must be an object");
-  }
-
-  [[noreturn]] void fail(const std::string& field, const std::string& reason) const {
-    throw Error(ErrorCode::kBadValue, source_, field + ": " + reason);
-  }
-  std::string field(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
-
-  bool has(const std::string& key) {
-    known_.insert(key);
-    return json_.contains(key);
-  }
-  const Json& at(const std::string& key) {
-    known_.insert(key);
-    return json_.at(key);
-  }
-
-  void number(const std::string& key, double& value, double min, double max) {
-    if (!has(key)) return;
-    const Json& v = json_.at(key);
-    if (!v.is_number()) fail(field(key), "must be a number");
-    const double x = v.get<double>();
-    if (!std::isfinite(x) || x < min || x > max)
-      fail(field(key), "must lie in [" + format(min) + ", " + format(max) + "], got " + format(x));
-    value = x;
-  }
-  void integer(const std::string& key, int& value, int min, int max) {
-    if (!has(key)) return;
-    const Json& v = json_.at(key);
-    if (!v.is_number_integer()) fail(field(key), "must be an integer");
-    const int64_t x = v.get<int64_t>();
-    if (x < min || x > max) fail(field(key), "must lie in [" + std::to_string(min) + ", " + std::to_string(max) + "]");
-    value = static_cast<int>(x);
-  }
-  void text(const std::string& key, std::string& value) {
-    if (!has(key)) return;
-    if (!json_.at(key).is_string()) fail(field(key), "must be a string");
-    value = json_.at(key).get<std::string>();
-  }
-  std::optional<Vector3d> point(const std::string& key) {
-    if (!has(key)) return std::nullopt;
-    return point_of(json_.at(key), field(key));
-  }
-  Vector3d point_of(const Json& v, const std::string& name) const {
-    if (!v.is_array() || v.size() != 3) fail(name, "must be an array of 3 numbers (LPS mm)");
-    Vector3d p;
-    for (int i = 0; i < 3; ++i) {
-      if (!v[i].is_number() || !std::isfinite(v[i].get<double>())) fail(name, "must be an array of 3 numbers (LPS mm)");
-      p[i] = v[i].get<double>();
-    }
-    return p;
-  }
-
-  // Call last: every key of the object must have been asked for.
-  void refuse_unknown_keys() const {
-    for (auto it = json_.begin(); it != json_.end(); ++it)
-      if (!known_.count(it.key())) fail(field(it.key()), "unknown key");
-  }
-
-  static std::string format(double x) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", x);
-    return text;
-  }
-
- private:
-  const Json& json_;
-  std::string path_;
-  const std::string& source_;
-  std::set<std::string> known_;
-};
+// A reader of one object of a plan file: failures name the file and the key path, "plan" at the top.
+JsonReader reader(const Json& json, const std::string& path, const std::string& source) {
+  return JsonReader(json, path, source, ErrorCode::kBadValue, "plan");
+}
 
 constexpr double kMaxMoveMm = 60;
 constexpr double kMaxAngleDeg = 45;
 
-CutSpec read_cut(Reader& parent, const std::string& key, const std::string& source) {
+CutSpec read_cut(JsonReader& parent, const std::string& key, const std::string& source) {
   const Json& v = parent.at(key);
   const std::string name = parent.field(key);
   CutSpec cut;
@@ -108,7 +38,7 @@ CutSpec read_cut(Reader& parent, const std::string& key, const std::string& sour
                           std::string(key == "le_fort_i" ? ", \"default-high\", \"default-low\"" : "") +
                           ", {\"point\": [x, y, z], \"normal\": [x, y, z]} or {\"points\": [three points]}");
   }
-  Reader r(v, name, source);
+  JsonReader r = reader(v, name, source);
   if (r.has("points")) {
     const Json& points = r.at("points");
     if (!points.is_array() || points.size() != 3) r.fail(name + ".points", "must be three points [[x, y, z], ...]");
@@ -132,7 +62,7 @@ CutSpec read_cut(Reader& parent, const std::string& key, const std::string& sour
 }
 
 PlanOsteotomies read_osteotomies(const Json& json, const std::string& source) {
-  Reader r(json, "osteotomies", source);
+  JsonReader r = reader(json, "osteotomies", source);
   PlanOsteotomies o;
   const std::vector<std::pair<const char*, std::optional<CutSpec>*>> cuts{
       {"le_fort_i", &o.le_fort_i}, {"pterygomaxillary", &o.pterygomaxillary}, {"bsso_right", &o.bsso_right},
@@ -145,7 +75,7 @@ PlanOsteotomies read_osteotomies(const Json& json, const std::string& source) {
   return o;
 }
 
-FrameMove read_frame_move(Reader& r) {
+FrameMove read_frame_move(JsonReader& r) {
   FrameMove m;
   r.number("advancement_mm", m.advancement_mm, -kMaxMoveMm, kMaxMoveMm);
   r.number("vertical_mm", m.vertical_mm, -kMaxMoveMm, kMaxMoveMm);
@@ -157,7 +87,7 @@ FrameMove read_frame_move(Reader& r) {
 }
 
 SegmentMove read_move(const Json& json, const std::string& path, const std::string& source) {
-  Reader r(json, path, source);
+  JsonReader r = reader(json, path, source);
   SegmentMove move;
   if (!r.has("segment") || !r.at("segment").is_string()) r.fail(r.field("segment"), "missing (a segment name such as \"maxilla\")");
   const std::string name = r.at("segment").get<std::string>();
@@ -177,7 +107,7 @@ SegmentMove read_move(const Json& json, const std::string& path, const std::stri
 }
 
 MaxillaryTarget read_target(const Json& json, const std::string& source) {
-  Reader r(json, "distraction.target", source);
+  JsonReader r = reader(json, "distraction.target", source);
   MaxillaryTarget t;
   r.number("advancement_mm", t.advancement_mm, -kMaxMoveMm, kMaxMoveMm);
   r.number("vertical_mm", t.vertical_mm, -kMaxMoveMm, kMaxMoveMm);
@@ -190,19 +120,19 @@ MaxillaryTarget read_target(const Json& json, const std::string& source) {
 }
 
 DistractionSpec read_distraction(const Json& json, const std::string& source) {
-  Reader r(json, "distraction", source);
+  JsonReader r = reader(json, "distraction", source);
   DistractionSpec d;
   if (r.has("target")) d.target = read_target(r.at("target"), source);
   r.number("expected_clockwise_rotation_deg", d.expected_clockwise_rotation_deg, -kMaxAngleDeg, kMaxAngleDeg);
   if (r.has("device")) {
-    Reader dev(r.at("device"), "distraction.device", source);
+    JsonReader dev = reader(r.at("device"), "distraction.device", source);
     dev.number("screw_length_mm", d.device.screw_length_mm, 5, 80);
     dev.number("screw_diameter_mm", d.device.screw_diameter_mm, 0.5, 10);
     dev.number("engagement_mm", d.device.engagement_mm, 0, 40);
     dev.refuse_unknown_keys();
   }
   if (r.has("limits")) {
-    Reader lim(r.at("limits"), "distraction.limits", source);
+    JsonReader lim = reader(r.at("limits"), "distraction.limits", source);
     lim.number("sinus_clearance_mm", d.limits.sinus_clearance_mm, 0, 10);
     lim.number("tooth_distance_mm", d.limits.tooth_distance_mm, 0, 20);
     lim.number("nerve_distance_mm", d.limits.nerve_distance_mm, 0, 30);
@@ -210,7 +140,7 @@ DistractionSpec read_distraction(const Json& json, const std::string& source) {
     lim.refuse_unknown_keys();
   }
   if (r.has("schedule")) {
-    Reader s(r.at("schedule"), "distraction.schedule", source);
+    JsonReader s = reader(r.at("schedule"), "distraction.schedule", source);
     s.integer("latency_days", d.schedule.latency_days, 0, 60);
     s.number("rate_mm_per_day", d.schedule.rate_mm_per_day, 0.05, 5);
     s.integer("activations_per_day", d.schedule.activations_per_day, 1, 12);
@@ -225,7 +155,7 @@ DistractionSpec read_distraction(const Json& json, const std::string& source) {
 }
 
 OcclusionReference read_occlusion(const Json& json, const std::string& source) {
-  Reader r(json, "occlusion", source);
+  JsonReader r = reader(json, "occlusion", source);
   OcclusionReference o;
   r.text("reference", o.reference);
   r.text("pairs_file", o.pairs_file);
@@ -252,7 +182,7 @@ bool differ(double a, double b) { return std::abs(a - b) > 1e-6; }
 
 // Every field read and range-checked; how the fields fit together is validate_plan's.
 Plan read_plan_fields(const Json& json, const std::string& source) {
-  Reader r(json, "", source);
+  JsonReader r = reader(json, "", source);
   Plan plan;
   if (!r.has("format_version")) r.fail("format_version", "missing");
   r.integer("format_version", plan.format_version, 1, 1000000);

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/error.h"
 #include "core/json.h"
 #include "core/volume.h"
 #include "planning/forward_simulation.h"
@@ -50,5 +51,12 @@ PlanResult apply_plan(const Plan& plan, const LabelVolume& labels, const Landmar
                       const AnatomyLabels& anatomy = {});
 
 Json plan_result_json(const PlanResult& result);
+
+// The moves of a stored plan result (plan_result_json's "moves"), read back exactly: each
+// segment, pivot, frame move and LPS transform. Anything missing, mistyped or not a rigid
+// transform is Error(`code`, source, "<key path>: <reason>"); a stored result is never read as a
+// default.
+std::vector<PlannedMove> planned_moves_from_json(const Json& result, const std::string& source,
+                                                 ErrorCode code = ErrorCode::kArchiveCorrupt);
 
 }  // namespace maxillo::planning

@@ -121,6 +121,7 @@ TetMeshingResult mesh_label(const LabelVolume& volume, uint8_t label, const TetM
   Domain domain = Domain::create_labeled_image_mesh_domain(image);
   TetMeshingResult result;
   result.cell_size_mm = options.cell_size_mm;
+  result.tet_budget = options.max_tets;
   for (;;) {
     CGAL::get_default_random() = CGAL::Random(options.random_seed);
     Complex complex = run_mesh_3(domain, options, result.cell_size_mm);

@@ -22,12 +22,18 @@ struct TetMeshingOptions {
 
 struct TetMeshingResult {
   softtissue::TetMesh mesh;   // LPS mm, positively oriented tets
-  double cell_size_mm = 0;    // the cell size that met max_tets
+  double cell_size_mm = 0;    // the cell size of the last meshing
   int attempts = 0;           // meshings run (a coarser one after each one over max_tets)
+  int tet_budget = 0;         // the max_tets asked for
   double seconds = 0;
+  // The budget could not be met within the attempts: the mesh is kept (a coarser one would
+  // lose the region's shape), and the caller must say so with these numbers.
+  bool over_budget() const { return mesh.tet_count() > tet_budget; }
 };
 
-// Meshes the voxels of `volume` equal to `label`. Throws Error(kEmptyResult) when there are none.
+// Meshes the voxels of `volume` equal to `label`, coarsening until the mesh has at most
+// options.max_tets tetrahedra or six meshings have run (then over_budget()). Throws
+// Error(kEmptyResult) when there are no such voxels.
 TetMeshingResult mesh_label(const LabelVolume& volume, uint8_t label, const TetMeshingOptions& options = {});
 
 }  // namespace maxillo::tetmesh

@@ -225,6 +225,9 @@ TEST_F(DemoTest, ReportHasTheSoftTissuePrediction) {
     EXPECT_NE(text.find(expected), std::string::npos) << "missing text: " << expected;
   for (const char* file : {"soft-tissue/predicted-skin.vtp", "soft-tissue/soft-tissue-model.vtu", "soft-tissue/simulation.json"})
     EXPECT_TRUE(std::filesystem::exists(folder_->path() / "out" / file)) << file;
+  // Issue 17: the prediction reuses the moves `plan apply` stored instead of applying the plan again.
+  std::ifstream simulation_file(folder_->path() / "out" / "soft-tissue" / "simulation.json");
+  EXPECT_EQ(Json::parse(simulation_file)["plan_application"], "stored");
 }
 
 // Issue 4: osteotomies, the transfer model and the planned skeleton's renders.

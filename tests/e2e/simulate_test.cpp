@@ -39,7 +39,10 @@ TEST(Simulate, SixMillimetreAdvancementOfThePhantomGivesAPlausibleFace) {
                          dir);
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const auto summary = Json::parse(run.out);
+  EXPECT_EQ(summary["plan_application"], "applied");  // no `plan apply` has stored this plan's moves
   EXPECT_LE(summary["tetrahedra"].get<int>(), 40000);
+  EXPECT_EQ(summary["tet_budget"], 40000);
+  EXPECT_EQ(summary["over_tet_budget"], false);
   EXPECT_GT(summary["prescribed_nodes"].get<int>(), 50);
   EXPECT_GT(summary["min_dihedral_deg"].get<double>(), 5.0);
   // The face follows a 6 mm advancement by at most about as much, and visibly.
@@ -72,6 +75,8 @@ TEST(Simulate, SixMillimetreAdvancementOfThePhantomGivesAPlausibleFace) {
   EXPECT_GT(signed_volume(transfer), 1000.0);  // mm^3
   for (const char* file : {"plan-result.json", "planned-maxilla.stl", "plan-oblique.png", "soft-tissue/simulation.json"})
     EXPECT_TRUE(std::filesystem::exists(dir / "plan" / file)) << file;
+  // Issue 17: the face of `plan apply` uses the moves it has just stored, not a second application.
+  EXPECT_EQ(Json::parse(text_of(dir / "plan" / "soft-tissue" / "simulation.json"))["plan_application"], "stored");
 }
 
 // Neither --plan nor --advance: a usage error that says so, before the archive is looked at (the

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "archive/archive_fixture.h"
+#include "core/error.h"
+#include "core/sha256.h"
 #include "pipeline/plan_archive.h"
 #include "pipeline/planning_section.h"
 #include "planning/plan_application.h"
@@ -38,8 +40,41 @@ TEST(PlanArchive, EverySavedPlanIsANewVersion) {
   EXPECT_DOUBLE_EQ(latest_plan(c.archive, c.case_id)->plan.distraction->target.widening_mm, 6);
 
   EXPECT_FALSE(latest_plan_result(c.archive, c.case_id));
-  store_plan_result(c.archive, c.case_id, second, Json{{"feasible", true}});
+  store_plan_result(c.archive, c.case_id, second, {}, Json{{"feasible", true}});
   EXPECT_EQ(latest_plan_result(c.archive, c.case_id)->at("feasible"), true);
+}
+
+// Issue 17: simulate and validate reuse the moves `plan apply` stored, found by the plan's text
+// and the landmarks; a result stored for other landmarks or another plan is not theirs.
+TEST(PlanArchive, StoredMovesAreFoundForTheirPlanAndLandmarksOnly) {
+  ArchivedCase c;
+  const Phantom phantom = make_phantom({.spacing_mm = 2.0, .noise_sigma_hu = 0});
+  const StoredPlan plan = store_plan(c.archive, c.case_id, planning::distraction_plan({.advancement_mm = 8}, "distraction"));
+  const planning::PlanResult applied = planning::apply_plan(plan.plan, phantom.labels, phantom.landmarks);
+  ASSERT_FALSE(applied.moves.empty());
+  EXPECT_FALSE(stored_plan_moves(c.archive, c.case_id, plan.sha256, phantom.landmarks));
+  store_plan_result(c.archive, c.case_id, plan, phantom.landmarks, planning::plan_result_json(applied));
+
+  const auto moves = stored_plan_moves(c.archive, c.case_id, plan.sha256, phantom.landmarks);
+  ASSERT_TRUE(moves);
+  ASSERT_EQ(moves->size(), applied.moves.size());
+  EXPECT_EQ(moves->front().transform.matrix(), applied.moves.front().transform.matrix());
+  EXPECT_EQ(plan.sha256, sha256_hex(planning::serialise_plan(plan.plan)));  // how simulate names a plan
+
+  LandmarkSet moved = phantom.landmarks;
+  moved.front().position.x() += 0.5;
+  EXPECT_FALSE(stored_plan_moves(c.archive, c.case_id, plan.sha256, moved));
+  EXPECT_FALSE(stored_plan_moves(c.archive, c.case_id, std::string(64, '0'), phantom.landmarks));
+
+  // A newer result for the same plan and landmarks that lost its moves is an error, not a re-application.
+  store_plan_result(c.archive, c.case_id, plan, phantom.landmarks, Json{{"feasible", true}});
+  try {
+    stored_plan_moves(c.archive, c.case_id, plan.sha256, phantom.landmarks);
+    ADD_FAILURE() << "a stored result without moves was accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ErrorCode::kArchiveCorrupt);
+    EXPECT_NE(std::string(e.what()).find("(plan result): moves: missing"), std::string::npos) << e.what();
+  }
 }
 
 const report::Table* table_with_column(const report::Section& section, const std::string& title) {

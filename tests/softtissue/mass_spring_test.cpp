@@ -41,6 +41,16 @@ TEST(MassSpringModel, RigidMotionIsReproducedExactly) {
   }
 }
 
+TEST(MassSpringModel, AtItsSweepLimitItSaysItDidNotConverge) {
+  CubeSpec spec{100.0, 8, HexSplit::kSixTets};
+  TetMesh mesh = make_cube_mesh(spec);
+  BoundaryConditions bc = cube_benchmark_conditions(mesh, spec, {6.0, 15.0});
+  const LocalIterationResult result = solve_mass_spring(make_van_gelder_model(mesh, 0.003), bc, {1e-9, 1.0, 3});
+  EXPECT_EQ(result.status, IterationStatus::kIterationLimit);
+  EXPECT_EQ(result.iterations, 3);
+  EXPECT_GT(result.last_max_move_mm, 1e-9);
+}
+
 // The static solve reaches equilibrium, and its answer is not the FEM one: springs have no
 // Poisson effect (documented in mass_spring_model.h), so the test records that they differ.
 TEST(MassSpringModel, ReachesEquilibriumAndDiffersFromFem) {

@@ -44,6 +44,15 @@ TEST(MassTensorModel, ConvergedAnswerIsTheLinearFemOne) {
   }
 }
 
+TEST(MassTensorModel, AtItsSweepLimitItSaysItDidNotConverge) {
+  CubeProblem cube;
+  const MassTensorModel model = make_mass_tensor_model(cube.stiffness);
+  const LocalIterationResult result = solve_mass_tensor(model, cube.bc, {1e-7, 1.0, 3});
+  EXPECT_EQ(result.status, IterationStatus::kIterationLimit);
+  EXPECT_EQ(result.iterations, 3);
+  EXPECT_GT(result.last_max_move_mm, 1e-7);  // still moving: how far from rest it stopped
+}
+
 TEST(MassTensorModel, PatchTestAndRigidMotion) {
   TetMesh mesh = make_cube_mesh({40.0, 4, HexSplit::kFiveTets});
   MassTensorModel model = make_mass_tensor_model(assemble_stiffness_blocks(mesh, Material{}));

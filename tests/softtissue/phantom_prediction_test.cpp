@@ -2,6 +2,11 @@
 // lip and the nose base forward and leaves the forehead and the chin in place.
 #include <gtest/gtest.h>
 
+#include <string>
+#include <utility>
+
+#include "core/error.h"
+
 #include "mesh/surface_extraction.h"
 #include "pipeline/soft_tissue_prediction.h"
 #include "planning/osteotomy.h"
@@ -71,6 +76,26 @@ TEST(PhantomPrediction, ConvergedMassTensorMatchesLinearFem) {
   options.gradient_threshold_mm = 1e-6;
   auto mtm = resolve_soft_tissue(fem, phantom_case().skin, options);
   EXPECT_LT((mtm.node_displacement - fem.node_displacement).rowwise().norm().maxCoeff(), 0.01);
+}
+
+// A point-wise model stopped by its sweep limit while points still move is not an answer: the
+// prediction is an error naming the model and how far from rest it was, never a face.
+TEST(PhantomPrediction, AModelNotAtRestIsAnErrorNotAFace) {
+  const auto fem = predict(SoftTissueModel::kLinearFem, 6);
+  for (auto [model, name] : {std::pair{SoftTissueModel::kMassTensor, "mass tensor model"},
+                             std::pair{SoftTissueModel::kMassSpring, "mass-spring model"}}) {
+    SoftTissueOptions options;
+    options.model = model;
+    options.max_sweeps = 2;
+    try {
+      resolve_soft_tissue(fem, phantom_case().skin, options);
+      ADD_FAILURE() << name << ": no error";
+    } catch (const Error& e) {
+      const std::string message = e.what();
+      EXPECT_NE(message.find(name), std::string::npos) << message;
+      EXPECT_NE(message.find("did not come to rest: after 2 sweeps"), std::string::npos) << message;
+    }
+  }
 }
 
 }  // namespace

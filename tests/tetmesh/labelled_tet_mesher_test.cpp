@@ -64,6 +64,19 @@ TEST(LabelledTetMesher, CoarsensUntilTheTetBudgetIsMet) {
   EXPECT_GT(result.cell_size_mm, 2.0);
 }
 
+TEST(LabelledTetMesher, ABudgetThatCannotBeMetIsReportedWithTheMeshKept) {
+  // No mesh of a 20 mm ball whose boundary stays within 1 mm of the sphere has 5 tetrahedra.
+  auto volume = ball(20, 1.0, 1);
+  TetMeshingOptions options;
+  options.max_tets = 5;
+  auto result = mesh_label(volume, 1, options);
+  EXPECT_TRUE(result.over_budget());
+  EXPECT_EQ(result.tet_budget, 5);
+  EXPECT_EQ(result.attempts, 6);
+  EXPECT_GT(result.mesh.tet_count(), 5);
+  EXPECT_FALSE(mesh_label(volume, 1, {}).over_budget());
+}
+
 TEST(LabelledTetMesher, AnEmptyRegionIsAnError) {
   auto volume = ball(5, 1.0, 1);
   EXPECT_THROW(mesh_label(volume, 7), Error);

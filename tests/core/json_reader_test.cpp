@@ -1,0 +1,76 @@
+// JsonReader: required fields fail loudly with the key path; optional ones keep their default.
+#include "core/json_reader.h"
+
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <string>
+
+namespace maxillo {
+namespace {
+
+std::string failure(const std::function<void()>& read) {
+  try {
+    read();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ErrorCode::kArchiveCorrupt);
+    return e.what();
+  }
+  ADD_FAILURE() << "no error";
+  return {};
+}
+
+const Json kRecord = Json::parse(R"({"format_version": 2, "feasible": true, "name": "plan",
+  "rows": [{"value_mm": 1.5, "point": [1, 2, 3]}, {"value_mm": "2"}], "nested": {"count": 7}})");
+
+TEST(JsonReader, ReadsRequiredFields) {
+  JsonReader r(kRecord, "", "artefact 3", ErrorCode::kArchiveCorrupt);
+  EXPECT_EQ(r.required_integer("format_version", 1, 5), 2);
+  EXPECT_TRUE(r.required_bool("feasible"));
+  EXPECT_EQ(r.required_text("name"), "plan");
+  const Json& rows = r.required_array("rows");
+  JsonReader first = r.element(rows, "rows", 0);
+  EXPECT_EQ(first.required_number("value_mm", 0, 10), 1.5);
+  EXPECT_EQ(first.required_point("point"), Eigen::Vector3d(1, 2, 3));
+  EXPECT_EQ(r.object("nested").required_integer("count"), 7);
+  r.refuse_unknown_keys();  // every key was asked for
+}
+
+TEST(JsonReader, OptionalFieldsKeepTheirDefaultOnlyWhenAbsent) {
+  JsonReader r(kRecord, "", "artefact 3", ErrorCode::kArchiveCorrupt);
+  double absent = 4.5;
+  r.number("absent_mm", absent, 0, 10);
+  EXPECT_EQ(absent, 4.5);
+  int version = 0;
+  r.integer("format_version", version, 1, 5);
+  EXPECT_EQ(version, 2);
+  std::string name = "x";
+  r.text("name", name);
+  EXPECT_EQ(name, "plan");
+}
+
+TEST(JsonReader, FailuresNameTheSourceAndTheKeyPath) {
+  auto reader = [] { return JsonReader(kRecord, "", "artefact 3", ErrorCode::kArchiveCorrupt, "validation"); };
+  EXPECT_EQ(failure([&] { reader().required_bool("missing"); }), "artefact 3: missing: missing");
+  EXPECT_EQ(failure([&] { reader().required_bool("name"); }), "artefact 3: name: must be true or false");
+  EXPECT_EQ(failure([&] { reader().required_integer("format_version", 3, 5); }),
+            "artefact 3: format_version: must lie in [3, 5]");
+  EXPECT_EQ(failure([&] {
+              JsonReader r = reader();
+              r.element(r.required_array("rows"), "rows", 1).required_number("value_mm");
+            }),
+            "artefact 3: rows[1].value_mm: must be a number");
+  EXPECT_EQ(failure([&] { reader().object("nested").required_text("count"); }),
+            "artefact 3: nested.count: must be a string");
+  EXPECT_EQ(failure([&] {
+              JsonReader r = reader();
+              r.required_bool("feasible");
+              r.refuse_unknown_keys();
+            }),
+            "artefact 3: format_version: unknown key");
+  EXPECT_EQ(failure([] { JsonReader(Json::array(), "", "artefact 3", ErrorCode::kArchiveCorrupt, "validation"); }),
+            "artefact 3: validation: must be an object");
+}
+
+}  // namespace
+}  // namespace maxillo
