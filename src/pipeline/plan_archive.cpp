@@ -25,6 +25,16 @@ std::vector<ArtefactRecord> artefacts_of_kind(const Archive& archive, int64_t ca
   return selected;
 }
 
+std::string plan_result_source(const ArtefactRecord& artefact) {
+  return "artefact " + std::to_string(artefact.id) + " (plan result)";
+}
+
+Json stored_json(const Archive& archive, const ArtefactRecord& artefact, const std::string& source) {
+  Json json = Json::parse(object_text(archive, artefact.object_sha256), nullptr, /*allow_exceptions=*/false);
+  if (json.is_discarded()) throw Error(ErrorCode::kArchiveCorrupt, source, "is not JSON");
+  return json;
+}
+
 }  // namespace
 
 StoredPlan store_plan(Archive& archive, int64_t case_id, const planning::Plan& plan) {
@@ -91,18 +101,16 @@ std::optional<std::vector<planning::PlannedMove>> stored_plan_moves(const Archiv
   const auto results = artefacts_of_kind(archive, case_id, kPlanResultKind);
   const auto newest = std::find_if(results.rbegin(), results.rend(), [&](const auto& a) { return a.inputs_hash == key; });
   if (newest == results.rend()) return std::nullopt;
-  const std::string source = "artefact " + std::to_string(newest->id) + " (plan result)";
-  const Json json = Json::parse(object_text(archive, newest->object_sha256), nullptr, /*allow_exceptions=*/false);
-  if (json.is_discarded()) throw Error(ErrorCode::kArchiveCorrupt, source, "is not JSON");
-  return planning::planned_moves_from_json(json, source);
+  const std::string source = plan_result_source(*newest);
+  return planning::planned_moves_from_json(stored_json(archive, *newest, source), source);
 }
 
-std::optional<Json> latest_plan_result(const Archive& archive, int64_t case_id) {
+
+std::optional<PlanResultRecord> latest_plan_result(const Archive& archive, int64_t case_id) {
   const auto results = artefacts_of_kind(archive, case_id, kPlanResultKind);
   if (results.empty()) return std::nullopt;
-  auto json = Json::parse(object_text(archive, results.back().object_sha256), nullptr, /*allow_exceptions=*/false);
-  if (json.is_discarded()) return std::nullopt;
-  return json;
+  const std::string source = plan_result_source(results.back());
+  return read_plan_result_record(stored_json(archive, results.back(), source), source);
 }
 
 }  // namespace maxillo::pipeline

@@ -13,6 +13,7 @@
 #include "core/json.h"
 #include "ceph/landmark.h"
 #include "planning/plan.h"
+#include "pipeline/plan_result_record.h"
 #include "planning/plan_application.h"
 
 namespace maxillo::pipeline {
@@ -50,7 +51,8 @@ void store_plan_result(Archive& archive, int64_t case_id, const StoredPlan& plan
 std::optional<std::vector<planning::PlannedMove>> stored_plan_moves(const Archive& archive, int64_t case_id,
                                                                      const std::string& plan_sha256,
                                                                      const LandmarkSet& landmarks);
-// The newest stored plan result of the case (plan_result_json's document), if any.
-std::optional<Json> latest_plan_result(const Archive& archive, int64_t case_id);
+// The newest stored plan result of the case, if any. One that does not read back (not JSON, a
+// key missing or mistyped, a newer format) is Error(kArchiveCorrupt) naming the artefact.
+std::optional<PlanResultRecord> latest_plan_result(const Archive& archive, int64_t case_id);
 
 }  // namespace maxillo::pipeline

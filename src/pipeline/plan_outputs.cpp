@@ -86,28 +86,25 @@ Json plan_outputs_json(const PlanOutputs& outputs) {
   return json;
 }
 
-std::vector<report::Block> plan_output_blocks(const Json& osteotomy) {
+std::vector<report::Block> plan_output_blocks(const PlanResultRecord::Osteotomy& osteotomy) {
   std::vector<report::Block> blocks;
   report::Table segments;
   segments.columns = {{"bone segment", 0.5}, {"volume (ml)", 0.25, report::Align::Right},
                       {"voxels", 0.25, report::Align::Right}};
   int64_t total = 0;
-  for (const Json& s : osteotomy.value("segments", Json::array())) {
-    segments.rows.push_back({s.value("segment", ""), fixed(s.value("volume_ml", 0.0), 1),
-                             std::to_string(s.value("voxels", int64_t(0)))});
-    total += s.value("voxels", int64_t(0));
+  for (const PlanResultRecord::Segment& s : osteotomy.segments) {
+    segments.rows.push_back({s.segment, fixed(s.volume_ml, 1), std::to_string(s.voxels)});
+    total += s.voxels;
   }
   segments.rows.push_back({"all segments / bone and teeth of the CT", "",
-                           std::to_string(total) + " / " + std::to_string(osteotomy.value("bone_voxels", int64_t(0)))});
+                           std::to_string(total) + " / " + std::to_string(osteotomy.bone_voxels)});
   blocks.push_back(report::Paragraph{"Osteotomies: bone segments (every bone and tooth voxel in exactly one)"});
   blocks.push_back(segments);
-  if (osteotomy.contains("transfer_model")) {
-    const Json& m = osteotomy["transfer_model"];
+  if (const auto& m = osteotomy.transfer_model) {
     blocks.push_back(report::KeyValueBlock{{
         {"Transfer model", "midface with a tube along each distraction screw (transfer-model.stl)"},
-        {"Printable", m.value("watertight", false) ? "yes: closed, manifold, consistently oriented"
-                                                   : "NO: the surface is not closed"},
-        {"Size", std::to_string(m.value("triangles", 0)) + " triangles, " + fixed(m.value("volume_ml", 0.0), 1) + " ml"},
+        {"Printable", m->watertight ? "yes: closed, manifold, consistently oriented" : "NO: the surface is not closed"},
+        {"Size", std::to_string(m->triangles) + " triangles, " + fixed(m->volume_ml, 1) + " ml"},
     }});
   }
   return blocks;

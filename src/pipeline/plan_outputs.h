@@ -14,6 +14,7 @@
 #include "core/volume.h"
 #include "planning/osteotomy.h"
 #include "planning/plan_application.h"
+#include "pipeline/plan_result_record.h"
 #include "pipeline/transfer_model.h"
 #include "report/report_model.h"
 
@@ -35,8 +36,8 @@ PlanOutputs write_plan_outputs(const LabelVolume& labels, const LandmarkSet& lan
 // The segments' volumes and the transfer model's facts, for plan-result.json (key "osteotomy").
 Json plan_outputs_json(const PlanOutputs& outputs);
 
-// Report blocks for the planning section from that JSON: the segments' volumes and the
-// transfer model (the renders come with the result's files).
-std::vector<report::Block> plan_output_blocks(const Json& osteotomy);
+// Report blocks for the planning section from the stored result's osteotomy outputs: the
+// segments' volumes and the transfer model (the renders come with the result's files).
+std::vector<report::Block> plan_output_blocks(const PlanResultRecord::Osteotomy& osteotomy);
 
 }  // namespace maxillo::pipeline

@@ -2,10 +2,14 @@
 // from a plan applied to the phantom.
 #include <gtest/gtest.h>
 
+#include <functional>
+
 #include "archive/archive_fixture.h"
 #include "core/error.h"
 #include "core/sha256.h"
 #include "pipeline/plan_archive.h"
+#include "pipeline/plan_outputs.h"
+#include "pipeline/plan_result_record.h"
 #include "pipeline/planning_section.h"
 #include "planning/plan_application.h"
 #include "sample/phantom.h"
@@ -40,8 +44,6 @@ TEST(PlanArchive, EverySavedPlanIsANewVersion) {
   EXPECT_DOUBLE_EQ(latest_plan(c.archive, c.case_id)->plan.distraction->target.widening_mm, 6);
 
   EXPECT_FALSE(latest_plan_result(c.archive, c.case_id));
-  store_plan_result(c.archive, c.case_id, second, {}, Json{{"feasible", true}});
-  EXPECT_EQ(latest_plan_result(c.archive, c.case_id)->at("feasible"), true);
 }
 
 // Issue 17: simulate and validate reuse the moves `plan apply` stored, found by the plan's text
@@ -89,7 +91,7 @@ TEST(PlanningSection, ShowsVectorsChecksScheduleAndSimulation) {
   const planning::Plan plan = planning::distraction_plan({.advancement_mm = 10, .widening_mm = 6}, "must show");
   const planning::PlanResult result = planning::apply_plan(plan, phantom.labels, phantom.landmarks);
   ASSERT_TRUE(result.feasible);
-  const report::Section section = planning_section(planning::plan_result_json(result));
+  const report::Section section = planning_section(read_plan_result_record(planning::plan_result_json(result), "test"));
   EXPECT_EQ(section.id, "planning");
 
   const report::Table* vectors = table_with_column(section, "Entry point (LPS mm)");
@@ -117,22 +119,67 @@ TEST(PlanningSection, ShowsVectorsChecksScheduleAndSimulation) {
   for (const auto& row : simulation->rows) EXPECT_EQ(row[3], "0.00 mm") << row[0];
 }
 
-// A stored result that lost its "feasible" flag is an error naming it, never reported as feasible.
-TEST(PlanningSection, AResultWithoutItsFeasibleFlagIsAnError) {
+// Issue 17: a stored plan result is one record read strictly. What the report shows reads back,
+// and a result that lost or garbled a field is an error naming the artefact and the key, never a
+// zero in the report or a plan read as feasible.
+TEST(PlanResultRecord, ReadsBackWhatTheReportShowsAndRefusesDamage) {
+  ArchivedCase c;
   const Phantom phantom = make_phantom(PhantomSpec{.spacing_mm = 2.0});
-  const planning::PlanResult result = planning::apply_plan(
-      planning::distraction_plan({.advancement_mm = 10, .widening_mm = 6}, "test"), phantom.labels, phantom.landmarks);
-  Json damaged = planning::plan_result_json(result);
-  damaged.erase("feasible");
-  try {
-    planning_section(damaged);
-    ADD_FAILURE() << "a result without \"feasible\" was reported";
-  } catch (const Error& error) {
-    EXPECT_EQ(error.code(), ErrorCode::kArchiveCorrupt);
-    EXPECT_NE(error.reason().find("feasible"), std::string::npos);
-  }
-  damaged["feasible"] = "yes";
-  EXPECT_THROW(planning_section(damaged), Error);
+  const StoredPlan plan =
+      store_plan(c.archive, c.case_id, planning::distraction_plan({.advancement_mm = 10, .widening_mm = 6}, "test"));
+  const planning::PlanResult result = planning::apply_plan(plan.plan, phantom.labels, phantom.landmarks);
+  PlanOutputs outputs;
+  outputs.segments = {{planning::Segment::kMaxilla, 1234, 5.5}};
+  outputs.bone_voxels = 5000;
+  const Json stored = plan_result_record_json(result, outputs);
+  store_plan_result(c.archive, c.case_id, plan, phantom.landmarks, stored);
+
+  const auto record = latest_plan_result(c.archive, c.case_id);
+  ASSERT_TRUE(record);
+  EXPECT_EQ(record->format_version, PlanResultRecord::kFormatVersion);
+  EXPECT_EQ(record->feasible, result.feasible);
+  EXPECT_EQ(record->plan.description, "test");
+  ASSERT_TRUE(record->distraction);
+  EXPECT_EQ(record->distraction->checks.size(), result.distraction->checks.size());
+  EXPECT_EQ(record->distraction->right.activation_mm, result.distraction->vectors.right.activation_mm);
+  EXPECT_EQ(record->distraction->schedule.consolidation_end_day, result.distraction->schedule.consolidation_end_day);
+  EXPECT_EQ(record->distraction->simulation.size(), result.distraction->simulation.points.size());
+  ASSERT_TRUE(record->osteotomy);
+  EXPECT_EQ(record->osteotomy->segments.front().segment, "maxilla");
+  EXPECT_EQ(record->osteotomy->bone_voxels, 5000);
+  EXPECT_FALSE(record->osteotomy->transfer_model);
+
+  auto failure = [&](const std::function<void(Json&)>& damage) -> std::string {
+    Json damaged = stored;
+    damage(damaged);
+    try {
+      read_plan_result_record(damaged, "artefact 9 (plan result)");
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), ErrorCode::kArchiveCorrupt) << e.what();
+      return e.what();
+    }
+    ADD_FAILURE() << "damage not noticed";
+    return {};
+  };
+  EXPECT_EQ(failure([](Json& j) { j.erase("feasible"); }), "artefact 9 (plan result): feasible: missing");
+  EXPECT_EQ(failure([](Json& j) { j["feasible"] = "yes"; }), "artefact 9 (plan result): feasible: must be true or false");
+  EXPECT_EQ(failure([](Json& j) { j["distraction"]["checks"][3].erase("limit_mm"); }),
+            "artefact 9 (plan result): distraction.checks[3].limit_mm: missing");
+  EXPECT_EQ(failure([](Json& j) { j["distraction"]["schedule"]["right"]["first_day"] = 1.5; }),
+            "artefact 9 (plan result): distraction.schedule.right.first_day: must be an integer");
+  EXPECT_EQ(failure([](Json& j) { j["distraction"]["forward_simulation"]["points"][0].erase("target"); }),
+            "artefact 9 (plan result): distraction.forward_simulation.points[0].target: missing");
+  EXPECT_EQ(failure([](Json& j) { j["osteotomy"]["segments"][0]["voxels"] = "many"; }),
+            "artefact 9 (plan result): osteotomy.segments[0].voxels: must be an integer");
+  EXPECT_EQ(failure([](Json& j) { j["frame"].erase("source"); }), "artefact 9 (plan result): frame.source: missing");
+  EXPECT_EQ(failure([](Json& j) { j["files"]["render"] = 3; }), "artefact 9 (plan result): files.render: must be a path");
+  EXPECT_EQ(failure([](Json& j) { j["format_version"] = 2; }),
+            "artefact 9 (plan result): format_version: is 2, newer than this program reads (1): update maxillo");
+  EXPECT_NE(failure([](Json& j) { j["plan"]["moves"] = 4; }).find("artefact 9 (plan result) plan"), std::string::npos);
+  // Results stored before the version key existed have the same layout: read as version 1.
+  Json old = stored;
+  old.erase("format_version");
+  EXPECT_EQ(read_plan_result_record(old, "old").format_version, 1);
 }
 
 }  // namespace
