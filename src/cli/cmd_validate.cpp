@@ -57,7 +57,7 @@ int run_validate(const ValidateOptions& o, const GlobalOptions& global) {
   const auto stored = o.force || !key ? std::nullopt : pipeline::find_validation(archive, case_id, *key);
   if (stored) {
     if (global.json)
-      std::cout << stored->summary.dump(2) << "\n";
+      std::cout << stored->document.dump(2) << "\n";
     else
       std::cout << "case " << case_id << ": validation up to date (inputs unchanged); --force recomputes it\n";
     return 0;

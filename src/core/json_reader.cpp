@@ -85,6 +85,36 @@ const Json& JsonReader::required_array(const std::string& key) {
   return v;
 }
 
+Eigen::Isometry3d JsonReader::required_rigid_transform(const std::string& key) {
+  const Json& rows = required_array(key);
+  const std::string name = field(key);
+  Eigen::Matrix4d m;
+  if (rows.size() != 4) fail(name, "must be 4 rows of 4 numbers");
+  for (size_t i = 0; i < 4; ++i) {
+    if (!rows[i].is_array() || rows[i].size() != 4) fail(name, "must be 4 rows of 4 numbers");
+    for (size_t j = 0; j < 4; ++j) {
+      if (!rows[i][j].is_number() || !std::isfinite(rows[i][j].get<double>())) fail(name, "must be 4 rows of 4 numbers");
+      m(Eigen::Index(i), Eigen::Index(j)) = rows[i][j].get<double>();
+    }
+  }
+  if ((m.row(3) - Eigen::RowVector4d(0, 0, 0, 1)).norm() > 1e-9) fail(name, "last row must be 0 0 0 1");
+  const Eigen::Matrix3d rotation = m.topLeftCorner<3, 3>();
+  if ((rotation.transpose() * rotation - Eigen::Matrix3d::Identity()).norm() > 1e-6 || rotation.determinant() < 0)
+    fail(name, "is not a rigid transform (its 3 x 3 part is not a rotation)");
+  Eigen::Isometry3d transform;
+  transform.matrix() = m;
+  return transform;
+}
+
+int JsonReader::format_version(int newest) {
+  int version = 1;
+  integer("format_version", version, 1, 1000000);
+  if (version > newest)
+    fail("format_version", "is " + std::to_string(version) + ", newer than this program reads (" +
+                               std::to_string(newest) + "): update maxillo");
+  return version;
+}
+
 JsonReader JsonReader::object(const std::string& key) {
   return JsonReader(at(key), field(key), source_, code_, root_);
 }

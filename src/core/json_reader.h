@@ -4,7 +4,7 @@
 // code naming the source and the key path of the field ("moves[0].transform_lps: must be ..."),
 // never a nlohmann exception. Optional fields leave their default when absent; required ones
 // fail when absent or of the wrong type, so a damaged record is never read as a default.
-#include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -22,6 +22,9 @@ class JsonReader {
   // failures name `root`).
   JsonReader(const Json& json, std::string path, std::string source, ErrorCode code = ErrorCode::kBadValue,
              std::string root = "document");
+  // The reader keeps a reference to the object: a temporary would be gone before the first read.
+  JsonReader(Json&& json, std::string path, std::string source, ErrorCode code = ErrorCode::kBadValue,
+             std::string root = "document") = delete;
 
   [[noreturn]] void fail(const std::string& field, const std::string& reason) const;
   // The key path of `key` in this object: "moves[0].segment".
@@ -50,9 +53,16 @@ class JsonReader {
   std::string required_text(const std::string& key);
   Eigen::Vector3d required_point(const std::string& key);
   const Json& required_array(const std::string& key);
+  // A rigid transform stored as 4 rows of 4 numbers: the last row (0, 0, 0, 1), the 3 x 3 part a
+  // rotation (orthonormal to 1e-6, determinant +1).
+  Eigen::Isometry3d required_rigid_transform(const std::string& key);
   // A reader of the object under `key` (required), or of element `index` of an array field.
   JsonReader object(const std::string& key);
   JsonReader element(const Json& array, const std::string& key, size_t index) const;
+
+  // The record's "format_version": 1 when absent (records stored before the key existed have
+  // version 1's layout); a version above `newest` fails, since a newer program wrote it.
+  int format_version(int newest);
 
   // Three finite numbers at `name`.
   Eigen::Vector3d point_of(const Json& value, const std::string& name) const;

@@ -3,14 +3,16 @@
 #include <algorithm>
 #include <map>
 
+#include "archive/artefact_kind.h"
 #include "ceph/landmark_io.h"
 #include "core/error.h"
 #include "core/json.h"
+#include "core/json_reader.h"
 #include "core/sha256.h"
 
 namespace maxillo::pipeline {
 namespace {
-constexpr const char* kLandmarksKind = "landmarks";
+const std::string kLandmarksKind = kind_name(ArtefactKind::kLandmarks);
 
 Json frame_json(const LandmarkFrame& frame) {
   if (frame.geometry != LandmarkGeometry::kCephalogram) return "LPS";
@@ -20,15 +22,43 @@ Json frame_json(const LandmarkFrame& frame) {
                 {"face", frame.axes.facing == FacingDirection::kPlusX ? "+x" : "-x"}}}};
 }
 
-LandmarkFrame frame_from_json(const Json& json) {
+// The frame frame_json wrote: "LPS", or a cephalogram's pixel spacing and image axes. Anything
+// else fails naming the key: a cephalogram read with a default spacing would give every
+// measurement at the wrong scale.
+LandmarkFrame read_frame(JsonReader& parameters) {
   LandmarkFrame frame;
-  if (!json.is_object() || !json.contains("cephalogram")) return frame;
-  const auto& c = json["cephalogram"];
+  const Json& value = parameters.at("frame");
+  if (value == Json("LPS")) return frame;
+  JsonReader r = parameters.object("frame");
+  JsonReader c = r.object("cephalogram");
   frame.geometry = LandmarkGeometry::kCephalogram;
-  frame.axes.pixel_spacing_mm = c.value("pixel_spacing_mm", 1.0);
-  frame.axes.vertical = c.value("image_y", "up") == "down" ? ImageVerticalAxis::kDown : ImageVerticalAxis::kUp;
-  frame.axes.facing = c.value("face", "+x") == "-x" ? FacingDirection::kMinusX : FacingDirection::kPlusX;
+  frame.axes.pixel_spacing_mm = c.required_number("pixel_spacing_mm", 1e-6, 1e3);
+  const std::string image_y = c.required_text("image_y"), face = c.required_text("face");
+  if (image_y != "up" && image_y != "down") c.fail(c.field("image_y"), "must be \"up\" or \"down\"");
+  if (face != "+x" && face != "-x") c.fail(c.field("face"), "must be \"+x\" or \"-x\"");
+  frame.axes.vertical = image_y == "down" ? ImageVerticalAxis::kDown : ImageVerticalAxis::kUp;
+  frame.axes.facing = face == "-x" ? FacingDirection::kMinusX : FacingDirection::kPlusX;
   return frame;
+}
+
+// A stored set's facts, from its artefact's parameters (what attach_landmarks wrote): the
+// source, the frame, and the time point and date when it has one.
+StoredLandmarks read_landmark_record(const ArtefactRecord& record) {
+  const std::string source = "artefact " + std::to_string(record.id) + " (landmarks)";
+  Json parameters = Json::parse(record.parameters_json, nullptr, /*allow_exceptions=*/false);
+  if (parameters.is_discarded()) parameters = nullptr;  // not JSON: refused below as not an object
+  JsonReader r(parameters, "", source, ErrorCode::kArchiveCorrupt, "parameters");
+  StoredLandmarks stored;
+  stored.artefact_id = record.id;
+  stored.source = r.required_text("source");
+  stored.frame = read_frame(r);
+  if (r.has("time_point") || r.has("date")) {
+    stored.time_point = {r.required_text("time_point"), r.required_text("date")};
+    if (!stored.time_point.date.empty() && !is_iso_date(stored.time_point.date))
+      r.fail("date", "must be YYYY-MM-DD or empty");
+  }
+  stored.created_at = record.created_at;
+  return stored;
 }
 
 LandmarkSet read_set(const Archive& archive, const ArtefactRecord& record) {
@@ -87,14 +117,7 @@ std::vector<StoredLandmarks> landmark_history(const Archive& archive, int64_t ca
   std::map<std::string, int> versions;
   for (const auto& record : artefacts) {
     if (record.kind != kLandmarksKind) continue;
-    auto parameters = Json::parse(record.parameters_json, nullptr, /*allow_exceptions=*/false);
-    if (parameters.is_discarded() || !parameters.is_object()) parameters = Json::object();
-    StoredLandmarks stored;
-    stored.artefact_id = record.id;
-    stored.time_point = {parameters.value("time_point", ""), parameters.value("date", "")};
-    stored.frame = frame_from_json(parameters.value("frame", Json("LPS")));
-    stored.source = parameters.value("source", "");
-    stored.created_at = record.created_at;
+    StoredLandmarks stored = read_landmark_record(record);
     stored.version = ++versions[stored.time_point.label];
     stored.landmarks = read_set(archive, record);
     history.push_back(std::move(stored));

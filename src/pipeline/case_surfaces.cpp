@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "archive/artefact_kind.h"
 #include "core/log.h"
 #include "core/parallel_slabs.h"
 #include "imaging/volume_assembly.h"
@@ -12,8 +13,8 @@
 namespace maxillo::pipeline {
 namespace {
 
-constexpr const char* kSkinKind = "surface-skin";
-constexpr const char* kBoneKind = "surface-bone";
+const std::string kSkinKind = kind_name(ArtefactKind::kSurfaceSkin);
+const std::string kBoneKind = kind_name(ArtefactKind::kSurfaceBone);
 
 Json surface_json(const SurfaceOptions& o) {
   return {{"keep_largest_components", o.keep_largest_components},

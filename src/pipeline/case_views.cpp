@@ -2,6 +2,7 @@
 
 #include <array>
 
+#include "archive/artefact_kind.h"
 #include "ceph/landmark_frame.h"
 #include "core/atomic_file.h"
 #include "core/sha256.h"
@@ -33,7 +34,14 @@ std::string caption_for(ViewedTissue tissue, render::StandardView view, const An
 }
 
 std::string artefact_kind(ViewedTissue tissue, render::StandardView view) {
-  return "render-" + std::string(name_of(tissue)) + "-" + std::string(render::name_of(view));
+  using render::StandardView;
+  const bool skin = tissue == ViewedTissue::Skin;
+  switch (view) {
+    case StandardView::Frontal: return kind_name(skin ? ArtefactKind::kRenderSkinFrontal : ArtefactKind::kRenderBoneFrontal);
+    case StandardView::Lateral: return kind_name(skin ? ArtefactKind::kRenderSkinLateral : ArtefactKind::kRenderBoneLateral);
+    case StandardView::Oblique: return kind_name(skin ? ArtefactKind::kRenderSkinOblique : ArtefactKind::kRenderBoneOblique);
+  }
+  return kind_name(ArtefactKind::kRenderSkinFrontal);
 }
 
 render::Scene scene_of(ViewedTissue tissue, const CaseSurfaces& surfaces) {

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <ctime>
 
+#include "archive/artefact_kind.h"
 #include "archive/instance_source.h"
 #include "core/atomic_file.h"
 #include "core/progress.h"
@@ -158,7 +159,7 @@ ConsultationResult write_consultation_report(Archive& archive, int64_t case_id, 
   result.pages = report::write_report(model, report_template, out_pdf);
   result.pdf = out_pdf;
   result.report_sha256 = archive.store_object(read_file(out_pdf));
-  archive.add_artefact(NewArtefact{case_id, "report", result.report_sha256, "application/pdf",
+  archive.add_artefact(NewArtefact{case_id, kind_name(ArtefactKind::kReport), result.report_sha256, "application/pdf",
                                    derivation_key({surfaces.key}, {{"template", options.template_resource}}), "{}"});
   result.seconds_layout = seconds_since(start);
   progress.advance();

@@ -100,7 +100,7 @@ std::vector<std::string> run_facts(const NightlyReport& report, const Shard& sha
 // The summary's own key: the validations it shows and the program. Unchanged -> not rewritten.
 std::string summary_key(const std::vector<StoredValidation>& shown, const std::vector<std::string>& facts) {
   Sha256 hash;
-  for (const auto& v : shown) hash.update(v.summary.at("inputs_hash").get<std::string>() + "\n");
+  for (const auto& v : shown) hash.update(v.record.inputs_hash + "\n");
   for (const auto& f : facts) hash.update(f + "\n");
   hash.update(kVersion);
   return hash.hex_digest();

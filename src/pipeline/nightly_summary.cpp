@@ -20,7 +20,7 @@ report::Table cohort_table(const std::vector<StoredValidation>& validations) {
   report::Table table;
   table.columns = statistics_columns("Case");
   for (const auto& v : validations)
-    table.rows.push_back(statistics_row(case_name(v), stored_regions(v.summary).front().closest));
+    table.rows.push_back(statistics_row(case_name(v), v.record.regions.front().closest));
   return table;
 }
 

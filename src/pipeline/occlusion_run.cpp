@@ -128,6 +128,7 @@ OcclusionRun run_occlusion(TriangleMesh upper, TriangleMesh lower, const std::ve
   run.allowed_penetration_mm = engine.allowed_penetration_mm();
   OcclusionogramOptions gram_options;
   gram_options.contact_threshold_mm = options.contact_threshold_mm;
+  run.contact_threshold_mm = options.contact_threshold_mm;
   run.gram = compute_occlusionogram(upper_field, lower_field, run.aligned.pose, gram_options);
   run.intersecting_triangle_pairs = lower_field.tree().intersecting_faces(upper_field.tree(), run.aligned.pose).size();
 

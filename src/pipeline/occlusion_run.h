@@ -34,6 +34,7 @@ struct OcclusionRun {
   occlusion::ArchRepairReport upper_repair, lower_repair;
   occlusion::AlignmentResult aligned;
   double allowed_penetration_mm = 0;
+  double contact_threshold_mm = 0;  // of the occlusionogram's contact regions
   size_t intersecting_triangle_pairs = 0;
   occlusion::Occlusionogram gram;
   std::optional<Splint> splint;

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "archive/artefact_kind.h"
 #include "core/atomic_file.h"
 #include "core/json.h"
 #include "pipeline/derivation.h"
@@ -57,12 +58,13 @@ report::Table contacts_table(const OcclusionRun& run) {
 report::KeyValueBlock alignment_facts(const OcclusionRun& run) {
   std::string springs;
   for (double r : run.aligned.residual_spring_mm) springs += (springs.empty() ? "" : ", ") + fixed(r, 2);
-  return {{{"Guided alignment", run.summary.value("status", std::string()) + " after " +
+  const bool converged = run.aligned.status == occlusion::AlignmentStatus::Converged;
+  return {{{"Guided alignment", std::string(converged ? "converged" : "iteration_limit") + " after " +
                                     std::to_string(run.aligned.iterations) + " iterations"},
            {"Residual springs", springs + " mm"},
            {"Deepest penetration", fixed(run.aligned.penetration_mm, 2) + " mm (allowed " +
                                        fixed(run.allowed_penetration_mm, 2) + " mm)"},
-           {"Contacts below " + fixed(run.summary.value("contact_threshold_mm", 1.0), 1) + " mm",
+           {"Contacts below " + fixed(run.contact_threshold_mm, 1) + " mm",
             std::to_string(run.gram.upper.contact_vertices) + " upper and " +
                 std::to_string(run.gram.lower.contact_vertices) + " lower vertices, " +
                 fixed(run.gram.upper.contact_area_mm2, 1) + " mm² on the upper arch"}}};
@@ -155,9 +157,9 @@ void store_occlusion_artefacts(Archive& archive, int64_t case_id, const Occlusio
     const std::string sha = archive.store_object(read_file(run.folder / file));
     archive.add_artefact(NewArtefact{case_id, kind, sha, media_type, key, "{}"});
   };
-  store("occlusion", "occlusion.json", "application/json");
-  store("occlusionogram", "occlusionogram.png", "image/png");
-  if (run.splint) store("splint", "splint.stl", "model/stl");
+  store(kind_name(ArtefactKind::kOcclusion), "occlusion.json", "application/json");
+  store(kind_name(ArtefactKind::kOcclusionogram), "occlusionogram.png", "image/png");
+  if (run.splint) store(kind_name(ArtefactKind::kSplint), "splint.stl", "model/stl");
 }
 
 }  // namespace maxillo::pipeline

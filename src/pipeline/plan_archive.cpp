@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "archive/artefact_kind.h"
 #include "ceph/landmark_io.h"
 #include "core/error.h"
 #include "core/sha256.h"
@@ -9,8 +10,8 @@
 namespace maxillo::pipeline {
 namespace {
 
-constexpr const char* kPlanKind = "plan";
-constexpr const char* kPlanResultKind = "plan-result";
+const std::string kPlanKind = kind_name(ArtefactKind::kPlan);
+const std::string kPlanResultKind = kind_name(ArtefactKind::kPlanResult);
 
 std::string object_text(const Archive& archive, const std::string& sha256) {
   const auto bytes = archive.read_object(sha256);

@@ -115,11 +115,7 @@ Json plan_result_record_json(const planning::PlanResult& result, const PlanOutpu
 PlanResultRecord read_plan_result_record(const Json& json, const std::string& source) {
   JsonReader r(json, "", source, ErrorCode::kArchiveCorrupt, "plan result");
   Record record;
-  record.format_version = 1;  // results stored before the key existed have this layout
-  r.integer("format_version", record.format_version, 1, 1000000);
-  if (record.format_version > Record::kFormatVersion)
-    r.fail("format_version", "is " + std::to_string(record.format_version) + ", newer than this program reads (" +
-                                 std::to_string(Record::kFormatVersion) + "): update maxillo");
+  record.format_version = r.format_version(Record::kFormatVersion);
   record.plan = read_plan(r.at("plan"), source);
   record.frame_source = r.object("frame").required_text("source");
   record.feasible = r.required_bool("feasible");

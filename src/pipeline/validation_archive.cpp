@@ -2,14 +2,15 @@
 
 #include <cmath>
 
+#include "archive/artefact_kind.h"
 #include "core/atomic_file.h"
 
 namespace maxillo::pipeline {
 namespace {
 
-constexpr const char* kSummaryKind = "validation";
-constexpr const char* kDistancesKind = "validation-distances";
-constexpr const char* kImageKind = "validation-image";
+const std::string kSummaryKind = kind_name(ArtefactKind::kValidation);
+const std::string kDistancesKind = kind_name(ArtefactKind::kValidationDistances);
+const std::string kImageKind = kind_name(ArtefactKind::kValidationImage);
 
 void store_image(Archive& archive, int64_t case_id, const std::string& key, const std::filesystem::path& png) {
   const auto sha = archive.store_object(read_file(png));
@@ -49,7 +50,8 @@ std::optional<StoredValidation> load(const Archive& archive, const std::vector<A
                                      const ArtefactRecord& summary) {
   StoredValidation stored;
   stored.case_id = summary.case_id;
-  stored.summary = read_json_object(archive, summary.object_sha256);
+  stored.document = read_json_object(archive, summary.object_sha256);
+  stored.record = read_validation_record(stored.document, "artefact " + std::to_string(summary.id) + " (validation)");
   for (const char* view : {"error-map-frontal", "error-map-lateral", "error-map-oblique"}) {
     auto image = newest(artefacts, kImageKind, summary.inputs_hash, view);
     if (!image) return std::nullopt;

@@ -13,12 +13,14 @@
 #include "archive/archive.h"
 #include "core/json.h"
 #include "pipeline/case_validation.h"
+#include "pipeline/validation_record.h"
 
 namespace maxillo::pipeline {
 
 struct StoredValidation {
   int64_t case_id = 0;
-  Json summary;                                   // validation.json's document
+  Json document;                                  // validation.json's document as stored (validate --json)
+  ValidationRecord record;                        // the same, read strictly
   std::vector<std::filesystem::path> error_maps;  // object files (PNG without extension)
   std::filesystem::path profile;
   std::vector<double> face_closest_mm;    // closest-point distances of the face's vertices

@@ -2,6 +2,7 @@
 
 #include "occlusion/occlusion_files.h"
 #include "pipeline/derivation.h"
+#include "pipeline/validation_record.h"
 #include "planning/osteotomy.h"
 
 namespace maxillo::pipeline {
@@ -35,24 +36,6 @@ Json to_json(const validation::DistanceStatistics& s) {
               {"within_tolerance_percent", s.within_tolerance_percent}};
 }
 
-validation::DistanceStatistics statistics_from_json(const Json& j) {
-  validation::DistanceStatistics s;
-  if (j.is_null()) return s;
-  s.count = j.at("count").get<int>();
-  s.mean_absolute = j.at("mean_absolute").get<double>();
-  s.mean_signed = j.at("mean_signed").get<double>();
-  s.standard_deviation = j.at("sd").get<double>();
-  s.p5 = j.at("p5").get<double>();
-  s.p25 = j.at("p25").get<double>();
-  s.p50 = j.at("p50").get<double>();
-  s.p75 = j.at("p75").get<double>();
-  s.p90 = j.at("p90").get<double>();
-  s.p95 = j.at("p95").get<double>();
-  s.max_absolute = j.at("max_absolute").get<double>();
-  s.within_tolerance_percent = j.at("within_tolerance_percent").get<double>();
-  return s;
-}
-
 Json validation_json(const CaseValidation& v, const CaseContents& contents) {
   Json segments = Json::array();
   for (const auto& s : v.segments) segments.push_back(segment_json(s));
@@ -61,7 +44,8 @@ Json validation_json(const CaseValidation& v, const CaseContents& contents) {
     regions.push_back({{"region", r.region},
                        {"closest", to_json(r.closest)},
                        {"corresponding", r.corresponding.count ? to_json(r.corresponding) : Json(nullptr)}});
-  return Json{{"case", v.case_id},
+  return Json{{"format_version", ValidationRecord::kFormatVersion},
+              {"case", v.case_id},
               {"case_label", contents.record.label},
               {"preop_series", v.preop_series},
               {"postop_series", v.postop_series},
@@ -77,14 +61,6 @@ Json validation_json(const CaseValidation& v, const CaseContents& contents) {
               {"segments", segments},
               {"regions", regions},
               {"seconds", v.seconds}};
-}
-
-std::vector<StoredRegion> stored_regions(const Json& validation) {
-  std::vector<StoredRegion> rows;
-  for (const auto& r : validation.at("regions"))
-    rows.push_back({r.at("region").get<std::string>(), statistics_from_json(r.at("closest")),
-                    statistics_from_json(r.at("corresponding"))});
-  return rows;
 }
 
 }  // namespace maxillo::pipeline

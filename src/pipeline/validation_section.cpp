@@ -8,31 +8,27 @@ namespace {
 
 using report::fixed;
 
-std::string date_text(const Json& summary, const char* key) {
-  const auto date = summary.value(key, "");
-  return date.empty() ? "(undated)" : report::format_dicom_date(date);
-}
+std::string date_text(const std::string& date) { return date.empty() ? "(undated)" : report::format_dicom_date(date); }
 
-report::Table segments_table(const Json& summary) {
+report::Table segments_table(const std::vector<ValidationRecord::Segment>& segments) {
   report::Table table;
   table.columns = {{"Segment", 2},
                    {"Planned vs actual, mean (mm)", 2, report::Align::Right},
                    {"max (mm)", 1.2, report::Align::Right},
                    {"rotation (°)", 1.3, report::Align::Right},
                    {"ICP rms (mm)", 1.3, report::Align::Right}};
-  for (const auto& s : summary.at("segments"))
-    table.rows.push_back({s.at("segment").get<std::string>(), fixed(s.at("mean_difference_mm").get<double>(), 2),
-                          fixed(s.at("max_difference_mm").get<double>(), 2),
-                          fixed(s.at("rotation_difference_deg").get<double>(), 2),
-                          fixed(s.at("icp_rms_mm").get<double>(), 2)});
+  for (const auto& s : segments)
+    table.rows.push_back({s.segment, fixed(s.mean_difference_mm, 2), fixed(s.max_difference_mm, 2),
+                          fixed(s.rotation_difference_deg, 2), fixed(s.icp_rms_mm, 2)});
   return table;
 }
 
-report::Table regions_table(const std::vector<StoredRegion>& regions, bool corresponding) {
+report::Table regions_table(const std::vector<ValidationRecord::Region>& regions, bool corresponding) {
   report::Table table;
   table.columns = statistics_columns("Region");
   for (const auto& r : regions)
-    table.rows.push_back(statistics_row(r.region, corresponding ? r.corresponding : r.closest));
+    table.rows.push_back(statistics_row(r.region, corresponding ? r.corresponding.value_or(validation::DistanceStatistics{})
+                                                                : r.closest));
   return table;
 }
 
@@ -60,28 +56,28 @@ std::vector<std::string> statistics_row(const std::string& name, const validatio
 }
 
 std::vector<report::Block> validation_blocks(const StoredValidation& stored) {
-  const Json& summary = stored.summary;
-  const auto& registration = summary.at("registration");
+  const ValidationRecord& record = stored.record;
+  const ValidationRecord::Registration& registration = record.registration;
   std::vector<report::Block> blocks;
-  blocks.push_back(report::Paragraph{"The post-operative CT (" + date_text(summary, "postop_date") +
-                                     ") was registered onto the pre-operative CT (" + date_text(summary, "preop_date") +
+  blocks.push_back(report::Paragraph{"The post-operative CT (" + date_text(record.postop_date) +
+                                     ") was registered onto the pre-operative CT (" + date_text(record.preop_date) +
                                      ") by mutual information on the cranium above the infraorbital rim. Each bone "
                                      "segment the plan moves was then fitted to the post-operative bone (ICP from its "
                                      "planned move), and the face was predicted again for the moves actually made. "
                                      "Distances run from the predicted to the post-operative skin, on the outer face "
                                      "without eyes and neck; negative means the prediction lies behind the real face."});
   blocks.push_back(report::KeyValueBlock{{
-      {"Registration", "mutual information " + fixed(registration.at("metric").get<double>(), 3) + ", " +
-                           std::to_string(registration.at("iterations").get<int>()) + " iterations, " +
-                           fixed(registration.at("seconds").get<double>(), 1) + " s"},
-      {"Cranium after registration", "ICP residual " + fixed(registration.at("cranium_icp_rms_mm").get<double>(), 2) +
-                                         " mm rms against the post-operative bone"},
+      {"Registration", "mutual information " + fixed(registration.metric, 3) + ", " +
+                           std::to_string(registration.iterations) + " iterations, " + fixed(registration.seconds, 1) +
+                           " s"},
+      {"Cranium after registration",
+       "ICP residual " + fixed(registration.cranium_icp_rms_mm, 2) + " mm rms against the post-operative bone"},
   }});
-  if (!summary.at("segments").empty()) blocks.push_back(segments_table(summary));
-  const auto regions = stored_regions(summary);
+  if (!record.segments.empty()) blocks.push_back(segments_table(record.segments));
+  const auto& regions = record.regions;
   blocks.push_back(report::Paragraph{"Closest-point distance (mm), predicted to post-operative skin:"});
   blocks.push_back(regions_table(regions, false));
-  if (!regions.empty() && regions.front().corresponding.count > 0) {
+  if (!regions.empty() && regions.front().corresponding && regions.front().corresponding->count > 0) {
     blocks.push_back(report::Paragraph{
         "Corresponding-point distance (mm), after a smooth non-rigid registration of the prediction onto the outcome "
         "(coherent point drift): a point may not slide along the surface to its nearest neighbour."});

@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "archive/artefact_kind.h"
 #include "ceph/follow_up_months.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
@@ -12,7 +13,7 @@
 namespace maxillo::pipeline {
 namespace {
 
-constexpr const char* kArtefactKind = "chart-wits";
+const std::string kArtefactKind = kind_name(ArtefactKind::kChartWits);
 const render::ChartSettings kChartSettings{{1200, 700}, {1.0, 1.0, 1.0}, 22};
 
 std::string x_axis_title(const std::vector<ceph::MeasurementOverMonths>& charted) {

@@ -155,29 +155,6 @@ FrameMove read_stored_frame_move(JsonReader r) {
   return m;
 }
 
-// A 4 x 4 row-major matrix whose last row is (0, 0, 0, 1) and whose rotation part is orthonormal
-// with determinant +1 (to the round-off of the stored decimals).
-Eigen::Isometry3d read_stored_transform(JsonReader& r, const std::string& key) {
-  const Json& rows = r.required_array(key);
-  const std::string name = r.field(key);
-  Eigen::Matrix4d m;
-  if (rows.size() != 4) r.fail(name, "must be 4 rows of 4 numbers");
-  for (size_t i = 0; i < 4; ++i) {
-    if (!rows[i].is_array() || rows[i].size() != 4) r.fail(name, "must be 4 rows of 4 numbers");
-    for (size_t j = 0; j < 4; ++j) {
-      if (!rows[i][j].is_number() || !std::isfinite(rows[i][j].get<double>())) r.fail(name, "must be 4 rows of 4 numbers");
-      m(Eigen::Index(i), Eigen::Index(j)) = rows[i][j].get<double>();
-    }
-  }
-  if ((m.row(3) - Eigen::RowVector4d(0, 0, 0, 1)).norm() > 1e-9) r.fail(name, "last row must be 0 0 0 1");
-  const Eigen::Matrix3d rotation = m.topLeftCorner<3, 3>();
-  if ((rotation.transpose() * rotation - Eigen::Matrix3d::Identity()).norm() > 1e-6 || rotation.determinant() < 0)
-    r.fail(name, "is not a rigid transform (its 3 x 3 part is not a rotation)");
-  Eigen::Isometry3d transform;
-  transform.matrix() = m;
-  return transform;
-}
-
 }  // namespace
 
 std::vector<PlannedMove> planned_moves_from_json(const Json& result, const std::string& source, ErrorCode code) {
@@ -193,7 +170,7 @@ std::vector<PlannedMove> planned_moves_from_json(const Json& result, const std::
     move.segment = *segment;
     move.pivot = m.required_point("pivot");
     move.move = read_stored_frame_move(m.object("move"));
-    move.transform = read_stored_transform(m, "transform_lps");
+    move.transform = m.required_rigid_transform("transform_lps");
     m.refuse_unknown_keys();
     read.push_back(move);
   }

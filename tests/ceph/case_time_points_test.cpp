@@ -77,6 +77,34 @@ TEST(CaseTimePoints, CephalogramAxesAreKeptWithTheSet) {
   EXPECT_EQ(stored.frame.axes.vertical, ImageVerticalAxis::kDown);
 }
 
+// Issue 17: a stored set's facts are read strictly. A cephalogram set whose pixel spacing was lost
+// would be measured at a default scale; it is an error naming the artefact and the key instead.
+TEST(CaseTimePoints, DamagedStoredFactsAreAnErrorNamingTheKey) {
+  const std::string set = R"({"@schema": "https://raw.githubusercontent.com/slicer/slicer/master/Modules/Loadable/Markups/Resources/Schema/markups-schema-v1.0.3.json#", "markups": []})";
+  const std::pair<const char*, const char*> damaged[] = {
+      {R"({"source": "a.csv", "count": 0, "frame": {"cephalogram": {"image_y": "down", "face": "+x"}}})",
+       "frame.cephalogram.pixel_spacing_mm: missing"},
+      {R"({"source": "a.csv", "count": 0, "frame": {"cephalogram": {"pixel_spacing_mm": 0.1, "image_y": "sideways", "face": "+x"}}})",
+       "frame.cephalogram.image_y: must be \"up\" or \"down\""},
+      {R"({"count": 0, "frame": "LPS"})", "source: missing"},
+      {R"({"source": "a.csv", "count": 0, "frame": "LPS", "time_point": "pre"})", "date: missing"},
+      {R"({"source": "a.csv", "count": 0, "frame": "LPS", "time_point": "pre", "date": "2001-1-1"})",
+       "date: must be YYYY-MM-DD or empty"},
+  };
+  for (const auto& [parameters, expected] : damaged) {
+    ArchivedCase c;
+    const int64_t id = c.archive.add_artefact(
+        NewArtefact{c.case_id, "landmarks", c.archive.store_object(set), "application/json", "x", parameters});
+    try {
+      landmark_history(c.archive, c.case_id);
+      ADD_FAILURE() << "accepted: " << parameters;
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), ErrorCode::kArchiveCorrupt);
+      EXPECT_EQ(std::string(e.what()), "artefact " + std::to_string(id) + " (landmarks): " + expected);
+    }
+  }
+}
+
 TEST(CephalometrySection, MeasurementTableAndFollowUpTable) {
   ArchivedCase c;
   attach_landmarks(c.archive, c.case_id, phantom_landmarks(0), "pre.csv", {"pre", "2002-05-01"});

@@ -68,7 +68,8 @@ TEST(JsonReader, FailuresNameTheSourceAndTheKeyPath) {
               r.refuse_unknown_keys();
             }),
             "artefact 3: format_version: unknown key");
-  EXPECT_EQ(failure([] { JsonReader(Json::array(), "", "artefact 3", ErrorCode::kArchiveCorrupt, "validation"); }),
+  const Json array = Json::array();
+  EXPECT_EQ(failure([&] { JsonReader(array, "", "artefact 3", ErrorCode::kArchiveCorrupt, "validation"); }),
             "artefact 3: validation: must be an object");
 }
 

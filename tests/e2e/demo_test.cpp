@@ -5,6 +5,7 @@
 #include <fstream>
 #include <set>
 
+#include "archive/artefact_kind.h"
 #include "archive/index_comparison.h"
 #include "core/json.h"
 #include "support/pdf_tools.h"
@@ -110,6 +111,22 @@ TEST_F(DemoTest, ReportHasThePlanningSectionWithTheMustShowNumbers) {
   auto show = run_command(std::string(MAXILLO_BINARY) + " --json --archive " + quote(folder_->path() / "out" / "archive") +
                           " plan show case:1 2>/dev/null");
   EXPECT_NE(show.output.find("\"history\""), std::string::npos) << show.output;
+}
+
+// Issue 17: every artefact the demo stores is of a kind in the one list (archive/artefact_kind.h),
+// and the demo shows every kind there is.
+TEST_F(DemoTest, EveryStoredArtefactKindIsInTheOneList) {
+  auto show = run_command(std::string(MAXILLO_BINARY) + " --json --archive " + quote(folder_->path() / "out" / "archive") +
+                          " show case:1 2>/dev/null");
+  ASSERT_EQ(show.exit_code, 0);
+  std::set<ArtefactKind> stored;
+  const Json shown = Json::parse(show.output);  // kept: the loop must not range over a temporary's member
+  for (const auto& artefact : shown.at("item").at("artefacts")) {
+    const auto kind = parse_artefact_kind(artefact.at("kind").get<std::string>());
+    ASSERT_TRUE(kind) << artefact.at("kind");
+    stored.insert(*kind);
+  }
+  EXPECT_EQ(stored.size(), std::size(kAllArtefactKinds));
 }
 
 // For a PACS: the report as a DICOM Encapsulated PDF filed into the patient's study.
