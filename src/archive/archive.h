@@ -49,8 +49,8 @@ struct ImportReport {
   size_t already_archived = 0;
   size_t conflicts = 0;
   size_t failed = 0;
-  size_t identity_flags = 0;  // new identity flags raised by this import
-  size_t restored = 0;        // already archived files whose lost or damaged object file was written again
+  size_t identity_flags = 0;            // new identity flags raised by this import
+  size_t restored = 0;                  // already archived files whose lost or damaged object file was written again
   std::vector<ImportProblem> problems;  // in the order met
   size_t files() const { return imported + already_archived + conflicts + failed; }
   bool all_ok() const { return conflicts == 0 && failed == 0; }
@@ -89,16 +89,16 @@ struct VerifyReport {
   std::string index_check = "ok";                // SQLite integrity_check's first finding
   std::vector<std::string> journal_differences;  // where the index and its journal disagree
   size_t objects_checked = 0;
-  std::vector<std::string> missing;          // sha256 of indexed objects without a file: data loss
-  std::vector<std::string> corrupt;          // sha256 whose file no longer hashes to its name
+  std::vector<std::string> missing;  // sha256 of indexed objects without a file: data loss
+  std::vector<std::string> corrupt;  // sha256 whose file no longer hashes to its name
   // What names each missing or corrupt object: "case:3 series:5 instance:12", "case:3 artefact:7 (report)".
   std::map<std::string, std::vector<std::string>> owners;
-  std::vector<std::filesystem::path> orphans;       // object files no row names
-  std::vector<std::filesystem::path> temporaries;   // leftovers of interrupted writes
-  size_t quarantined = 0;                    // orphans + temporaries moved into quarantine by Repair
-  size_t within_grace = 0;                   // orphans + temporaries Repair left: younger than the grace period
-  std::vector<std::string> restored;         // missing objects Repair found in quarantine and put back
-  std::string repair_refused;                // why Repair changed nothing, when it refused
+  std::vector<std::filesystem::path> orphans;      // object files no row names
+  std::vector<std::filesystem::path> temporaries;  // leftovers of interrupted writes
+  size_t quarantined = 0;                          // orphans + temporaries moved into quarantine by Repair
+  size_t within_grace = 0;                         // orphans + temporaries Repair left: younger than the grace period
+  std::vector<std::string> restored;               // missing objects Repair found in quarantine and put back
+  std::string repair_refused;                      // why Repair changed nothing, when it refused
   bool index_intact() const { return index_check == "ok" && journal_differences.empty(); }
   bool consistent() const {
     return index_intact() && missing.empty() && corrupt.empty() && orphans.empty() && temporaries.empty();
@@ -113,16 +113,16 @@ struct RebuildOptions {
 };
 
 struct RebuildReport {
-  size_t journal_entries = 0;                 // entries replayed
-  std::vector<std::string> journal_problems;  // entries missing or unreadable (skipped)
-  size_t restored_from_quarantine = 0;        // objects rows name, found in quarantine and put back
-  size_t instances_checked = 0;               // instance rows whose DICOM object was re-parsed
-  size_t instances_without_object = 0;        // instance rows whose object file is missing
-  std::vector<std::string> disagreements;     // instance rows their object contradicts
-  size_t dicom_adopted = 0;                   // DICOM objects no journal entry named, indexed anew
+  size_t journal_entries = 0;                      // entries replayed
+  std::vector<std::string> journal_problems;       // entries missing or unreadable (skipped)
+  size_t restored_from_quarantine = 0;             // objects rows name, found in quarantine and put back
+  size_t instances_checked = 0;                    // instance rows whose DICOM object was re-parsed
+  size_t instances_without_object = 0;             // instance rows whose object file is missing
+  std::vector<std::string> disagreements;          // instance rows their object contradicts
+  size_t dicom_adopted = 0;                        // DICOM objects no journal entry named, indexed anew
   std::vector<std::filesystem::path> unexplained;  // objects neither named by a row nor DICOM
-  std::filesystem::path previous_index;       // where the replaced index was kept (empty if none)
-  std::map<std::string, int64_t> rows;        // rows per table in the rebuilt index
+  std::filesystem::path previous_index;            // where the replaced index was kept (empty if none)
+  std::map<std::string, int64_t> rows;             // rows per table in the rebuilt index
 };
 
 struct MigrationOptions {
@@ -130,10 +130,10 @@ struct MigrationOptions {
 };
 
 struct MigrationReport {
-  size_t objects_copied = 0;    // written into the target's store
-  size_t objects_present = 0;   // already there, intact (a resumed migration)
+  size_t objects_copied = 0;                 // written into the target's store
+  size_t objects_present = 0;                // already there, intact (a resumed migration)
   std::vector<std::string> damaged_sources;  // source objects that no longer hash to their name (not copied)
-  size_t journal_entries = 0;   // entries copied and replayed
+  size_t journal_entries = 0;                // entries copied and replayed
   std::vector<std::string> journal_problems;
   std::map<std::string, int64_t> rows;  // rows per table in the target index
   // Row-by-row comparison of the source index with the target's: empty when they agree.
@@ -264,9 +264,9 @@ class Archive {
   bool finish_work(std::string_view queue, std::string_view item, std::string_view holder, std::string_view state,
                    std::string_view reason = {});
   struct WorkCounts {
-    size_t pending = 0;       // nobody holds them (never leased, or the lease ended)
-    size_t leased = 0;        // held by a live lease at `now`
-    size_t finished = 0;      // done, failed or superseded
+    size_t pending = 0;   // nobody holds them (never leased, or the lease ended)
+    size_t leased = 0;    // held by a live lease at `now`
+    size_t finished = 0;  // done, failed or superseded
   };
   WorkCounts work_counts(std::string_view queue, int64_t now) const;
   // Every finished item's state and holder, for reports and tests: item -> (state, holder, claims).

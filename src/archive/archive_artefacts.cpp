@@ -71,7 +71,8 @@ std::map<int64_t, std::vector<ArtefactRecord>> Archive::artefacts(const std::vec
   std::map<int64_t, std::vector<ArtefactRecord>> found;
   for (int64_t id : case_ids) found[id];
   db::for_each_row_with_ids(state_->db, std::string(sql::kArtefactColumns) + sql::kArtefactsOfCasesIn, sql::kInIdOrder,
-                            case_ids, [&](const db::Statement& row) { found[row.integer(1)].push_back(artefact_from(row)); });
+                            case_ids,
+                            [&](const db::Statement& row) { found[row.integer(1)].push_back(artefact_from(row)); });
   return found;
 }
 

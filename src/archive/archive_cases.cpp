@@ -45,8 +45,9 @@ namespace {
 
 // Studies by date and time; series by their study's place in that order, then by number and id.
 void sort_contents(CaseContents& contents) {
-  std::sort(contents.studies.begin(), contents.studies.end(),
-            [](const StudyRecord& a, const StudyRecord& b) { return std::tie(a.date, a.time, a.id) < std::tie(b.date, b.time, b.id); });
+  std::sort(contents.studies.begin(), contents.studies.end(), [](const StudyRecord& a, const StudyRecord& b) {
+    return std::tie(a.date, a.time, a.id) < std::tie(b.date, b.time, b.id);
+  });
   auto study_rank = [&](int64_t study) {
     return std::find_if(contents.studies.begin(), contents.studies.end(), [&](auto& s) { return s.id == study; }) -
            contents.studies.begin();

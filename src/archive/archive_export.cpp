@@ -85,7 +85,8 @@ class StagingFolder {
   const std::filesystem::path& path() const { return path_; }
 
   // Moves the files into out_dir (renamed whole when it does not exist yet).
-  std::vector<std::filesystem::path> publish(const std::vector<std::string>& names, const std::filesystem::path& out_dir) {
+  std::vector<std::filesystem::path> publish(const std::vector<std::string>& names,
+                                             const std::filesystem::path& out_dir) {
     std::error_code error;
     if (!std::filesystem::exists(out_dir, error)) {
       std::filesystem::rename(path_, out_dir, error);

@@ -14,8 +14,7 @@ std::string rebuild_advice(const std::filesystem::path& archive_folder) {
 }
 
 std::string rebuild_advice(db::Connection& db) {
-  if (db.engine() == db::Engine::Sqlite)
-    return rebuild_advice(static_cast<sqlite::Database&>(db).file().parent_path());
+  if (db.engine() == db::Engine::Sqlite) return rebuild_advice(static_cast<sqlite::Database&>(db).file().parent_path());
   return "restore the database from its backup; the shared object folder and its journal are untouched";
 }
 
@@ -34,10 +33,10 @@ IndexPresence check_index_presence(const std::filesystem::path& archive_folder) 
   bool present = std::filesystem::exists(index, error) && std::filesystem::file_size(index, error) > 0 && !error;
   if (present) return IndexPresence::Present;
   if (!holds_any_file(objects_folder(archive_folder))) return IndexPresence::Fresh;
-  throw Error(ErrorCode::kIndexDamaged, index.string(),
-              std::string(std::filesystem::exists(index) ? "the index is empty" : "the index is missing") +
-                  " but the object store holds archived data; it is never re-created empty: " +
-                  rebuild_advice(archive_folder));
+  throw Error(
+      ErrorCode::kIndexDamaged, index.string(),
+      std::string(std::filesystem::exists(index) ? "the index is empty" : "the index is missing") +
+          " but the object store holds archived data; it is never re-created empty: " + rebuild_advice(archive_folder));
 }
 
 void require_intact_index(db::Connection& db) {
@@ -46,7 +45,8 @@ void require_intact_index(db::Connection& db) {
   db::Statement check(db, "PRAGMA quick_check");
   std::string first = check.step() ? check.text(0) : "no answer";
   if (first == "ok") return;
-  throw Error(ErrorCode::kIndexDamaged, db.name(), "the index is damaged (SQLite quick_check: " + first + "); " + rebuild_advice(db));
+  throw Error(ErrorCode::kIndexDamaged, db.name(),
+              "the index is damaged (SQLite quick_check: " + first + "); " + rebuild_advice(db));
 }
 
 void require_index_not_behind_journal(db::Connection& db, const IndexJournal& journal) {

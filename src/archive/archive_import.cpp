@@ -21,9 +21,8 @@ class ScanQueue {
  public:
   void push(ScannedFile&& item) {
     std::unique_lock lock(mutex_);
-    not_full_.wait(lock, [&] {
-      return (items_.size() < kCapacity && (items_.empty() || bytes_ < kCapacityBytes)) || abandoned_;
-    });
+    not_full_.wait(
+        lock, [&] { return (items_.size() < kCapacity && (items_.empty() || bytes_ < kCapacityBytes)) || abandoned_; });
     if (abandoned_) return;
     bytes_ += item.bytes.size();
     items_.push_back(std::move(item));
@@ -127,7 +126,8 @@ ImportReport Archive::import_paths(const std::vector<std::filesystem::path>& pat
         case ScannedFile::Stage::Conflict:
         case ScannedFile::Stage::Failed:
           report_problem(report, options,
-                         {item->path, item->stage == ScannedFile::Stage::Conflict ? ImportOutcome::Conflict : ImportOutcome::Failed,
+                         {item->path,
+                          item->stage == ScannedFile::Stage::Conflict ? ImportOutcome::Conflict : ImportOutcome::Failed,
                           item->code, item->reason});
           progress.advance();
           break;
@@ -155,8 +155,7 @@ ImportReport Archive::import_paths(const std::vector<std::filesystem::path>& pat
     commit();
   } catch (...) {
     queue.abandon();
-    while (queue.pop()) {
-    }
+    while (queue.pop()) {}
     scanner.join();
     throw;
   }

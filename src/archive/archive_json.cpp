@@ -24,7 +24,7 @@ Json paths(const std::vector<std::filesystem::path>& items) {
 }  // namespace
 
 Json to_json(const PatientRecord& r) {
-  return {{"id", r.id}, {"patient_id", r.patient_id}, {"name", r.name}, {"birth_date", r.birth_date},
+  return {{"id", r.id},   {"patient_id", r.patient_id}, {"name", r.name}, {"birth_date", r.birth_date},
           {"sex", r.sex}, {"studies", r.study_count}};
 }
 
@@ -104,16 +104,18 @@ Json to_json(const CaseContents& c) {
 }
 
 Json to_json(const ImportProblem& p) {
-  return {{"path", p.path.string()}, {"outcome", std::string(to_string(p.outcome))},
-          {"code", std::string(name_of(p.code))}, {"reason", p.reason}};
+  return {{"path", p.path.string()},
+          {"outcome", std::string(to_string(p.outcome))},
+          {"code", std::string(name_of(p.code))},
+          {"reason", p.reason}};
 }
 
 Json to_json(const ImportReport& r) {
   Json problems = Json::array();
   for (const auto& p : r.problems) problems.push_back(to_json(p));
-  return {{"files", r.files()},         {"imported", r.imported}, {"already_archived", r.already_archived},
-          {"conflicts", r.conflicts},   {"failed", r.failed},     {"identity_flags", r.identity_flags}, {"restored", r.restored},
-          {"problems", problems}};
+  return {{"files", r.files()},       {"imported", r.imported}, {"already_archived", r.already_archived},
+          {"conflicts", r.conflicts}, {"failed", r.failed},     {"identity_flags", r.identity_flags},
+          {"restored", r.restored},   {"problems", problems}};
 }
 
 Json to_json(const VerifyReport& r) {

@@ -23,7 +23,8 @@ std::string percent_decoded(std::string_view text, std::string_view shown) {
       continue;
     }
     if (i + 2 >= text.size() || hex_digit(text[i + 1]) < 0 || hex_digit(text[i + 2]) < 0)
-      throw Error(ErrorCode::kBadArchiveAddress, std::string(shown), "a '%' in the objects folder is not followed by two hex digits");
+      throw Error(ErrorCode::kBadArchiveAddress, std::string(shown),
+                  "a '%' in the objects folder is not followed by two hex digits");
     out += char(hex_digit(text[i + 1]) * 16 + hex_digit(text[i + 2]));
     i += 2;
   }
@@ -67,14 +68,18 @@ ArchiveLocation parse_archive_location(std::string_view text) {
     const size_t end = query.find('&');
     std::string_view parameter = query.substr(0, end);
     query = end == std::string_view::npos ? "" : query.substr(end + 1);
-    if (parameter.starts_with("objects=")) objects = percent_decoded(parameter.substr(8), location.shown);
-    else if (!parameter.empty()) kept += (kept.empty() ? "?" : "&") + std::string(parameter);
+    if (parameter.starts_with("objects="))
+      objects = percent_decoded(parameter.substr(8), location.shown);
+    else if (!parameter.empty())
+      kept += (kept.empty() ? "?" : "&") + std::string(parameter);
   }
   if (objects.empty())
     fail("has no objects parameter: the shared object folder is part of the address (...?objects=/shared/folder)");
-  if (!std::filesystem::path(objects).is_absolute()) fail("objects must be an absolute folder, not \"" + objects + "\"");
+  if (!std::filesystem::path(objects).is_absolute())
+    fail("objects must be an absolute folder, not \"" + objects + "\"");
   // A server that does not answer should fail in seconds, not in libpq's default of forever.
-  if (kept.find("connect_timeout=") == std::string::npos) kept += (kept.empty() ? "?" : "&") + std::string("connect_timeout=10");
+  if (kept.find("connect_timeout=") == std::string::npos)
+    kept += (kept.empty() ? "?" : "&") + std::string("connect_timeout=10");
   location.server_uri = std::string(base) + kept;
   location.folder = objects;
   return location;

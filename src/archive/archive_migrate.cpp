@@ -58,9 +58,10 @@ void require_same_history(const Source& source, int64_t source_entries, Archive:
 
 void copy_objects(Source& source, ObjectStore& target, ProgressDisplay display, MigrationReport& report) {
   std::vector<std::pair<std::string, std::filesystem::path>> objects;
-  source.objects.for_each_file([&](ObjectStore::EntryKind kind, const std::string& sha, const std::filesystem::path& path) {
-    if (kind == ObjectStore::EntryKind::Object) objects.emplace_back(sha, path);
-  });
+  source.objects.for_each_file(
+      [&](ObjectStore::EntryKind kind, const std::string& sha, const std::filesystem::path& path) {
+        if (kind == ObjectStore::EntryKind::Object) objects.emplace_back(sha, path);
+      });
   std::sort(objects.begin(), objects.end());
   Progress progress("copy objects", objects.size(), display);
   for (const auto& [sha, path] : objects) {
@@ -96,8 +97,8 @@ void copy_secret(const Source& source, Archive& target) {
   const auto secret = source.folder / "deidentify.key";
   if (!std::filesystem::exists(secret)) return;
   const auto bytes = read_file(secret);
-  const auto destination = target.embedded() ? target.folder() / "deidentify.key"
-                                             : target.folder() / "settings" / "deidentify.key";
+  const auto destination =
+      target.embedded() ? target.folder() / "deidentify.key" : target.folder() / "settings" / "deidentify.key";
   if (std::filesystem::exists(destination)) {
     if (read_file(destination) != bytes)
       throw Error(ErrorCode::kConflict, destination.string(), "the target has another de-identification secret");
@@ -109,8 +110,8 @@ void copy_secret(const Source& source, Archive& target) {
 
 }  // namespace
 
-MigrationReport Archive::migrate(const std::filesystem::path& source_folder, const std::filesystem::path& target_address,
-                                 const MigrationOptions& options) {
+MigrationReport Archive::migrate(const std::filesystem::path& source_folder,
+                                 const std::filesystem::path& target_address, const MigrationOptions& options) {
   initialise_dicom_toolkit();
   if (names_index_server(source_folder.string()))
     throw Error(ErrorCode::kUsage, parse_archive_location(source_folder.string()).shown,
@@ -137,7 +138,8 @@ MigrationReport Archive::migrate(const std::filesystem::path& source_folder, con
   for (auto& problem : replayed.problems) report.journal_problems.push_back(std::move(problem));
   copy_secret(source, target);
 
-  for (const auto& difference : compare_indexes(source.index, state.db)) report.differences.push_back(difference.describe());
+  for (const auto& difference : compare_indexes(source.index, state.db))
+    report.differences.push_back(difference.describe());
   for (const auto& table : index_tables()) {
     db::Statement count(state.db, "SELECT COUNT(*) FROM " + table);
     report.rows[table] = db::single_integer(count);

@@ -34,7 +34,8 @@ std::map<int, std::string> migrations() {
   int expected = 1;
   for (const auto& [version, path] : by_version) {
     (void)path;
-    if (version != expected++) throw Error(ErrorCode::kProcessing, "db/", "schema migrations are not numbered 1, 2, 3...");
+    if (version != expected++)
+      throw Error(ErrorCode::kProcessing, "db/", "schema migrations are not numbered 1, 2, 3...");
   }
   return by_version;
 }
@@ -93,7 +94,6 @@ int upgrade_schema(db::Connection& db, const IndexJournal& journal) {
   }
   return db.schema_version();
 }
-
 
 void configure_connection(sqlite::Database& db) {
   // WAL: readers never block the writer; synchronous=NORMAL in WAL keeps the index consistent
@@ -163,7 +163,7 @@ std::unique_ptr<Archive::State> open_embedded(const ArchiveLocation& location, O
   try {
     state = std::make_unique<Archive::State>(
         location, connect_index(location, presence == IndexPresence::Fresh ? sqlite::OpenKind::Create
-                                                                             : sqlite::OpenKind::Existing));
+                                                                           : sqlite::OpenKind::Existing));
   } catch (const std::filesystem::filesystem_error& e) {
     throw Error(ErrorCode::kWriteFailed, location.folder.string(), e.code().message());
   }
@@ -177,8 +177,9 @@ std::unique_ptr<Archive::State> open_embedded(const ArchiveLocation& location, O
 std::unique_ptr<Archive::State> open_on_server(const ArchiveLocation& location, OpenMode mode) {
   std::error_code error;
   if (!std::filesystem::is_directory(location.folder, error))
-    throw Error(ErrorCode::kBadArchiveAddress, location.shown,
-                "the shared object folder " + location.folder.string() + " does not exist (make it on the shared storage)");
+    throw Error(
+        ErrorCode::kBadArchiveAddress, location.shown,
+        "the shared object folder " + location.folder.string() + " does not exist (make it on the shared storage)");
   auto state = std::make_unique<Archive::State>(location, connect_index(location, sqlite::OpenKind::Existing));
   if (state->db.schema_version() == 0) {
     if (holds_any_file(location.objects_folder()))
@@ -187,7 +188,8 @@ std::unique_ptr<Archive::State> open_on_server(const ArchiveLocation& location, 
                   "re-created empty over them: rebuild it from the folder with `maxillo --archive ADDRESS archive "
                   "rebuild-index` (or restore the database from its backup)");
     if (mode == OpenMode::Existing)
-      throw Error(ErrorCode::kNotFound, location.shown, "no archive in this database yet (`maxillo import` creates one)");
+      throw Error(ErrorCode::kNotFound, location.shown,
+                  "no archive in this database yet (`maxillo import` creates one)");
   }
   return state;
 }

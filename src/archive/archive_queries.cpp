@@ -22,18 +22,19 @@ PatientRecord patient_from(const db::Statement& row) {
   return {row.integer(0), row.text(1), row.text(2), row.text(3), row.text(4), row.integer(5)};
 }
 StudyRecord study_from(const db::Statement& row) {
-  return {row.integer(0), row.integer(1), row.text(2), row.text(3), row.text(4),
-          row.text(5),    row.text(6),    row.integer(7)};
+  return {row.integer(0), row.integer(1), row.text(2), row.text(3),
+          row.text(4),    row.text(5),    row.text(6), row.integer(7)};
 }
 InstanceRecord instance_from(const db::Statement& r) {
-  return InstanceRecord{r.integer(0), r.integer(1), r.text(2), r.text(3), optional_int(r, 4), r.text(5),
-                        r.text(6),    r.text(7),    r.text(8), r.integer(9), r.text(10), r.text(11)};
+  return InstanceRecord{r.integer(0), r.integer(1), r.text(2), r.text(3),    optional_int(r, 4), r.text(5),
+                        r.text(6),    r.text(7),    r.text(8), r.integer(9), r.text(10),         r.text(11)};
 }
 
 SeriesRecord series_from(const db::Statement& row) {
-  return {row.integer(0),        row.integer(1),        row.text(2),           row.text(3),
-          row.text(4),           optional_int(row, 5),  optional_int(row, 6),  optional_int(row, 7),
-          optional_real(row, 8), optional_real(row, 9), optional_real(row, 10), row.integer(11)};
+  return {
+      row.integer(0),         row.integer(1),       row.text(2),          row.text(3),           row.text(4),
+      optional_int(row, 5),   optional_int(row, 6), optional_int(row, 7), optional_real(row, 8), optional_real(row, 9),
+      optional_real(row, 10), row.integer(11)};
 }
 
 template <typename Record, typename Convert>
@@ -107,7 +108,8 @@ std::map<int64_t, CaseContents> read_case_contents(db::Connection& db, const std
     contents.record = CaseRecord{row.integer(8), contents.patient.id, row.text(6), row.text(7)};
   });
   db::for_each_row_with_ids(db, sql::kSeriesOfCasesIn, ")", case_ids, [&](const db::Statement& row) {
-    if (auto c = found.find(row.integer(13)); c != found.end()) c->second.series.push_back({series_from(row), row.text(12)});
+    if (auto c = found.find(row.integer(13)); c != found.end())
+      c->second.series.push_back({series_from(row), row.text(12)});
   });
   db::for_each_row_with_ids(db, sql::kStudiesOfCasesIn, ")", case_ids, [&](const db::Statement& row) {
     if (auto c = found.find(row.integer(8)); c != found.end()) c->second.studies.push_back(study_from(row));
@@ -116,12 +118,13 @@ std::map<int64_t, CaseContents> read_case_contents(db::Connection& db, const std
 }
 
 std::vector<InstanceRecord> Archive::instances(int64_t series) const {
-  return all_rows<InstanceRecord>(state_->db, std::string(sql::kInstanceColumns) + sql::kOfSeriesInOrder,
-                                  instance_from, series);
+  return all_rows<InstanceRecord>(state_->db, std::string(sql::kInstanceColumns) + sql::kOfSeriesInOrder, instance_from,
+                                  series);
 }
 
 std::optional<InstanceRecord> Archive::instance(int64_t id) const {
-  auto rows = all_rows<InstanceRecord>(state_->db, std::string(sql::kInstanceColumns) + sql::kWithId, instance_from, id);
+  auto rows =
+      all_rows<InstanceRecord>(state_->db, std::string(sql::kInstanceColumns) + sql::kWithId, instance_from, id);
   return rows.empty() ? std::nullopt : std::optional(rows.front());
 }
 
@@ -148,7 +151,8 @@ std::map<int64_t, std::vector<std::string>> Archive::series_object_hashes(const 
     int64_t id;
     std::string object;
     bool operator<(const Member& other) const {
-      return std::make_tuple(!number, number.value_or(0), id) < std::make_tuple(!other.number, other.number.value_or(0), other.id);
+      return std::make_tuple(!number, number.value_or(0), id) <
+             std::make_tuple(!other.number, other.number.value_or(0), other.id);
     }
   };
   std::map<int64_t, std::vector<Member>> members;
@@ -176,9 +180,11 @@ namespace {
 // "case:3", "series:12"...: an archive id with its kind spelt out, for when bare numbers of
 // different kinds collide.
 std::optional<ResolvedItem> typed_id(std::string_view text) {
-  constexpr std::pair<std::string_view, ItemKind> kPrefixes[] = {
-      {"patient:", ItemKind::Patient}, {"study:", ItemKind::Study},      {"series:", ItemKind::Series},
-      {"instance:", ItemKind::Instance}, {"case:", ItemKind::Case}};
+  constexpr std::pair<std::string_view, ItemKind> kPrefixes[] = {{"patient:", ItemKind::Patient},
+                                                                 {"study:", ItemKind::Study},
+                                                                 {"series:", ItemKind::Series},
+                                                                 {"instance:", ItemKind::Instance},
+                                                                 {"case:", ItemKind::Case}};
   for (const auto& [prefix, kind] : kPrefixes)
     if (text.starts_with(prefix))
       if (auto number = as_number(text.substr(prefix.size()))) return ResolvedItem{kind, *number};

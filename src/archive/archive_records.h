@@ -100,10 +100,10 @@ struct ResolvedItem {
 
 struct NewArtefact {
   int64_t case_id = 0;
-  std::string kind;         // "report", "render", "surface", "plan", ...
+  std::string kind;           // "report", "render", "surface", "plan", ...
   std::string object_sha256;  // from Archive::store_object
-  std::string media_type;   // "application/pdf", "image/png", "model/stl", ...
-  std::string inputs_hash;  // sha256 over the inputs (see core/sha256.h Sha256)
+  std::string media_type;     // "application/pdf", "image/png", "model/stl", ...
+  std::string inputs_hash;    // sha256 over the inputs (see core/sha256.h Sha256)
   std::string parameters_json = "{}";
 };
 

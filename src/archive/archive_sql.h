@@ -75,7 +75,8 @@ inline constexpr const char* kInstanceColumns =
 // slowest step (a spill to disk), and the client sorts each series' few hundred rows cheaply.
 inline constexpr const char* kObjectsOfSeriesIn =
     "SELECT series, object, instance_number, id FROM instances WHERE series IN (";
-inline constexpr const char* kOfSeriesInOrder = "WHERE series = ?1 ORDER BY instance_number IS NULL, instance_number, id";
+inline constexpr const char* kOfSeriesInOrder =
+    "WHERE series = ?1 ORDER BY instance_number IS NULL, instance_number, id";
 inline constexpr const char* kWithId = "WHERE id = ?1";
 inline constexpr const char* kCases = "SELECT id, patient, label, created_at FROM cases";
 inline constexpr const char* kIdentityFlags =
@@ -116,7 +117,8 @@ inline constexpr const char* kInsertArtefact =
     "INSERT INTO artefacts(case_id, kind, object, media_type, inputs_hash, parameters, program_version, created_at) "
     "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8) RETURNING id";
 inline constexpr const char* kArtefactColumns =
-    "SELECT id, case_id, kind, object, media_type, inputs_hash, parameters, program_version, created_at FROM artefacts ";
+    "SELECT id, case_id, kind, object, media_type, inputs_hash, parameters, program_version, created_at FROM "
+    "artefacts ";
 inline constexpr const char* kFindArtefact =
     "WHERE case_id = ?1 AND kind = ?2 AND inputs_hash = ?3 ORDER BY id DESC LIMIT 1";
 // kArtefactColumns + kArtefactsOfCasesIn + "?1, ?2..." + kInIdOrder: the artefacts of several cases.
@@ -149,7 +151,8 @@ inline constexpr const char* kRenewWork =
     "UPDATE work_queue SET expires_at = ?4 WHERE queue = ?1 AND item = ?2 AND holder = ?3 AND state = 'pending'";
 // ?1 queue ?2 item ?3 holder ?4 state ?5 reason
 inline constexpr const char* kFinishWork =
-    "UPDATE work_queue SET state = ?4, reason = ?5 WHERE queue = ?1 AND item = ?2 AND holder = ?3 AND state = 'pending'";
+    "UPDATE work_queue SET state = ?4, reason = ?5 WHERE queue = ?1 AND item = ?2 AND holder = ?3 AND state = "
+    "'pending'";
 // ?1 queue ?2 now -> pending, leased, finished
 inline constexpr const char* kCountWork =
     "SELECT COALESCE(SUM(CASE WHEN state = 'pending' AND expires_at <= ?2 THEN 1 ELSE 0 END), 0), "

@@ -47,8 +47,12 @@ class StoreLock {
 
 inline std::filesystem::path index_file(const std::filesystem::path& folder) { return folder / "index.sqlite"; }
 inline std::filesystem::path objects_folder(const std::filesystem::path& folder) { return folder / "objects"; }
-inline std::filesystem::path journal_folder(const std::filesystem::path& folder) { return objects_folder(folder) / "journal"; }
-inline std::filesystem::path journal_folder(const ArchiveLocation& location) { return location.objects_folder() / "journal"; }
+inline std::filesystem::path journal_folder(const std::filesystem::path& folder) {
+  return objects_folder(folder) / "journal";
+}
+inline std::filesystem::path journal_folder(const ArchiveLocation& location) {
+  return location.objects_folder() / "journal";
+}
 
 // Applies the schema migrations in db/ one version at a time; an index upgraded from version 1
 // gets a snapshot journal entry of its rows. Returns the schema version.
@@ -63,6 +67,5 @@ void configure_connection(sqlite::Database& db);
 
 // A new connection to the archive's index (import's scanning thread has its own).
 std::unique_ptr<db::Connection> connect_index(const ArchiveLocation& location, sqlite::OpenKind open_kind);
-
 
 }  // namespace maxillo

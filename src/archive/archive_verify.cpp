@@ -50,7 +50,8 @@ class ScratchIndex {
  private:
   void remove() {
     std::error_code ignored;
-    for (const char* suffix : {"", "-wal", "-shm", "-journal"}) std::filesystem::remove(path_.string() + suffix, ignored);
+    for (const char* suffix : {"", "-wal", "-shm", "-journal"})
+      std::filesystem::remove(path_.string() + suffix, ignored);
   }
   std::filesystem::path path_;
 };
@@ -99,26 +100,27 @@ void scan_objects(Archive::State& state, ProgressDisplay display, VerifyReport& 
   }
   Progress progress("verify", indexed.size(), display);
   std::unordered_set<std::string> seen;
-  state.objects.for_each_file([&](ObjectStore::EntryKind kind, const std::string& sha, const std::filesystem::path& path) {
-    if (kind == ObjectStore::EntryKind::Temporary) {
-      report.temporaries.push_back(path);
-      return;
-    }
-    auto found = indexed.find(sha);
-    if (found == indexed.end()) {
-      report.orphans.push_back(path);
-      return;
-    }
-    seen.insert(sha);
-    ++report.objects_checked;
-    progress.advance();
-    try {
-      auto bytes = read_file(path);
-      if (int64_t(bytes.size()) != found->second || sha256_hex(bytes) != sha) report.corrupt.push_back(sha);
-    } catch (const Error&) {
-      report.corrupt.push_back(sha);
-    }
-  });
+  state.objects.for_each_file(
+      [&](ObjectStore::EntryKind kind, const std::string& sha, const std::filesystem::path& path) {
+        if (kind == ObjectStore::EntryKind::Temporary) {
+          report.temporaries.push_back(path);
+          return;
+        }
+        auto found = indexed.find(sha);
+        if (found == indexed.end()) {
+          report.orphans.push_back(path);
+          return;
+        }
+        seen.insert(sha);
+        ++report.objects_checked;
+        progress.advance();
+        try {
+          auto bytes = read_file(path);
+          if (int64_t(bytes.size()) != found->second || sha256_hex(bytes) != sha) report.corrupt.push_back(sha);
+        } catch (const Error&) {
+          report.corrupt.push_back(sha);
+        }
+      });
   for (const auto& [sha, size] : indexed)
     if (!seen.contains(sha)) report.missing.push_back(sha);
   progress.finish();
@@ -151,8 +153,9 @@ bool younger_than(const std::filesystem::path& path, int64_t seconds) {
 void repair(Archive::State& state, const VerifyOptions& options, VerifyReport& report) {
   report.repair_refused = reason_to_refuse(report, options.force);
   if (!report.repair_refused.empty()) return;
-  const int64_t grace =
-      options.grace_seconds >= 0 ? options.grace_seconds : state.location.embedded() ? 0 : kServerOrphanGraceSeconds;
+  const int64_t grace = options.grace_seconds >= 0  ? options.grace_seconds
+                        : state.location.embedded() ? 0
+                                                    : kServerOrphanGraceSeconds;
   for (const auto* paths : {&report.orphans, &report.temporaries})
     for (const auto& path : *paths) {
       if (younger_than(path, grace)) {
@@ -164,8 +167,10 @@ void repair(Archive::State& state, const VerifyOptions& options, VerifyReport& r
     }
   std::vector<std::string> still_missing;
   for (const auto& sha : report.missing) {
-    if (state.objects.restore_from_quarantine(sha)) report.restored.push_back(sha);
-    else still_missing.push_back(sha);
+    if (state.objects.restore_from_quarantine(sha))
+      report.restored.push_back(sha);
+    else
+      still_missing.push_back(sha);
   }
   report.missing = std::move(still_missing);
   if (report.quarantined > 0 || !report.restored.empty()) state.objects.make_durable();

@@ -9,12 +9,12 @@
 namespace maxillo {
 
 enum class ArtefactKind {
-  kLandmarks,            // a landmark set (3D Slicer markups JSON), optionally of a time point
-  kPlan,                 // a saved plan version (plan JSON)
-  kPlanResult,           // the plan applied to the case (plan_result_record.h)
-  kSurfaceSkin,          // the report's skin surface (PLY)
-  kSurfaceBone,          // the report's bone surface (PLY)
-  kRenderSkinFrontal,    // standard views of the surfaces (PNG)
+  kLandmarks,          // a landmark set (3D Slicer markups JSON), optionally of a time point
+  kPlan,               // a saved plan version (plan JSON)
+  kPlanResult,         // the plan applied to the case (plan_result_record.h)
+  kSurfaceSkin,        // the report's skin surface (PLY)
+  kSurfaceBone,        // the report's bone surface (PLY)
+  kRenderSkinFrontal,  // standard views of the surfaces (PNG)
   kRenderSkinLateral,
   kRenderSkinOblique,
   kRenderBoneFrontal,
@@ -31,14 +31,25 @@ enum class ArtefactKind {
 };
 
 // Every kind, in the order above (for tables and tests).
-inline constexpr ArtefactKind kAllArtefactKinds[] = {
-    ArtefactKind::kLandmarks,         ArtefactKind::kPlan,              ArtefactKind::kPlanResult,
-    ArtefactKind::kSurfaceSkin,       ArtefactKind::kSurfaceBone,       ArtefactKind::kRenderSkinFrontal,
-    ArtefactKind::kRenderSkinLateral, ArtefactKind::kRenderSkinOblique, ArtefactKind::kRenderBoneFrontal,
-    ArtefactKind::kRenderBoneLateral, ArtefactKind::kRenderBoneOblique, ArtefactKind::kOcclusion,
-    ArtefactKind::kOcclusionogram,    ArtefactKind::kSplint,            ArtefactKind::kValidation,
-    ArtefactKind::kValidationDistances, ArtefactKind::kValidationImage, ArtefactKind::kChartWits,
-    ArtefactKind::kReport};
+inline constexpr ArtefactKind kAllArtefactKinds[] = {ArtefactKind::kLandmarks,
+                                                     ArtefactKind::kPlan,
+                                                     ArtefactKind::kPlanResult,
+                                                     ArtefactKind::kSurfaceSkin,
+                                                     ArtefactKind::kSurfaceBone,
+                                                     ArtefactKind::kRenderSkinFrontal,
+                                                     ArtefactKind::kRenderSkinLateral,
+                                                     ArtefactKind::kRenderSkinOblique,
+                                                     ArtefactKind::kRenderBoneFrontal,
+                                                     ArtefactKind::kRenderBoneLateral,
+                                                     ArtefactKind::kRenderBoneOblique,
+                                                     ArtefactKind::kOcclusion,
+                                                     ArtefactKind::kOcclusionogram,
+                                                     ArtefactKind::kSplint,
+                                                     ArtefactKind::kValidation,
+                                                     ArtefactKind::kValidationDistances,
+                                                     ArtefactKind::kValidationImage,
+                                                     ArtefactKind::kChartWits,
+                                                     ArtefactKind::kReport};
 
 // The name the index stores: "landmarks", "plan-result", "render-skin-frontal", ...
 std::string kind_name(ArtefactKind kind);

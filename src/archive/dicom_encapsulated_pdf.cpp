@@ -30,7 +30,8 @@ std::pair<std::string, std::string> creation_date_time(std::span<const std::byte
   const auto at = text.find("/CreationDate (D:");
   if (at == std::string_view::npos) return {};
   const auto digits = text.substr(at + 17, 14);
-  if (digits.size() < 8 || !std::all_of(digits.begin(), digits.begin() + 8, [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }))
+  if (digits.size() < 8 || !std::all_of(digits.begin(), digits.begin() + 8,
+                                        [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }))
     return {};
   size_t time_digits = 8;
   while (time_digits < digits.size() && std::isdigit(static_cast<unsigned char>(digits[time_digits]))) ++time_digits;

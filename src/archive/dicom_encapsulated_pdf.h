@@ -12,11 +12,11 @@
 namespace maxillo {
 
 struct EncapsulatedReport {
-  PatientRecord patient;          // from the archive: name, ID, birth date, sex
-  StudyRecord study;              // the study the report belongs to (UID, date, time, accession)
-  std::string document_title;     // e.g. "Consultation report"
+  PatientRecord patient;       // from the archive: name, ID, birth date, sex
+  StudyRecord study;           // the study the report belongs to (UID, date, time, accession)
+  std::string document_title;  // e.g. "Consultation report"
   std::string series_description = "maxillo reports";
-  int series_number = 9000;       // out of the way of scanner series numbers
+  int series_number = 9000;  // out of the way of scanner series numbers
 };
 
 // Writes the DICOM file to `out` atomically. Returns its SOP Instance UID.

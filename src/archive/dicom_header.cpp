@@ -142,9 +142,9 @@ InstanceHeader parse_instance_header(std::span<const std::byte> bytes, const std
     throw Error(ErrorCode::kNotDicom, path.string(), std::string("unreadable file meta information: ") + status.text());
   require_supported_syntax(header.transfer_syntax_uid, path);
   if (status == EC_StreamNotifyClient || status == EC_ItemEnd || status == EC_SequEnd ||
-      status == EC_PrematureSequDelimitationItem || status == EC_InvalidStream ||
-      (status.good() && !stream.eos()))
-    throw Error(ErrorCode::kTruncated, path.string(), std::string("file ends inside an attribute (") + status.text() + ")");
+      status == EC_PrematureSequDelimitationItem || status == EC_InvalidStream || (status.good() && !stream.eos()))
+    throw Error(ErrorCode::kTruncated, path.string(),
+                std::string("file ends inside an attribute (") + status.text() + ")");
   if (status.bad()) throw Error(ErrorCode::kNotDicom, path.string(), std::string("cannot parse: ") + status.text());
 
   DcmDataset& dataset = *file.getDataset();

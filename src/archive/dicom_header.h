@@ -37,8 +37,8 @@ struct InstanceHeader {
   std::optional<double> pixel_spacing_row;     // mm between rows
   std::optional<double> pixel_spacing_column;  // mm between columns
   std::optional<double> slice_thickness;       // mm
-  std::string image_position;     // (0020,0032) as stored: x\y\z in mm, LPS
-  std::string image_orientation;  // (0020,0037) as stored
+  std::string image_position;                  // (0020,0032) as stored: x\y\z in mm, LPS
+  std::string image_orientation;               // (0020,0037) as stored
 };
 
 // Parses bytes (a whole DICOM Part 10 file). `path` only names the file in errors.

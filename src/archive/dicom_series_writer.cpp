@@ -129,8 +129,8 @@ void write_slice(const DcmDataset& common, const Volume& volume, int k, const st
 
 }  // namespace
 
-WrittenSeries write_ct_series(const Volume& volume, const SeriesMetadata& metadata,
-                              const std::filesystem::path& folder, const std::string& prefix) {
+WrittenSeries write_ct_series(const Volume& volume, const SeriesMetadata& metadata, const std::filesystem::path& folder,
+                              const std::string& prefix) {
   const VolumeGeometry& g = volume.geometry;
   assert(g.size.minCoeff() > 0 && "write_ct_series needs a non-empty volume");
   assert(volume.hu.size() == size_t(g.voxel_count()) && "volume.hu must hold size.x*size.y*size.z values");

@@ -32,8 +32,8 @@ struct SeriesMetadata {
   // Added after the first contract; defaults keep older callers unchanged.
   std::string study_time = "120000";  // HHMMSS
   std::string accession_number;
-  double window_center = 300;   // HU; default: a bone window
-  double window_width = 2000;   // HU
+  double window_center = 300;  // HU; default: a bone window
+  double window_width = 2000;  // HU
 };
 
 struct WrittenSeries {
@@ -44,7 +44,7 @@ struct WrittenSeries {
 
 // Creates `folder` if needed and writes slice k as folder/<prefix><k, 4 digits>.dcm.
 // Throws Error(WriteFailed) naming the file that could not be written.
-WrittenSeries write_ct_series(const Volume& volume, const SeriesMetadata& metadata,
-                              const std::filesystem::path& folder, const std::string& prefix = "slice");
+WrittenSeries write_ct_series(const Volume& volume, const SeriesMetadata& metadata, const std::filesystem::path& folder,
+                              const std::string& prefix = "slice");
 
 }  // namespace maxillo

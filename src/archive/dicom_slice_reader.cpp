@@ -31,9 +31,7 @@ struct Reading {
   const std::filesystem::path& path;
   DcmDataset& dataset;
 
-  [[noreturn]] void fail(ErrorCode code, const std::string& reason) const {
-    throw Error(code, path.string(), reason);
-  }
+  [[noreturn]] void fail(ErrorCode code, const std::string& reason) const { throw Error(code, path.string(), reason); }
   std::string string_or_empty(const DcmTagKey& tag) const {
     OFString value;
     if (dataset.findAndGetOFString(tag, value).bad()) return {};
@@ -60,7 +58,8 @@ struct Reading {
 };
 
 void read_geometry(const Reading& r, DicomSlice& slice) {
-  for (int a = 0; a < 3; ++a) slice.position[a] = r.required_double(DCM_ImagePositionPatient, a, "Image Position (Patient)");
+  for (int a = 0; a < 3; ++a)
+    slice.position[a] = r.required_double(DCM_ImagePositionPatient, a, "Image Position (Patient)");
   for (int a = 0; a < 3; ++a) {
     slice.row_direction[a] = r.required_double(DCM_ImageOrientationPatient, a, "Image Orientation (Patient)");
     slice.column_direction[a] = r.required_double(DCM_ImageOrientationPatient, a + 3, "Image Orientation (Patient)");
@@ -74,14 +73,15 @@ void read_geometry(const Reading& r, DicomSlice& slice) {
   slice.column_direction /= column_norm;
   slice.row_spacing = r.required_double(DCM_PixelSpacing, 0, "Pixel Spacing");
   slice.column_spacing = r.required_double(DCM_PixelSpacing, 1, "Pixel Spacing");
-  if (slice.row_spacing <= 0 || slice.column_spacing <= 0) r.fail(ErrorCode::kBadValue, "Pixel Spacing is not positive");
+  if (slice.row_spacing <= 0 || slice.column_spacing <= 0)
+    r.fail(ErrorCode::kBadValue, "Pixel Spacing is not positive");
   slice.gantry_tilt_degrees = r.optional_double(DCM_GantryDetectorTilt);
 }
 
 void check_image_kind(const Reading& r, const std::string& photometric) {
   if (photometric != "MONOCHROME1" && photometric != "MONOCHROME2")
-    r.fail(ErrorCode::kUnsupportedSyntax, "photometric interpretation '" + photometric +
-                                              "' is not a greyscale image (MONOCHROME1/2 expected)");
+    r.fail(ErrorCode::kUnsupportedSyntax,
+           "photometric interpretation '" + photometric + "' is not a greyscale image (MONOCHROME1/2 expected)");
   Sint32 frames = 1;
   if (r.dataset.findAndGetSint32(DCM_NumberOfFrames, frames).good() && frames > 1)
     r.fail(ErrorCode::kUnsupportedSyntax, "multi-frame image (" + std::to_string(frames) + " frames)");
@@ -94,8 +94,8 @@ void check_transfer_syntax(const Reading& r) {
   E_TransferSyntax syntax = r.dataset.getOriginalXfer();
   DcmXfer xfer(syntax);
   if (xfer.isEncapsulated() && !DcmCodecList::canChangeCoding(syntax, EXS_LittleEndianExplicit))
-    r.fail(ErrorCode::kUnsupportedSyntax, std::string("no decoder for transfer syntax ") + xfer.getXferName() +
-                                              " (" + xfer.getXferID() + ")");
+    r.fail(ErrorCode::kUnsupportedSyntax,
+           std::string("no decoder for transfer syntax ") + xfer.getXferName() + " (" + xfer.getXferID() + ")");
 }
 
 // The stored value of sample `index` as an integer: masked to BitsStored, sign-extended if signed.
@@ -136,7 +136,8 @@ void check_frame_size(const Reading& r, DcmPixelData& pixel_data, size_t frame_b
 void read_pixels(const Reading& r, DicomSlice& slice, const std::string& photometric) {
   SampleLayout layout{r.required_uint16(DCM_BitsAllocated, "Bits Allocated"), 0, false};
   if (layout.bits_allocated != 8 && layout.bits_allocated != 16)
-    r.fail(ErrorCode::kUnsupportedSyntax, "bits allocated is " + std::to_string(layout.bits_allocated) + ", expected 8 or 16");
+    r.fail(ErrorCode::kUnsupportedSyntax,
+           "bits allocated is " + std::to_string(layout.bits_allocated) + ", expected 8 or 16");
   Uint16 stored = 0, representation = 0;
   layout.bits_stored = r.dataset.findAndGetUint16(DCM_BitsStored, stored).good() ? stored : layout.bits_allocated;
   if (layout.bits_stored < 1 || layout.bits_stored > layout.bits_allocated)
@@ -181,7 +182,7 @@ DicomSlice read_dicom_slice(const std::filesystem::path& path) {
 }
 
 DicomSlice decode_dicom_slice(std::span<const std::byte> bytes, const std::filesystem::path& path) {
-  initialise_dicom_toolkit();  // decoders, and DCMTK told how we read the file meta group
+  initialise_dicom_toolkit();          // decoders, and DCMTK told how we read the file meta group
   check_dicom_structure(bytes, path);  // lengths and nesting checked before DCMTK reads them
   DcmInputBufferStream stream;
   stream.setBuffer(bytes.data(), static_cast<offile_off_t>(bytes.size()));

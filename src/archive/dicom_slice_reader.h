@@ -24,12 +24,12 @@ struct DicomSlice {
   std::filesystem::path path;
   std::string series_instance_uid;
   std::string sop_instance_uid;
-  int instance_number = 0;              // 0 when absent
-  Eigen::Vector3d position{0, 0, 0};    // Image Position (Patient): LPS mm of the first pixel's centre
+  int instance_number = 0;                    // 0 when absent
+  Eigen::Vector3d position{0, 0, 0};          // Image Position (Patient): LPS mm of the first pixel's centre
   Eigen::Vector3d row_direction{1, 0, 0};     // IOP[0..2]: LPS unit vector along a row (column index grows)
   Eigen::Vector3d column_direction{0, 1, 0};  // IOP[3..5]: LPS unit vector down a column (row index grows)
-  double row_spacing = 1;     // mm between the centres of adjacent rows    (Pixel Spacing[0])
-  double column_spacing = 1;  // mm between the centres of adjacent columns (Pixel Spacing[1])
+  double row_spacing = 1;                     // mm between the centres of adjacent rows    (Pixel Spacing[0])
+  double column_spacing = 1;                  // mm between the centres of adjacent columns (Pixel Spacing[1])
   int rows = 0;
   int columns = 0;
   double rescale_slope = 1;

@@ -49,8 +49,10 @@ std::string vr_text(const char vr[2]) {
   std::string text;
   for (int k = 0; k < 2; ++k) {
     auto c = static_cast<unsigned char>(vr[k]);
-    if (c >= 0x20 && c < 0x7F) text += char(c);
-    else text += "\\x" + hex4(c).substr(2);
+    if (c >= 0x20 && c < 0x7F)
+      text += char(c);
+    else
+      text += "\\x" + hex4(c).substr(2);
   }
   return text;
 }
@@ -62,7 +64,8 @@ class Reader {
   size_t size() const { return bytes_.size(); }
   uint16_t u16(size_t at, bool big) const { return uint16_t(at_byte(at, big ? 0 : 1) << 8 | at_byte(at, big ? 1 : 0)); }
   uint32_t u32(size_t at, bool big) const {
-    return big ? uint32_t(u16(at, true)) << 16 | u16(at + 2, true) : uint32_t(u16(at + 2, false)) << 16 | u16(at, false);
+    return big ? uint32_t(u16(at, true)) << 16 | u16(at + 2, true)
+               : uint32_t(u16(at + 2, false)) << 16 | u16(at, false);
   }
   void chars(size_t at, char out[2]) const {
     out[0] = char(at_byte(at, 0));
@@ -109,15 +112,18 @@ MetaInformation read_meta(const Reader& in) {
     char vr[2];
     in.chars(at + 4, vr);
     if (!listed(kVrs, vr))
-      in.fail(ErrorCode::kNotDicom, at, "file meta element " + tag_text(2, element) + " has no valid VR ('" + vr_text(vr) + "')");
+      in.fail(ErrorCode::kNotDicom, at,
+              "file meta element " + tag_text(2, element) + " has no valid VR ('" + vr_text(vr) + "')");
     const bool long_form = listed(kLongVrs, vr);
     const size_t header = long_form ? 12 : 8;
     if (at + header > in.size()) in.fail(ErrorCode::kTruncated, at, "file ends inside the file meta information");
     const uint32_t length = long_form ? in.u32(at + 8, false) : in.u16(at + 6, false);
     if (length == kUndefinedLength || length > in.size() - at - header)
-      in.fail(ErrorCode::kTruncated, at, "file meta element " + tag_text(2, element) + " claims more bytes than remain");
+      in.fail(ErrorCode::kTruncated, at,
+              "file meta element " + tag_text(2, element) + " claims more bytes than remain");
     if (element == 0x0010) {
-      if (vr[0] != 'U' || vr[1] != 'I') in.fail(ErrorCode::kNotDicom, at, "Transfer Syntax UID (0002,0010) is not of VR UI");
+      if (vr[0] != 'U' || vr[1] != 'I')
+        in.fail(ErrorCode::kNotDicom, at, "Transfer Syntax UID (0002,0010) is not of VR UI");
       std::string uid = in.text(at + header, length);
       while (!uid.empty() && (uid.back() == '\0' || uid.back() == ' ')) uid.pop_back();
       if (!is_uid(uid)) in.fail(ErrorCode::kNotDicom, at, "Transfer Syntax UID (0002,0010) is not a UID");
@@ -193,7 +199,8 @@ class DataSetWalk {
 
   void open(Container::Kind kind, size_t limit, bool undefined, Encoding encoding) {
     if (kind == Container::Kind::Sequence && ++depth_ > kMaxSequenceNesting)
-      in_.fail(ErrorCode::kBadValue, at_, "sequences nested deeper than " + std::to_string(kMaxSequenceNesting) + " levels");
+      in_.fail(ErrorCode::kBadValue, at_,
+               "sequences nested deeper than " + std::to_string(kMaxSequenceNesting) + " levels");
     open_.push_back({kind, limit, undefined, encoding});
   }
 
@@ -211,7 +218,8 @@ class DataSetWalk {
     } else {
       in_.chars(at_ + 4, vr);
       if (!listed(kVrs, vr))
-        in_.fail(ErrorCode::kNotDicom, at_, "element " + tag_text(group, element) + " has no valid VR ('" + vr_text(vr) + "')");
+        in_.fail(ErrorCode::kNotDicom, at_,
+                 "element " + tag_text(group, element) + " has no valid VR ('" + vr_text(vr) + "')");
       if (listed(kLongVrs, vr)) {
         header = 12;
         if (limit - at_ < header) in_.fail(ErrorCode::kTruncated, at_, "file ends inside an element header");
@@ -228,8 +236,10 @@ class DataSetWalk {
       in_.fail(ErrorCode::kTruncated, start,
                "element " + tag_text(group, element) + " claims " + std::to_string(length) + " bytes, " +
                    std::to_string(limit - at_) + " remain");
-    if (sequence) open(Container::Kind::Sequence, at_ + length, false, encoding());
-    else at_ += length;
+    if (sequence)
+      open(Container::Kind::Sequence, at_ + length, false, encoding());
+    else
+      at_ += length;
   }
 
   void undefined_length(uint16_t group, uint16_t element, const char vr[2], bool sequence, size_t start, size_t limit) {
@@ -237,7 +247,8 @@ class DataSetWalk {
     const bool implicit = encoding() == Encoding::ImplicitLittle;
     if (group == 0x7FE0 && element == 0x0010) return open(Container::Kind::Fragments, limit, true, encoding());
     if (!(sequence || unknown || implicit))
-      in_.fail(ErrorCode::kNotDicom, start, "element " + tag_text(group, element) + " of VR " + vr_text(vr) + " has an undefined length");
+      in_.fail(ErrorCode::kNotDicom, start,
+               "element " + tag_text(group, element) + " of VR " + vr_text(vr) + " has an undefined length");
     // UN of undefined length holds a sequence in implicit VR little endian (PS3.5 6.2.2).
     open(Container::Kind::Sequence, limit, true, unknown ? Encoding::ImplicitLittle : encoding());
   }
@@ -247,9 +258,11 @@ class DataSetWalk {
     at_ += 8;
     const Container* parent = open_.empty() ? nullptr : &open_.back();
     if (element == kItem) {
-      if (!parent || parent->kind == Container::Kind::Item) in_.fail(ErrorCode::kNotDicom, start, "item outside a sequence");
+      if (!parent || parent->kind == Container::Kind::Item)
+        in_.fail(ErrorCode::kNotDicom, start, "item outside a sequence");
       if (parent->kind == Container::Kind::Fragments) {  // compressed pixel data: raw bytes
-        if (length == kUndefinedLength || length > limit - at_) in_.fail(ErrorCode::kTruncated, start, "pixel data fragment runs past the end");
+        if (length == kUndefinedLength || length > limit - at_)
+          in_.fail(ErrorCode::kTruncated, start, "pixel data fragment runs past the end");
         at_ += length;
         return;
       }
@@ -258,8 +271,10 @@ class DataSetWalk {
       return open(Container::Kind::Item, at_ + length, false, parent->encoding);
     }
     const bool ends_item = element == kItemEnd && parent && parent->kind == Container::Kind::Item && parent->undefined;
-    const bool ends_sequence = element == kSequenceEnd && parent && parent->kind != Container::Kind::Item && parent->undefined;
-    if (!ends_item && !ends_sequence) in_.fail(ErrorCode::kNotDicom, start, "misplaced delimiter " + tag_text(kItemGroup, element));
+    const bool ends_sequence =
+        element == kSequenceEnd && parent && parent->kind != Container::Kind::Item && parent->undefined;
+    if (!ends_item && !ends_sequence)
+      in_.fail(ErrorCode::kNotDicom, start, "misplaced delimiter " + tag_text(kItemGroup, element));
     close();
   }
 

@@ -13,7 +13,8 @@ std::string conflict_reason(const std::string& sop_instance_uid, const std::stri
 
 }  // namespace
 
-BatchWriter::BatchWriter(db::Connection& db, ObjectStore& objects, const IndexJournal& journal, std::string source_label)
+BatchWriter::BatchWriter(db::Connection& db, ObjectStore& objects, const IndexJournal& journal,
+                         std::string source_label)
     : source_label_(std::move(source_label)),
       db_(db),
       objects_(objects),
@@ -66,8 +67,14 @@ void BatchWriter::commit(ImportReport& report, const ImportOptions& options) {
     for (const auto& file : batch_) {
       std::string reason;
       switch (const ImportOutcome result = insert(file, now, outcome, reason)) {
-        case ImportOutcome::Imported: ++outcome.imported; archived.emplace_back(file.path, result); break;
-        case ImportOutcome::AlreadyArchived: ++outcome.already_archived; archived.emplace_back(file.path, result); break;
+        case ImportOutcome::Imported:
+          ++outcome.imported;
+          archived.emplace_back(file.path, result);
+          break;
+        case ImportOutcome::AlreadyArchived:
+          ++outcome.already_archived;
+          archived.emplace_back(file.path, result);
+          break;
         default: problems.push_back({file.path, ImportOutcome::Conflict, ErrorCode::kConflict, reason}); break;
       }
     }
@@ -123,7 +130,12 @@ ImportOutcome BatchWriter::insert(const ScannedFile& file, const std::string& no
 
 const BatchWriter::PatientState& BatchWriter::patient_of(const InstanceHeader& h, const std::string& now) {
   if (auto found = patients_.find(h.patient_id); found != patients_.end()) return found->second;
-  insert_patient_.reset().bind(1, h.patient_id).bind(2, h.patient_name).bind(3, h.birth_date).bind(4, h.sex).bind(5, now);
+  insert_patient_.reset()
+      .bind(1, h.patient_id)
+      .bind(2, h.patient_name)
+      .bind(3, h.birth_date)
+      .bind(4, h.sex)
+      .bind(5, now);
   if (auto id = db::inserted_id(insert_patient_)) transaction_->inserted("patients", *id);
   PatientState state{};
   patient_by_id_.reset().bind(1, h.patient_id).step();
@@ -132,7 +144,8 @@ const BatchWriter::PatientState& BatchWriter::patient_of(const InstanceHeader& h
   state.birth_date = patient_by_id_.text(2);
   state.sex = patient_by_id_.text(3);
   patient_by_id_.reset();
-  if (auto id = db::inserted_id(insert_case_.reset().bind(1, state.id).bind(2, now))) transaction_->inserted("cases", *id);
+  if (auto id = db::inserted_id(insert_case_.reset().bind(1, state.id).bind(2, now)))
+    transaction_->inserted("cases", *id);
   state.default_case = db::single_integer(case_of_patient_.reset().bind(1, state.id));
   return patients_.emplace(h.patient_id, std::move(state)).first->second;
 }

@@ -42,7 +42,8 @@ class BatchWriter {
   ImportOutcome insert(const ScannedFile& file, const std::string& now, ImportReport& report, std::string& reason);
   ImportOutcome archived_outcome(const ScannedFile& file, std::string& reason);
   const PatientState& patient_of(const InstanceHeader& h, const std::string& now);
-  void flag_identity(const PatientState& patient, const ScannedFile& file, const std::string& now, ImportReport& report);
+  void flag_identity(const PatientState& patient, const ScannedFile& file, const std::string& now,
+                     ImportReport& report);
   int64_t study_of(const InstanceHeader& h, int64_t patient);
   int64_t series_of(const InstanceHeader& h, int64_t study, int64_t case_id);
 

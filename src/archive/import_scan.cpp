@@ -41,8 +41,10 @@ void list_folder(const std::filesystem::path& folder, FileList& list) {
   for (const auto& entry : sorted) {
     std::error_code ignored;
     if (entry.is_symlink(ignored) && entry.is_directory(ignored)) continue;  // no loops
-    if (entry.is_directory(ignored)) list_folder(entry.path(), list);
-    else list.files.push_back(entry.path());
+    if (entry.is_directory(ignored))
+      list_folder(entry.path(), list);
+    else
+      list.files.push_back(entry.path());
   }
 }
 
@@ -69,10 +71,13 @@ FileList list_input_files(const std::vector<std::filesystem::path>& paths) {
   for (const auto& path : paths) {
     std::error_code error;
     auto status = std::filesystem::status(path, error);
-    if (std::filesystem::is_directory(status)) list_folder(path, list);
-    else if (std::filesystem::exists(status) || std::filesystem::is_symlink(std::filesystem::symlink_status(path, error)))
+    if (std::filesystem::is_directory(status))
+      list_folder(path, list);
+    else if (std::filesystem::exists(status) ||
+             std::filesystem::is_symlink(std::filesystem::symlink_status(path, error)))
       list.files.push_back(path);
-    else list.unreachable.push_back(failure(path, ErrorCode::kFileNotFound, "no such file or folder"));
+    else
+      list.unreachable.push_back(failure(path, ErrorCode::kFileNotFound, "no such file or folder"));
   }
   return list;
 }
@@ -83,8 +88,10 @@ struct FileScanner::Queries {
         db(*connection),
         known_object(db, sql::kInstanceWithObject),
         object_of_sop(db, sql::kObjectOfSopInstance) {
-    if (db.engine() == db::Engine::Sqlite) db.execute("PRAGMA query_only = ON");
-    else db.execute("SET default_transaction_read_only = on");
+    if (db.engine() == db::Engine::Sqlite)
+      db.execute("PRAGMA query_only = ON");
+    else
+      db.execute("SET default_transaction_read_only = on");
   }
   std::unique_ptr<db::Connection> connection;
   db::Connection& db;

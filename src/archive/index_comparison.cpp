@@ -21,7 +21,8 @@ int64_t rows_missing_from(sqlite::Database& db, const std::string& table, const 
   db::Statement sample(db, except + " LIMIT " + std::to_string(kExamples));
   while (sample.step()) {
     std::string row;
-    for (int c = 0; c < sample.column_count(); ++c) row += (c ? ", " : "") + sample.column_name(c) + "=" + sample.text(c);
+    for (int c = 0; c < sample.column_count(); ++c)
+      row += (c ? ", " : "") + sample.column_name(c) + "=" + sample.text(c);
     examples.push_back(label + ": " + row);
   }
   return rows;
@@ -88,7 +89,8 @@ std::vector<TableDifference> compare_attached_indexes(sqlite::Database& db, cons
   std::vector<TableDifference> differences;
   for (const auto& table : compared_tables()) {
     TableDifference difference{table, 0, 0, {}};
-    difference.only_in_first = rows_missing_from(db, table, "main", second_schema, "only in the first", difference.examples);
+    difference.only_in_first =
+        rows_missing_from(db, table, "main", second_schema, "only in the first", difference.examples);
     difference.only_in_second =
         rows_missing_from(db, table, second_schema, "main", "only in the second", difference.examples);
     if (difference.only_in_first || difference.only_in_second) differences.push_back(std::move(difference));
@@ -96,7 +98,8 @@ std::vector<TableDifference> compare_attached_indexes(sqlite::Database& db, cons
   return differences;
 }
 
-std::vector<TableDifference> compare_index_files(const std::filesystem::path& first, const std::filesystem::path& second) {
+std::vector<TableDifference> compare_index_files(const std::filesystem::path& first,
+                                                 const std::filesystem::path& second) {
   sqlite::Database db(first, sqlite::OpenKind::ReadOnly);
   db::Statement attach(db, "ATTACH DATABASE ?1 AS second");
   attach.bind(1, second.string()).run();

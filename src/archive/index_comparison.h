@@ -12,7 +12,7 @@ namespace maxillo {
 
 struct TableDifference {
   std::string table;
-  int64_t only_in_first = 0;   // rows of the first index the second lacks (or holds otherwise)
+  int64_t only_in_first = 0;  // rows of the first index the second lacks (or holds otherwise)
   int64_t only_in_second = 0;
   std::vector<std::string> examples;  // up to a few rows, "only in first: {json}"
   std::string describe() const;
@@ -28,6 +28,7 @@ std::vector<TableDifference> compare_indexes(db::Connection& first, db::Connecti
 std::vector<TableDifference> compare_attached_indexes(sqlite::Database& db, const std::string& second_schema);
 
 // Opens both files (read only) and compares them.
-std::vector<TableDifference> compare_index_files(const std::filesystem::path& first, const std::filesystem::path& second);
+std::vector<TableDifference> compare_index_files(const std::filesystem::path& first,
+                                                 const std::filesystem::path& second);
 
 }  // namespace maxillo

@@ -41,7 +41,7 @@ class PreparedStatement {
   virtual void bind_real(int index, double value) = 0;
   virtual void bind_text(int index, std::string_view text) = 0;
   virtual void bind_null(int index) = 0;
-  virtual bool step() = 0;  // the first call runs the statement
+  virtual bool step() = 0;               // the first call runs the statement
   virtual int rows_changed() const = 0;  // by the last run of an INSERT, UPDATE or DELETE
   virtual int column_count() const = 0;
   virtual std::string column_name(int column) const = 0;
@@ -108,8 +108,7 @@ class Statement {
   bool step() { return prepared_->step(); }
   // Runs a statement to its end; returns the rows it inserted, updated or deleted.
   int run() {
-    while (prepared_->step()) {
-    }
+    while (prepared_->step()) {}
     return prepared_->rows_changed();
   }
 

@@ -37,9 +37,9 @@ std::optional<int64_t> number_of(const std::string& name, size_t digits) {
 std::string journal_entry_text(const JournalEntry& entry) {
   Json rows = Json::array();
   for (const auto& row : entry.rows) rows.push_back({{"table", row.table}, {"values", row.values}});
-  Json json = {{"format", kFormat},       {"version", kFormatVersion}, {"sequence", entry.sequence},
-               {"at", entry.at},          {"operation", entry.operation},
-               {"program_version", entry.program_version}, {"rows", std::move(rows)}};
+  Json json = {{"format", kFormat},      {"version", kFormatVersion},    {"sequence", entry.sequence},
+               {"at", entry.at},         {"operation", entry.operation}, {"program_version", entry.program_version},
+               {"rows", std::move(rows)}};
   // Text was decoded to UTF-8 on import; replace, never fail, should anything else slip in.
   return json.dump(1, ' ', false, Json::error_handler_t::replace) + "\n";
 }

@@ -36,9 +36,9 @@ struct JournalRow {
 
 struct JournalEntry {
   int64_t sequence = 0;
-  std::string at;               // UTC ISO 8601, when the transaction ran
-  std::string operation;        // "import", "artefact", "object", "case", "role", "snapshot", ...
-  std::string program_version;  // of the program that wrote it
+  std::string at;                // UTC ISO 8601, when the transaction ran
+  std::string operation;         // "import", "artefact", "object", "case", "role", "snapshot", ...
+  std::string program_version;   // of the program that wrote it
   std::vector<JournalRow> rows;  // in the order they were written (foreign keys first)
 };
 

@@ -16,7 +16,6 @@ namespace {
 
 constexpr size_t kAdoptionBatch = 500;
 
-
 void remove_index_files(const std::filesystem::path& index) {
   std::error_code ignored;
   for (const char* suffix : {"", "-wal", "-shm", "-journal"}) std::filesystem::remove(index.string() + suffix, ignored);
@@ -51,8 +50,8 @@ void check_instances(db::Connection& db, const ObjectStore& objects, ProgressDis
   count.step();
   Progress progress("check instances", size_t(count.integer(0)), display);
   db::Statement rows(db,
-                         "SELECT i.id, i.object, i.sop_instance_uid, x.series_uid, s.study_uid FROM instances i "
-                         "JOIN series x ON x.id = i.series JOIN studies s ON s.id = x.study ORDER BY i.id");
+                     "SELECT i.id, i.object, i.sop_instance_uid, x.series_uid, s.study_uid FROM instances i "
+                     "JOIN series x ON x.id = i.series JOIN studies s ON s.id = x.study ORDER BY i.id");
   while (rows.step()) {
     progress.advance();
     auto path = objects.path_of(rows.text(1));
@@ -64,7 +63,8 @@ void check_instances(db::Connection& db, const ObjectStore& objects, ProgressDis
     try {
       auto header = parse_instance_header(read_file(path), path);
       ++report.instances_checked;
-      if (header.sop_instance_uid != rows.text(2) || header.series_uid != rows.text(3) || header.study_uid != rows.text(4))
+      if (header.sop_instance_uid != rows.text(2) || header.series_uid != rows.text(3) ||
+          header.study_uid != rows.text(4))
         report.disagreements.push_back(row + ": its DICOM UIDs differ from the journal's row");
     } catch (const Error& e) {
       report.disagreements.push_back(row + ": " + e.reason());
@@ -103,8 +103,10 @@ void adopt_unindexed_objects(db::Connection& db, ObjectStore& objects, const Ind
       continue;
     }
     std::string reason;
-    if (writer.add(std::move(file), reason) == ImportOutcome::Imported) ++report.dicom_adopted;
-    else report.unexplained.push_back(path);
+    if (writer.add(std::move(file), reason) == ImportOutcome::Imported)
+      ++report.dicom_adopted;
+    else
+      report.unexplained.push_back(path);
     if (writer.pending() >= kAdoptionBatch) writer.commit(imported, {});
   }
   writer.commit(imported, {});
@@ -128,7 +130,8 @@ void install(const std::filesystem::path& folder, const std::filesystem::path& r
   const auto index = index_file(folder);
   std::error_code error;
   if (std::filesystem::exists(index, error) || std::filesystem::exists(index.string() + "-wal", error)) {
-    report.previous_index = folder / ("index.sqlite." + std::string(was_intact ? "replaced-" : "damaged-") + utc_stamp());
+    report.previous_index =
+        folder / ("index.sqlite." + std::string(was_intact ? "replaced-" : "damaged-") + utc_stamp());
     for (const char* suffix : {"", "-wal"})
       if (std::filesystem::exists(index.string() + suffix, error))
         std::filesystem::rename(index.string() + suffix, report.previous_index.string() + suffix);

@@ -24,11 +24,16 @@ std::vector<std::string> schema_columns(db::Connection& db, const std::string& t
 }
 
 void bind_value(db::Statement& statement, int index, const Json& value, const std::filesystem::path& source) {
-  if (value.is_null()) statement.bind_null(index);
-  else if (value.is_number_integer()) statement.bind(index, value.get<int64_t>());
-  else if (value.is_number()) statement.bind(index, value.get<double>());
-  else if (value.is_string()) statement.bind(index, bytes_from_utf8(value.get<std::string>()));
-  else refuse(source, "a value is neither a number, a string nor null");
+  if (value.is_null())
+    statement.bind_null(index);
+  else if (value.is_number_integer())
+    statement.bind(index, value.get<int64_t>());
+  else if (value.is_number())
+    statement.bind(index, value.get<double>());
+  else if (value.is_string())
+    statement.bind(index, bytes_from_utf8(value.get<std::string>()));
+  else
+    refuse(source, "a value is neither a number, a string nor null");
 }
 
 // The key of each index table (db/001_initial.sql).

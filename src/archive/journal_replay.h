@@ -35,8 +35,8 @@ class JournalReplayer {
 };
 
 struct ReplayOutcome {
-  size_t entries = 0;             // entries applied
-  int64_t last_sequence = 0;      // the highest applied (0 when none)
+  size_t entries = 0;                 // entries applied
+  int64_t last_sequence = 0;          // the highest applied (0 when none)
   std::vector<std::string> problems;  // "entry 12: missing", "entry 13: <reason>"
 };
 

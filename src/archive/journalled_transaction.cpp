@@ -20,14 +20,14 @@ Json column_value(const db::Statement& row, int column) {
 
 Json row_json(const db::Statement& row) {
   Json values = Json::object();
-  for (int column = 0; column < row.column_count(); ++column) values[row.column_name(column)] = column_value(row, column);
+  for (int column = 0; column < row.column_count(); ++column)
+    values[row.column_name(column)] = column_value(row, column);
   return values;
 }
 
 Json row_as_json(db::Connection& db, std::string_view table, std::string_view where, const std::vector<SqlKey>& keys) {
   db::Statement query(db, "SELECT * FROM " + std::string(table) + " WHERE " + std::string(where));
-  for (size_t k = 0; k < keys.size(); ++k)
-    std::visit([&](const auto& key) { query.bind(int(k + 1), key); }, keys[k]);
+  for (size_t k = 0; k < keys.size(); ++k) std::visit([&](const auto& key) { query.bind(int(k + 1), key); }, keys[k]);
   if (!query.step()) throw Error(ErrorCode::kDatabase, db.name(), "journal: no row in " + std::string(table));
   return row_json(query);
 }
@@ -62,8 +62,9 @@ void JournalledTransaction::all_rows_of(std::string_view table) {
 void JournalledTransaction::commit() {
   if (!entry_.rows.empty()) {
     // Under the write lock taken by BEGIN IMMEDIATE: the counter gives commit order.
-    db::Statement next(db_, "UPDATE index_state SET journal_sequence = journal_sequence + 1 WHERE id = 1 "
-                                "RETURNING journal_sequence");
+    db::Statement next(db_,
+                       "UPDATE index_state SET journal_sequence = journal_sequence + 1 WHERE id = 1 "
+                       "RETURNING journal_sequence");
     if (!next.step()) throw Error(ErrorCode::kIndexDamaged, db_.name(), "index_state row missing");
     entry_.sequence = next.integer(0);
     next.run();

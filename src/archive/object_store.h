@@ -44,7 +44,8 @@ class ObjectStore {
   enum class EntryKind { Object, Temporary };
   // Calls visit(kind, sha256 (empty for temporaries), path) for every file in the store
   // except the journal and the quarantine.
-  void for_each_file(const std::function<void(EntryKind, const std::string&, const std::filesystem::path&)>& visit) const;
+  void for_each_file(
+      const std::function<void(EntryKind, const std::string&, const std::filesystem::path&)>& visit) const;
 
   // --- quarantine ---
   std::filesystem::path quarantine_folder() const { return folder_ / "quarantine"; }

@@ -89,15 +89,21 @@ class PostgresStatement final : public db::PreparedStatement {
   db::ColumnType column_type(int column) const override {
     if (PQgetisnull(result_, row_, column)) return db::ColumnType::Null;
     switch (PQftype(result_, column)) {  // pg_type OIDs
-      case 20: case 21: case 23: case 26: return db::ColumnType::Integer;  // int8, int2, int4, oid
-      case 700: case 701: case 1700: return db::ColumnType::Real;          // float4, float8, numeric
+      case 20:
+      case 21:
+      case 23:
+      case 26: return db::ColumnType::Integer;  // int8, int2, int4, oid
+      case 700:
+      case 701:
+      case 1700: return db::ColumnType::Real;  // float4, float8, numeric
       default: return db::ColumnType::Text;
     }
   }
   int64_t integer(int column) const override { return std::strtoll(PQgetvalue(result_, row_, column), nullptr, 10); }
   double real(int column) const override { return std::strtod(PQgetvalue(result_, row_, column), nullptr); }
   std::string text(int column) const override {
-    return bytes_from_utf8(std::string_view(PQgetvalue(result_, row_, column), size_t(PQgetlength(result_, row_, column))));
+    return bytes_from_utf8(
+        std::string_view(PQgetvalue(result_, row_, column), size_t(PQgetlength(result_, row_, column))));
   }
 
  private:
@@ -109,8 +115,8 @@ class PostgresStatement final : public db::PreparedStatement {
   void run() {
     std::vector<const char*> pointers;
     for (const auto& value : values_) pointers.push_back(value ? value->c_str() : nullptr);
-    result_ = PQexecPrepared(connection_.handle(), name_.c_str(), int(pointers.size()), pointers.data(), nullptr,
-                             nullptr, 0);
+    result_ =
+        PQexecPrepared(connection_.handle(), name_.c_str(), int(pointers.size()), pointers.data(), nullptr, nullptr, 0);
     auto status = PQresultStatus(result_);
     if (status != PGRES_COMMAND_OK && status != PGRES_TUPLES_OK) {
       PGresult* failed = result_;
@@ -213,15 +219,18 @@ void Connection::commit() { execute("COMMIT"); }
 void Connection::rollback() noexcept { PQclear(PQexec(connection_, "ROLLBACK")); }
 
 int Connection::schema_version() {
-  db::Statement exists(*this, "SELECT COUNT(*) FROM pg_tables WHERE schemaname = current_schema() AND tablename = 'maxillo_schema'");
+  db::Statement exists(
+      *this, "SELECT COUNT(*) FROM pg_tables WHERE schemaname = current_schema() AND tablename = 'maxillo_schema'");
   if (db::single_integer(exists) == 0) return 0;
   db::Statement version(*this, "SELECT version FROM maxillo_schema");
   return int(db::single_integer(version));
 }
 
 void Connection::set_schema_version(int version) {
-  execute("CREATE TABLE IF NOT EXISTS maxillo_schema (version INTEGER NOT NULL); DELETE FROM maxillo_schema; "
-          "INSERT INTO maxillo_schema(version) VALUES (" + std::to_string(version) + ")");
+  execute(
+      "CREATE TABLE IF NOT EXISTS maxillo_schema (version INTEGER NOT NULL); DELETE FROM maxillo_schema; "
+      "INSERT INTO maxillo_schema(version) VALUES (" +
+      std::to_string(version) + ")");
 }
 
 int64_t Connection::clock_seconds() {
@@ -231,7 +240,8 @@ int64_t Connection::clock_seconds() {
 }
 
 void Connection::lock(int64_t key, bool shared) {
-  execute(std::string(shared ? "SELECT pg_advisory_lock_shared(" : "SELECT pg_advisory_lock(") + std::to_string(key) + ")");
+  execute(std::string(shared ? "SELECT pg_advisory_lock_shared(" : "SELECT pg_advisory_lock(") + std::to_string(key) +
+          ")");
 }
 
 void Connection::unlock(int64_t key, bool shared) noexcept {

@@ -101,7 +101,8 @@ class SqliteStatement final : public db::PreparedStatement {
   void bind_real(int index, double value) override { sqlite3_bind_double(statement_, index, value); }
   void bind_text(int index, std::string_view text) override {
     // An empty string_view may hold no pointer at all, which SQLite would bind as NULL.
-    sqlite3_bind_text(statement_, index, text.data() ? text.data() : "", static_cast<int>(text.size()), SQLITE_TRANSIENT);
+    sqlite3_bind_text(statement_, index, text.data() ? text.data() : "", static_cast<int>(text.size()),
+                      SQLITE_TRANSIENT);
   }
   void bind_null(int index) override { sqlite3_bind_null(statement_, index); }
 

@@ -41,7 +41,10 @@ void add_series(Inserts& in, int64_t patient, int64_t study, int64_t case_id, co
     in.object.reset().bind(1, sha).bind(2, int64_t(524288)).run();
     auto& s = in.instance.reset();
     s.bind(1, series).bind(2, uid + "." + std::to_string(k + 1)).bind(3, "1.2.840.10008.5.1.4.1.1.2");
-    s.bind(4, int(k + 1)).bind(5, "0\\0\\" + std::to_string(k)).bind(6, "1\\0\\0\\0\\1\\0").bind(7, "1.2.840.10008.1.2.1");
+    s.bind(4, int(k + 1))
+        .bind(5, "0\\0\\" + std::to_string(k))
+        .bind(6, "1\\0\\0\\0\\1\\0")
+        .bind(7, "1.2.840.10008.1.2.1");
     s.bind(8, sha).bind(9, int64_t(524288)).bind(10, "synthetic").bind(11, now);
     s.run();
   }

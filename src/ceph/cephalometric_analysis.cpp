@@ -19,13 +19,12 @@ constexpr double kCoincidentMm = 0.5;
 void require_apart(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const std::string& a_label,
                    const std::string& b_label) {
   const double distance = (a - b).norm();
-  if (!(distance >= kCoincidentMm))
-  {
+  if (!(distance >= kCoincidentMm)) {
     char apart[32];
     std::snprintf(apart, sizeof apart, "%.2f", distance);
     throw Error(ErrorCode::kBadValue, "landmarks",
-                a_label + " and " + b_label + " coincide (" + apart + " mm apart in the sagittal plane): " +
-                    "no measurement can use both");
+                a_label + " and " + b_label + " coincide (" + apart +
+                    " mm apart in the sagittal plane): " + "no measurement can use both");
   }
 }
 
@@ -145,13 +144,20 @@ CephalometricAnalysis analyse(const SagittalLandmarks& set, Sex sex) {
   auto& out = result.measurements;
   std::string reason;
 
-  auto sna = make("SNA", "SNA angle", "deg"), snb = make("SNB", "SNB angle", "deg"), anb = make("ANB", "ANB angle (SNA - SNB)", "deg");
-  if (auto p = gather(set, {"S", "N", "A"}, reason)) set_value(sna, sna_deg((*p)[0], (*p)[1], (*p)[2]), sex);
-  else sna.not_available_reason = reason;
-  if (auto p = gather(set, {"S", "N", "B"}, reason)) set_value(snb, snb_deg((*p)[0], (*p)[1], (*p)[2]), sex);
-  else snb.not_available_reason = reason;
-  if (auto p = gather(set, {"S", "N", "A", "B"}, reason)) set_value(anb, anb_deg((*p)[0], (*p)[1], (*p)[2], (*p)[3]), sex);
-  else anb.not_available_reason = reason;
+  auto sna = make("SNA", "SNA angle", "deg"), snb = make("SNB", "SNB angle", "deg"),
+       anb = make("ANB", "ANB angle (SNA - SNB)", "deg");
+  if (auto p = gather(set, {"S", "N", "A"}, reason))
+    set_value(sna, sna_deg((*p)[0], (*p)[1], (*p)[2]), sex);
+  else
+    sna.not_available_reason = reason;
+  if (auto p = gather(set, {"S", "N", "B"}, reason))
+    set_value(snb, snb_deg((*p)[0], (*p)[1], (*p)[2]), sex);
+  else
+    snb.not_available_reason = reason;
+  if (auto p = gather(set, {"S", "N", "A", "B"}, reason))
+    set_value(anb, anb_deg((*p)[0], (*p)[1], (*p)[2], (*p)[3]), sex);
+  else
+    anb.not_available_reason = reason;
   out.insert(out.end(), {sna, snb, anb});
 
   auto wits = make("Wits", "Wits appraisal (AO - BO, + Class II)", "mm");

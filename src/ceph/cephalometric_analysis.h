@@ -22,10 +22,10 @@
 namespace maxillo::ceph {
 
 struct Measurement {
-  std::string id;    // "SNA", "SNB", "ANB", "Wits", "ANS_X", "ANS_Y", "PNS_X", ..., "Si_Y", "alpha"
-  std::string name;  // human-readable
-  std::string unit;  // "deg" or "mm"
-  std::optional<double> value;      // nullopt = not available
+  std::string id;                    // "SNA", "SNB", "ANB", "Wits", "ANS_X", "ANS_Y", "PNS_X", ..., "Si_Y", "alpha"
+  std::string name;                  // human-readable
+  std::string unit;                  // "deg" or "mm"
+  std::optional<double> value;       // nullopt = not available
   std::string not_available_reason;  // e.g. "missing landmark(s): B"
   std::optional<Norm> norm;
   Deviation deviation = Deviation::kNoNorm;
@@ -33,7 +33,7 @@ struct Measurement {
 };
 
 struct CephalometricAnalysis {
-  std::string frame;  // SagittalLandmarks::frame
+  std::string frame;                      // SagittalLandmarks::frame
   std::vector<Measurement> measurements;  // always every id, in the order listed above
   const Measurement* find(const std::string& id) const;
   std::optional<double> value(const std::string& id) const;

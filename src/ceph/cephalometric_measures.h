@@ -30,9 +30,9 @@ double wits_mm(const Eigen::Vector2d& A, const Eigen::Vector2d& B, const Eigen::
 // positive INFERIOR (anterior and inferior displacements are positive).
 inline constexpr double kNasionFrameRotationDeg = 6;
 struct NasionFrame {
-  Eigen::Vector2d origin;    // N
-  Eigen::Vector2d x_axis;    // unit, anterior (sagittal frame components)
-  Eigen::Vector2d y_axis;    // unit, inferior
+  Eigen::Vector2d origin;  // N
+  Eigen::Vector2d x_axis;  // unit, anterior (sagittal frame components)
+  Eigen::Vector2d y_axis;  // unit, inferior
 };
 NasionFrame nasion_frame(const Eigen::Vector2d& S, const Eigen::Vector2d& N);
 // (X, Y) of p in the nasion frame, mm.

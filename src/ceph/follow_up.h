@@ -48,9 +48,9 @@ struct CaseFollowUp {
 CaseFollowUp make_follow_up(std::string name, std::vector<TimePointAnalysis> time_points);
 
 struct ChangeRow {
-  std::string id;    // measurement id
+  std::string id;  // measurement id
   std::string unit;
-  int n = 0;         // cases having the measurement at both time points
+  int n = 0;                   // cases having the measurement at both time points
   std::optional<double> mean;  // of (value at `to`) - (value at `from`); nullopt when n = 0
   std::optional<double> sd;    // sample SD (n - 1); nullopt when n < 2
 };

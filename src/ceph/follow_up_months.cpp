@@ -72,7 +72,8 @@ MeasurementOverMonths measurement_over_months(const CaseFollowUp& follow_up, con
   std::vector<const TimePointAnalysis*> dated;
   for (const auto& tp : follow_up.time_points)
     if (!tp.date.empty()) dated.push_back(&tp);
-  std::stable_sort(dated.begin(), dated.end(), [](auto* a, auto* b) { return checked_days(a->date) < checked_days(b->date); });
+  std::stable_sort(dated.begin(), dated.end(),
+                   [](auto* a, auto* b) { return checked_days(a->date) < checked_days(b->date); });
   if (dated.empty()) return out;
 
   std::string origin = dated.front()->date;

@@ -21,7 +21,8 @@ int parse_int(std::string_view field, const std::filesystem::path& path, size_t 
   int value = 0;
   auto result = std::from_chars(field.data(), field.data() + field.size(), value);
   if (field.empty() || result.ec != std::errc() || result.ptr != field.data() + field.size())
-    throw Error(ErrorCode::kBadValue, path.string(), "line " + std::to_string(line) + ": not an integer: '" + std::string(field) + "'");
+    throw Error(ErrorCode::kBadValue, path.string(),
+                "line " + std::to_string(line) + ": not an integer: '" + std::string(field) + "'");
   return value;
 }
 
@@ -77,16 +78,16 @@ int isbi_sna_class(double sna) { return sna > 83.2 ? 2 : sna < 79.4 ? 3 : 1; }
 
 IsbiAgreement isbi_class_agreement(const std::vector<IsbiImage>& images) {
   IsbiAgreement agreement;
-  auto compare = [&agreement](const IsbiImage& image, const char* id, std::optional<double> value, int (*classify)(double),
-                              int expected, int& equal) {
+  auto compare = [&agreement](const IsbiImage& image, const char* id, std::optional<double> value,
+                              int (*classify)(double), int expected, int& equal) {
     int ours = value ? classify(*value) : 0;
     if (ours == expected) {
       ++equal;
       return;
     }
     agreement.disagreements.push_back(image.image_id + " " + id + ": ours " + std::to_string(ours) + " (" +
-                                      (value ? landmark_format::number(*value) : std::string("n/a")) + " deg), organisers " +
-                                      std::to_string(expected));
+                                      (value ? landmark_format::number(*value) : std::string("n/a")) +
+                                      " deg), organisers " + std::to_string(expected));
   };
   for (const auto& image : images) {
     auto analysis = analyse(cephalogram_to_sagittal(image.landmarks, isbi_axes()));

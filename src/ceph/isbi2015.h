@@ -19,13 +19,11 @@ namespace maxillo::ceph {
 
 inline constexpr double kIsbiPixelSpacingMm = 0.1;
 // Image pixel axes of the challenge's radiographs.
-inline CephalogramAxes isbi_axes() {
-  return {kIsbiPixelSpacingMm, ImageVerticalAxis::kDown, FacingDirection::kPlusX};
-}
+inline CephalogramAxes isbi_axes() { return {kIsbiPixelSpacingMm, ImageVerticalAxis::kDown, FacingDirection::kPlusX}; }
 
 struct IsbiImage {
-  std::string image_id;  // "001"
-  LandmarkSet landmarks;  // pixels, z = 0
+  std::string image_id;                             // "001"
+  LandmarkSet landmarks;                            // pixels, z = 0
   int anb_class = 0, snb_class = 0, sna_class = 0;  // the organisers' labels (1, 2, 3)
 };
 

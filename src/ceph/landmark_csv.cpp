@@ -35,8 +35,8 @@ LandmarkSet parse_fcsv(std::string_view text, const std::string& source) {
   Collector out(source);
   Frame frame = Frame::kRas;  // Slicer's default before "# CoordinateSystem" was written
   // Default column order of Slicer's fcsv (version 4.6 and later).
-  std::vector<std::string> columns = {"id", "x", "y", "z", "ow", "ox", "oy", "oz", "vis", "sel", "lock", "label", "desc",
-                                      "associatedNodeID"};
+  std::vector<std::string> columns = {"id", "x",   "y",   "z",    "ow",    "ox",   "oy",
+                                      "oz", "vis", "sel", "lock", "label", "desc", "associatedNodeID"};
   std::istringstream in{std::string(text)};
   std::string raw;
   size_t number = 0;
@@ -57,9 +57,12 @@ LandmarkSet parse_fcsv(std::string_view text, const std::string& source) {
       std::string_view value = trim(body.substr(equals + 1));
       if (key == "coordinatesystem") {
         std::string v = lower(value);
-        if (v == "lps" || v == "1") frame = Frame::kLps;
-        else if (v == "ras" || v == "0") frame = Frame::kRas;
-        else out.fail(where, "unsupported coordinate system '" + std::string(value) + "' (LPS, RAS, 0 or 1)");
+        if (v == "lps" || v == "1")
+          frame = Frame::kLps;
+        else if (v == "ras" || v == "0")
+          frame = Frame::kRas;
+        else
+          out.fail(where, "unsupported coordinate system '" + std::string(value) + "' (LPS, RAS, 0 or 1)");
       } else if (key == "columns") {
         columns.clear();
         for (auto c : split(value, ',')) columns.emplace_back(c);
@@ -71,7 +74,8 @@ LandmarkSet parse_fcsv(std::string_view text, const std::string& source) {
     if (ix < 0 || iy < 0 || iz < 0 || il < 0) out.fail(where, "the columns header lacks x, y, z or label");
     int needed = std::max({ix, iy, iz, il}) + 1;
     if (int(fields.size()) < needed)
-      out.fail(where, "expected at least " + std::to_string(needed) + " columns, found " + std::to_string(fields.size()));
+      out.fail(where,
+               "expected at least " + std::to_string(needed) + " columns, found " + std::to_string(fields.size()));
     Eigen::Vector3d p(out.parse_number(fields[ix], "x", where), out.parse_number(fields[iy], "y", where),
                       out.parse_number(fields[iz], "z", where));
     out.add(std::string(fields[il]), to_lps(p, frame), where);
@@ -83,7 +87,8 @@ LandmarkSet parse_fcsv(std::string_view text, const std::string& source) {
 void check_plain_labels(const LandmarkSet& set, const char* format) {
   for (const auto& l : set)
     if (l.label.find_first_of(",\r\n") != std::string::npos)
-      throw Error(ErrorCode::kBadValue, l.label, std::string("a label with a comma or line break cannot be written as ") + format);
+      throw Error(ErrorCode::kBadValue, l.label,
+                  std::string("a label with a comma or line break cannot be written as ") + format);
 }
 
 std::string format_csv(const LandmarkSet& set) {
@@ -105,6 +110,5 @@ std::string format_fcsv(const LandmarkSet& set) {
             number(l.position.y()) + "," + number(l.position.z()) + ",0,0,0,1,1,1,0," + l.label + ",,\n";
   return text;
 }
-
 
 }  // namespace maxillo::landmark_format

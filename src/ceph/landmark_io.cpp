@@ -40,12 +40,12 @@ std::string format_landmarks(const LandmarkSet& landmarks, LandmarkFormat format
 LandmarkSet read_landmarks(const std::filesystem::path& path) {
   LandmarkFormat format = landmark_format_for(path);
   std::vector<std::byte> bytes = read_file(path);
-  return parse_landmarks(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), format, path.string());
+  return parse_landmarks(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), format,
+                         path.string());
 }
 
 void write_landmarks(const std::filesystem::path& path, const LandmarkSet& landmarks) {
   write_file_atomically(path, format_landmarks(landmarks, landmark_format_for(path)));
 }
-
 
 }  // namespace maxillo

@@ -25,9 +25,12 @@ LandmarkSet parse_markups_json(std::string_view text, const std::string& source)
     if (markup.contains("coordinateSystem")) {
       const Json& cs = markup["coordinateSystem"];
       std::string v = cs.is_string() ? cs.get<std::string>() : cs.dump();
-      if (v == "LPS") frame = Frame::kLps;
-      else if (v == "RAS") frame = Frame::kRas;
-      else out.fail(where_markup, "unsupported coordinateSystem '" + v + "' (LPS or RAS)");
+      if (v == "LPS")
+        frame = Frame::kLps;
+      else if (v == "RAS")
+        frame = Frame::kRas;
+      else
+        out.fail(where_markup, "unsupported coordinateSystem '" + v + "' (LPS or RAS)");
     }
     if (!markup.contains("controlPoints")) continue;
     size_t point_number = 0;
@@ -49,7 +52,6 @@ LandmarkSet parse_markups_json(std::string_view text, const std::string& source)
   }
   return out.take();
 }
-
 
 std::string format_markups_json(const LandmarkSet& set) {
   Json points = Json::array();
@@ -77,6 +79,5 @@ std::string format_markups_json(const LandmarkSet& set) {
   Json document = {{"@schema", kMarkupsSchema}, {"markups", Json::array({markup})}};
   return document.dump(4) + "\n";
 }
-
 
 }  // namespace maxillo::landmark_format

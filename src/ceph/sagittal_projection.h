@@ -33,8 +33,8 @@ struct SagittalLandmarks {
   std::optional<Eigen::Vector2d> find(const std::string& label) const;
 };
 
-enum class ImageVerticalAxis { kDown, kUp };      // image y grows downwards (pixels) or upwards
-enum class FacingDirection { kPlusX, kMinusX };   // the face looks to +x (standard) or -x
+enum class ImageVerticalAxis { kDown, kUp };     // image y grows downwards (pixels) or upwards
+enum class FacingDirection { kPlusX, kMinusX };  // the face looks to +x (standard) or -x
 
 struct CephalogramAxes {
   double pixel_spacing_mm = 1.0;  // 1 when x, y are already millimetres
@@ -51,7 +51,7 @@ SagittalLandmarks cephalogram_to_sagittal(const LandmarkSet& landmarks, const Ce
 enum class ProjectionStatus { kOk, kTooFewMidlinePoints, kDegenerate };
 struct SagittalProjection {
   ProjectionStatus status = ProjectionStatus::kOk;
-  SagittalLandmarks landmarks;     // empty unless kOk
+  SagittalLandmarks landmarks;      // empty unless kOk
   Eigen::Vector3d normal{1, 0, 0};  // LPS unit normal of the mid-sagittal plane (to the left)
   double rms_distance_mm = 0;       // RMS distance of the fitted points from the plane
   int fitted_points = 0;

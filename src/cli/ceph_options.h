@@ -38,7 +38,8 @@ inline void add_geometry_options(CLI::App& app, GeometryOptions& options) {
       ->check(CLI::Range(1e-3, 10.0));
   app.add_flag("--image-y-down", options.image_y_down, "cephalogram y grows downwards (image pixel coordinates)");
   app.add_flag("--face-left", options.face_left, "the cephalogram's face looks to -x (default +x)");
-  std::map<std::string, ceph::Sex> sexes{{"F", ceph::Sex::kFemale}, {"M", ceph::Sex::kMale}, {"unknown", ceph::Sex::kUnknown}};
+  std::map<std::string, ceph::Sex> sexes{
+      {"F", ceph::Sex::kFemale}, {"M", ceph::Sex::kMale}, {"unknown", ceph::Sex::kUnknown}};
   app.add_option("--sex", options.sex, "sex for sex-specific norms (Wits): F, M or unknown")
       ->transform(CLI::CheckedTransformer(sexes, CLI::ignore_case));
 }
@@ -53,8 +54,10 @@ inline Json analysis_json(const ceph::CephalometricAnalysis& analysis) {
   Json measurements = Json::array();
   for (const auto& m : analysis.measurements) {
     Json j{{"id", m.id}, {"name", m.name}, {"unit", m.unit}, {"value", nullptr}};
-    if (m.value) j["value"] = *m.value;
-    else j["not_available"] = m.not_available_reason;
+    if (m.value)
+      j["value"] = *m.value;
+    else
+      j["not_available"] = m.not_available_reason;
     if (m.norm) {
       j["norm"] = {{"mean", m.norm->mean}, {"sd", m.norm->sd}, {"source", m.norm->source}};
       if (m.value) j["deviation"] = std::string(ceph::deviation_name(m.deviation));

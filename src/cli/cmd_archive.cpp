@@ -40,8 +40,10 @@ void attach_rebuild_index(CLI::App& app, CommandContext& ctx) {
   app.callback([force, &ctx] {
     RebuildOptions options{*force, ctx.global.quiet ? ProgressDisplay::Never : ProgressDisplay::Auto};
     RebuildReport report = Archive::rebuild_index(resolve_archive_dir(ctx.global), options);
-    if (ctx.global.json) std::cout << json_text(to_json(report)) << "\n";
-    else print_rebuild(report);
+    if (ctx.global.json)
+      std::cout << json_text(to_json(report)) << "\n";
+    else
+      print_rebuild(report);
     ctx.exit_code = complete(report) ? 0 : exit_code_for(ErrorCode::kArchiveCorrupt);
   });
 }
@@ -65,8 +67,10 @@ void attach_migrate(CLI::App& app, CommandContext& ctx) {
   app.callback([target, &ctx] {
     MigrationOptions options{ctx.global.quiet ? ProgressDisplay::Never : ProgressDisplay::Auto};
     MigrationReport report = Archive::migrate(resolve_archive_dir(ctx.global), *target, options);
-    if (ctx.global.json) std::cout << json_text(to_json(report)) << "\n";
-    else print_migration(report, parse_archive_location(*target).shown);
+    if (ctx.global.json)
+      std::cout << json_text(to_json(report)) << "\n";
+    else
+      print_migration(report, parse_archive_location(*target).shown);
     ctx.exit_code = report.verified() ? 0 : exit_code_for(ErrorCode::kArchiveCorrupt);
   });
 }

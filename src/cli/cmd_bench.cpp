@@ -136,7 +136,7 @@ void run_bench(const BenchArguments& args, CommandContext& ctx) {
 
 }  // namespace
 
-void attach_bench_cube(CLI::App& bench, CommandContext& ctx);  // cmd_bench_cube.cpp
+void attach_bench_cube(CLI::App& bench, CommandContext& ctx);       // cmd_bench_cube.cpp
 void attach_bench_occlusion(CLI::App& bench, CommandContext& ctx);  // cmd_bench_occlusion.cpp
 void attach_bench_face(CLI::App& bench, CommandContext& ctx);       // cmd_bench_face.cpp
 void attach_bench_register(CLI::App& bench, CommandContext& ctx);   // cmd_bench_register.cpp
@@ -156,14 +156,15 @@ void attach_bench(CLI::App& app, CommandContext& ctx) {
                      "the index on this PostgreSQL server, e.g. postgresql://postgres@127.0.0.1:5432/ (a database per "
                      "run is created and dropped)");
   import->add_option("--workdir", args->workdir, "scratch folder (default: $TMPDIR/maxillo-bench; emptied)");
-  import->callback([args, &ctx] { run_bench(*args, ctx); });
-  attach_bench_cube(app, ctx);
-  attach_bench_occlusion(app, ctx);
-  attach_bench_face(app, ctx);
-  attach_bench_register(app, ctx);
-  attach_bench_surfaces(app, ctx);
-  attach_bench_claim(app, ctx);
-  attach_bench_index(app, ctx);
-}
+  import->callback([args, &ctx] { run_bench(*args, ctx);
+});
+attach_bench_cube(app, ctx);
+attach_bench_occlusion(app, ctx);
+attach_bench_face(app, ctx);
+attach_bench_register(app, ctx);
+attach_bench_surfaces(app, ctx);
+attach_bench_claim(app, ctx);
+attach_bench_index(app, ctx);
+}  // namespace maxillo::cli
 
 }  // namespace maxillo::cli

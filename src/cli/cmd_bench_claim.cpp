@@ -58,7 +58,8 @@ double timed_claims(const std::filesystem::path& address, int items, int workers
 }
 
 void run_bench_claim(const ClaimArguments& args, CommandContext& ctx) {
-  const auto workdir = args.workdir.empty() ? std::filesystem::temp_directory_path() / "maxillo-bench-claim" : args.workdir;
+  const auto workdir =
+      args.workdir.empty() ? std::filesystem::temp_directory_path() / "maxillo-bench-claim" : args.workdir;
   std::vector<double> rates;
   const char* engine = args.postgres.empty() ? "SQLite" : "PostgreSQL";
   for (int run = 0; run < args.runs; ++run) {
@@ -67,13 +68,13 @@ void run_bench_claim(const ClaimArguments& args, CommandContext& ctx) {
     rates.push_back(timed_claims(archive.address(), args.items, args.workers));
   }
   if (ctx.global.json) {
-    std::cout << Json{{"items", args.items}, {"workers", args.workers}, {"runs", args.runs}, {"index", engine},
-                      {"claims_per_s", median(rates)}, {"runs_claims_per_s", rates}}
+    std::cout << Json{{"items", args.items}, {"workers", args.workers},       {"runs", args.runs},
+                      {"index", engine},     {"claims_per_s", median(rates)}, {"runs_claims_per_s", rates}}
                      .dump(2)
               << "\n";
   } else {
-    std::printf("%d items, %d workers at once, index on %s: %.0f claims/s (claim + finish; median of %d)\n",
-                args.items, args.workers, engine, median(rates), args.runs);
+    std::printf("%d items, %d workers at once, index on %s: %.0f claims/s (claim + finish; median of %d)\n", args.items,
+                args.workers, engine, median(rates), args.runs);
   }
 }
 
@@ -86,10 +87,13 @@ void attach_bench_claim(CLI::App& bench, CommandContext& ctx) {
   claim->add_option("--workers", args->workers, "workers at once (threads, own connections)")
       ->check(CLI::Range(1, 64))
       ->capture_default_str();
-  claim->add_option("--runs", args->runs, "runs; the median is reported")->check(CLI::Range(1, 50))->capture_default_str();
-  claim->add_option("--postgres", args->postgres,
-                    "the index on this PostgreSQL server, e.g. postgresql://postgres@127.0.0.1:5432/ (a database per run "
-                    "is created and dropped)");
+  claim->add_option("--runs", args->runs, "runs; the median is reported")
+      ->check(CLI::Range(1, 50))
+      ->capture_default_str();
+  claim->add_option(
+      "--postgres", args->postgres,
+      "the index on this PostgreSQL server, e.g. postgresql://postgres@127.0.0.1:5432/ (a database per run "
+      "is created and dropped)");
   claim->add_option("--workdir", args->workdir, "scratch folder (default: $TMPDIR/maxillo-bench-claim; emptied)");
   claim->callback([args, &ctx] { run_bench_claim(*args, ctx); });
 }

@@ -36,7 +36,8 @@ struct CubeBenchArguments {
   CubeModel model = CubeModel::kFem;
   HexSplit split = HexSplit::kSixTets;
   Preconditioner preconditioner = Preconditioner::kBlockJacobi;
-  CholeskyBackend cholesky = cholmod_available() ? CholeskyBackend::kCholmodSupernodal : CholeskyBackend::kEigenSimplicial;
+  CholeskyBackend cholesky =
+      cholmod_available() ? CholeskyBackend::kCholmodSupernodal : CholeskyBackend::kEigenSimplicial;
   double tolerance = 1e-6;
   LocalIterationOptions local{1e-3, 1.0, 1000000};
   int runs = 5;
@@ -80,7 +81,9 @@ Json bench_fem(const CubeProblem& cube, const CubeBenchArguments& args, Eigen::M
   std::vector<double> times;
   StaticSolution solution;
   for (int run = 0; run < args.runs; ++run)
-    times.push_back(seconds_of([&] { solution = solve_linear_static(cube.stiffness, cube.bc, {args.preconditioner, args.tolerance, 100000}); }));
+    times.push_back(seconds_of([&] {
+      solution = solve_linear_static(cube.stiffness, cube.bc, {args.preconditioner, args.tolerance, 100000});
+    }));
   if (solution.status != SolveStatus::kConverged)
     throw Error(ErrorCode::kProcessing, "bench cube", "the conjugate gradient did not converge");
   Precision precision = precision_against(solution.displacement, converged_fem(cube), free_mask(cube.bc));
@@ -88,7 +91,8 @@ Json bench_fem(const CubeProblem& cube, const CubeBenchArguments& args, Eigen::M
   std::vector<double> factorise_times;
   for (int run = 0; run < args.runs; ++run)
     factorise_times.push_back(seconds_of([&] {
-      if (precompute_factorisation(cube.stiffness, cube.bc.constraint, args.cholesky, factorised) != FactorisationStatus::kOk)
+      if (precompute_factorisation(cube.stiffness, cube.bc.constraint, args.cholesky, factorised) !=
+          FactorisationStatus::kOk)
         throw Error(ErrorCode::kProcessing, "bench cube", "the Cholesky factorisation failed or is not built in");
     }));
   // Plan changes: the centre's lift varies, the constraint pattern stays.
@@ -103,14 +107,15 @@ Json bench_fem(const CubeProblem& cube, const CubeBenchArguments& args, Eigen::M
   // The rigid-plan fast path: the centre is one bone segment; a plan change is a new motion.
   std::vector<int> segment(size_t(cube.mesh.node_count()), 0);
   RigidPlanBasis basis;
-  double basis_seconds = seconds_of([&] {
-    basis = precompute_rigid_plan_basis(factorised, cube.mesh, cube.bc.constraint, segment, 1);
-  });
+  double basis_seconds =
+      seconds_of([&] { basis = precompute_rigid_plan_basis(factorised, cube.mesh, cube.bc.constraint, segment, 1); });
   std::vector<double> plan_times;
   Eigen::MatrixX3d planned;
   for (int run = 0; run < std::max(args.runs, 3); ++run) {
     std::vector<Eigen::Isometry3d> motion(1, Eigen::Isometry3d::Identity());
-    motion[0].rotate(Eigen::AngleAxisd(0.05 * run, Eigen::Vector3d::UnitX())).pretranslate(Eigen::Vector3d(0, 0, 6.0 - run));
+    motion[0]
+        .rotate(Eigen::AngleAxisd(0.05 * run, Eigen::Vector3d::UnitX()))
+        .pretranslate(Eigen::Vector3d(0, 0, 6.0 - run));
     plan_times.push_back(seconds_of([&] { planned = solve_rigid_plan(basis, motion); }));
   }
   std::vector<Eigen::Isometry3d> lift(1, Eigen::Isometry3d::Identity());
@@ -138,7 +143,8 @@ Json bench_mtm(const CubeProblem& cube, const CubeBenchArguments& args, Eigen::M
   auto table_row = [&](const LocalIterationOptions& options, int runs) {
     std::vector<double> times;
     LocalIterationResult result;
-    for (int run = 0; run < runs; ++run) times.push_back(seconds_of([&] { result = solve_mass_tensor(model, cube.bc, options); }));
+    for (int run = 0; run < runs; ++run)
+      times.push_back(seconds_of([&] { result = solve_mass_tensor(model, cube.bc, options); }));
     Precision precision = precision_against(result.displacement, converged, free_mask(cube.bc));
     return std::pair{Json{{"gradient_threshold_mm", options.gradient_threshold_mm},
                           {"relaxation", options.relaxation},
@@ -168,7 +174,8 @@ Json bench_msm(const CubeProblem& cube, const CubeBenchArguments& args, Eigen::M
   double build_seconds = seconds_of([&] { model = make_van_gelder_model(cube.mesh, Material{}.young_modulus_mpa); });
   std::vector<double> times;
   LocalIterationResult result;
-  for (int run = 0; run < args.runs; ++run) times.push_back(seconds_of([&] { result = solve_mass_spring(model, cube.bc, args.local); }));
+  for (int run = 0; run < args.runs; ++run)
+    times.push_back(seconds_of([&] { result = solve_mass_spring(model, cube.bc, args.local); }));
   displacement = result.displacement;
   Precision difference = precision_against(result.displacement, converged_fem(cube), free_mask(cube.bc));
   return {{"build_seconds", build_seconds},
@@ -210,7 +217,8 @@ void print_text(const Json& summary) {
     for (const auto& [key, value] : summary["model_result"].items())
       if (!value.is_array()) std::cout << key << ": " << value.dump() << "\n";
     if (summary["model_result"].contains("threshold_table")) {
-      std::printf("%-10s %8s %10s %12s %10s %10s %8s\n", "G_thresh", "its", "updates", "seconds", "P_min", "P_mean", "conv");
+      std::printf("%-10s %8s %10s %12s %10s %10s %8s\n", "G_thresh", "its", "updates", "seconds", "P_min", "P_mean",
+                  "conv");
       for (const auto& row : summary["model_result"]["threshold_table"])
         std::printf("%-10.0e %8d %10ld %12.4f %10.4f %10.4f %8s\n", row["gradient_threshold_mm"].get<double>(),
                     row["iterations"].get<int>(), row["point_updates"].get<long>(), row["solve_seconds"].get<double>(),
@@ -247,8 +255,10 @@ void run_bench_cube(const CubeBenchArguments& args, const CommandContext& ctx) {
                {"max_displacement_mm", displacement.rowwise().norm().maxCoeff()},
                {"model_result", result}};
   if (!args.out.empty()) write_vtu(args.out, cube.mesh, displacement, cube.bc);
-  if (ctx.global.json) std::cout << summary.dump(2) << "\n";
-  else print_text(summary);
+  if (ctx.global.json)
+    std::cout << summary.dump(2) << "\n";
+  else
+    print_text(summary);
 }
 
 }  // namespace
@@ -265,11 +275,13 @@ void attach_bench_cube(CLI::App& bench, CommandContext& ctx) {
   std::map<std::string, CholeskyBackend> backends{{"eigen", CholeskyBackend::kEigenSimplicial},
                                                   {"cholmod", CholeskyBackend::kCholmodSupernodal}};
   cube->add_option("--tets", args->tets, "approximate number of tetrahedra")->check(CLI::Range(6, 5000000));
-  cube->add_option("--model", args->model, "fem (linear FEM), mtm (mass tensor), msm (mass-spring), nfem (non-linear FEM)")
+  cube->add_option("--model", args->model,
+                   "fem (linear FEM), mtm (mass tensor), msm (mass-spring), nfem (non-linear FEM)")
       ->required()
       ->transform(CLI::CheckedTransformer(models, CLI::ignore_case));
   cube->add_option("--split", args->split, "tets per hexahedron: 5 or 6")->transform(CLI::CheckedTransformer(splits));
-  cube->add_option("--preconditioner", args->preconditioner, "fem: block-jacobi (matrix-free, default), jacobi or ic (incomplete Cholesky)")
+  cube->add_option("--preconditioner", args->preconditioner,
+                   "fem: block-jacobi (matrix-free, default), jacobi or ic (incomplete Cholesky)")
       ->transform(CLI::CheckedTransformer(preconditioners, CLI::ignore_case));
   cube->add_option("--cholesky", args->cholesky, "fem re-solve factorisation: eigen or cholmod (default when built in)")
       ->transform(CLI::CheckedTransformer(backends, CLI::ignore_case));

@@ -93,17 +93,16 @@ void run_face_bench(const FaceBenchArguments& args) {
     std::sort(solve.begin(), solve.end());
     std::sort(assembly.begin(), assembly.end());
     std::printf("%-18s set-up %.3f s, solve %.3f s (%d iterations), largest skin move %.2f mm\n",
-                std::string(pipeline::model_title(model)).c_str(), assembly[assembly.size() / 2], solve[solve.size() / 2],
-                p.iterations, p.skin_displacement.rowwise().norm().maxCoeff());
+                std::string(pipeline::model_title(model)).c_str(), assembly[assembly.size() / 2],
+                solve[solve.size() / 2], p.iterations, p.skin_displacement.rowwise().norm().maxCoeff());
   }
 
   softtissue::ShapeFunctionMapping shape;
   const double shape_init = median_seconds(args.runs, [&] {
     shape = softtissue::init_shape_function_mapping(base.mesh, skin.vertices, options.skin_binding_mm);
   });
-  const double shape_update = median_seconds(args.runs, [&] {
-    (void)softtissue::map_displacement(base.mesh, shape, base.node_displacement);
-  });
+  const double shape_update =
+      median_seconds(args.runs, [&] { (void)softtissue::map_displacement(base.mesh, shape, base.node_displacement); });
   softtissue::GaussianMappingOptions gaussian_options;
   gaussian_options.radius_mm = std::max(3.0, base.meshing.cell_size_mm);  // must reach the next surface node
   softtissue::TetBoundary boundary;
@@ -114,9 +113,8 @@ void run_face_bench(const FaceBenchArguments& args) {
   const double gaussian_init = median_seconds(args.runs, [&] {
     gaussian = softtissue::init_gaussian_mapping(base.mesh, boundary, *skin_index, gaussian_options);
   });
-  const double gaussian_update = median_seconds(args.runs, [&] {
-    (void)softtissue::map_displacement(gaussian, base.node_displacement);
-  });
+  const double gaussian_update =
+      median_seconds(args.runs, [&] { (void)softtissue::map_displacement(gaussian, base.node_displacement); });
   const auto a = softtissue::map_displacement(base.mesh, shape, base.node_displacement);
   const auto b = softtissue::map_displacement(gaussian, base.node_displacement);
   std::vector<double> difference;
@@ -126,10 +124,12 @@ void run_face_bench(const FaceBenchArguments& args) {
   const double p95 = difference.empty() ? 0 : difference[size_t(0.95 * double(difference.size() - 1))];
   std::printf("shape-function mapping: init %.1f ms, update %.1f ms (%d of %lld vertices bound)\n", 1e3 * shape_init,
               1e3 * shape_update, shape.bound_count(), (long long)skin.vertex_count());
-  std::printf("once per model: surface of the tet mesh %.1f ms; once per skin: closest-point tree and adjacency %.1f ms\n",
-              1e3 * boundary_seconds, 1e3 * skin_seconds);
-  std::printf("Gaussian mapping (radius %.1f mm): init %.1f ms, update %.1f ms (%d vertices bound; targets 50 / 10 ms)\n",
-              gaussian_options.radius_mm, 1e3 * gaussian_init, 1e3 * gaussian_update, gaussian.bound_count);
+  std::printf(
+      "once per model: surface of the tet mesh %.1f ms; once per skin: closest-point tree and adjacency %.1f ms\n",
+      1e3 * boundary_seconds, 1e3 * skin_seconds);
+  std::printf(
+      "Gaussian mapping (radius %.1f mm): init %.1f ms, update %.1f ms (%d vertices bound; targets 50 / 10 ms)\n",
+      gaussian_options.radius_mm, 1e3 * gaussian_init, 1e3 * gaussian_update, gaussian.bound_count);
   std::printf("shape function vs Gaussian on the skin: P95 difference %.2f mm\n", p95);
   std::printf("peak memory: %.0f MB\n", peak_rss_mb());
 }
@@ -138,8 +138,11 @@ void run_face_bench(const FaceBenchArguments& args) {
 
 void attach_bench_face(CLI::App& bench, CommandContext& /*ctx*/) {
   auto args = std::make_shared<FaceBenchArguments>();
-  CLI::App* face = bench.add_subcommand("face", "soft tissue model of the phantom's face: meshing, solves, skin mappings");
-  face->add_option("--spacing", args->spacing_mm, "phantom voxel size, mm")->check(CLI::Range(0.5, 3.0))->capture_default_str();
+  CLI::App* face =
+      bench.add_subcommand("face", "soft tissue model of the phantom's face: meshing, solves, skin mappings");
+  face->add_option("--spacing", args->spacing_mm, "phantom voxel size, mm")
+      ->check(CLI::Range(0.5, 3.0))
+      ->capture_default_str();
   face->add_option("--runs", args->runs, "runs; medians are reported")->check(CLI::Range(1, 50))->capture_default_str();
   face->add_option("--max-tets", args->max_tets, "tetrahedra budget")->check(kTetrahedra)->capture_default_str();
   face->add_option("--cell-mm", args->cell_mm, "target tetrahedron size, mm")->check(kCellMm)->capture_default_str();

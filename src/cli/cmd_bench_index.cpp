@@ -49,23 +49,28 @@ void make_every_case_eligible(Archive& archive) {
 }
 
 void run_bench_index(const IndexArguments& args, CommandContext& ctx) {
-  const auto workdir = args.workdir.empty() ? std::filesystem::temp_directory_path() / "maxillo-bench-index" : args.workdir;
+  const auto workdir =
+      args.workdir.empty() ? std::filesystem::temp_directory_path() / "maxillo-bench-index" : args.workdir;
   BenchArchive scratch(args.postgres, workdir / "archive", 0);
-  const double fill_seconds = seconds_of([&] { fill_synthetic_index(scratch.address(), {args.patients, args.instances}); });
+  const double fill_seconds = seconds_of([&] {
+    fill_synthetic_index(scratch.address(), {args.patients, args.instances});
+  });
   Archive archive = Archive::open(scratch.address());
   const double eligible_seconds = seconds_of([&] { make_every_case_eligible(archive); });
-  const int64_t middle_case = archive.resolve_case("P" + std::string(6 - std::to_string(args.patients / 2).size(), '0') +
-                                                   std::to_string(args.patients / 2));
+  const int64_t middle_case = archive.resolve_case(
+      "P" + std::string(6 - std::to_string(args.patients / 2).size(), '0') + std::to_string(args.patients / 2));
   size_t eligible = 0;
   const std::vector<std::pair<std::string, std::function<void()>>> queries = {
       {"list patients", [&] { (void)archive.patients(); }},
       {"list series", [&] { (void)archive.series(); }},
-      {"show case", [&] {
+      {"show case",
+       [&] {
          auto contents = archive.case_contents(middle_case);
          for (const auto& member : contents.series) (void)archive.instances(member.series.id);
        }},
       {"resolve Patient ID", [&] { (void)archive.resolve("P000001"); }},
-      {"nightly scan", [&] {  // `nightly --summary-only`: the scan of every case, nothing to validate or summarise
+      {"nightly scan",
+       [&] {  // `nightly --summary-only`: the scan of every case, nothing to validate or summarise
          pipeline::NightlyOptions nightly;
          nightly.out = workdir / "nightly";
          nightly.summary_only = true;
@@ -82,9 +87,13 @@ void run_bench_index(const IndexArguments& args, CommandContext& ctx) {
     timings[name] = median(times);
   }
   if (ctx.global.json) {
-    std::cout << Json{{"index", scratch.engine()}, {"patients", args.patients}, {"instances", args.instances},
-                      {"fill_seconds", fill_seconds}, {"plans_and_landmarks_seconds", eligible_seconds},
-                      {"eligible_cases", eligible}, {"median_seconds", timings}}
+    std::cout << Json{{"index", scratch.engine()},
+                      {"patients", args.patients},
+                      {"instances", args.instances},
+                      {"fill_seconds", fill_seconds},
+                      {"plans_and_landmarks_seconds", eligible_seconds},
+                      {"eligible_cases", eligible},
+                      {"median_seconds", timings}}
                      .dump(2)
               << "\n";
     return;
@@ -92,7 +101,8 @@ void run_bench_index(const IndexArguments& args, CommandContext& ctx) {
   std::printf("%lld patients, %lld instances on %s (filled in %.1f s; plans and landmarks in %.1f s)\n",
               static_cast<long long>(args.patients), static_cast<long long>(args.instances), scratch.engine(),
               fill_seconds, eligible_seconds);
-  for (const auto& [name, query] : queries) std::printf("  %-20s %8.3f s (median of %d)\n", name.c_str(), timings[name].get<double>(), args.runs);
+  for (const auto& [name, query] : queries)
+    std::printf("  %-20s %8.3f s (median of %d)\n", name.c_str(), timings[name].get<double>(), args.runs);
   std::printf("  nightly scan found %zu eligible cases\n", eligible);
 }
 

@@ -27,7 +27,7 @@ struct RegisterBenchArguments {
   double rotation_deg = 4;
   double translation_mm = 7;
   bool elastix = true;
-  bool same_seed = false;  // every run with seed 1: the runs' spread is then the non-determinism
+  bool same_seed = false;         // every run with seed 1: the runs' spread is then the non-determinism
   RigidRegistrationOptions ours;  // the library's defaults unless tuned on the command line
 };
 
@@ -61,7 +61,10 @@ Spread spread_of(const std::vector<Eigen::Isometry3d>& results, const Eigen::Mat
 struct MethodRuns {
   std::vector<double> seconds, rms_mm;
   Json json() const {
-    return {{"seconds", seconds}, {"rms_mm", rms_mm}, {"median_seconds", median(seconds)}, {"median_rms_mm", median(rms_mm)}};
+    return {{"seconds", seconds},
+            {"rms_mm", rms_mm},
+            {"median_seconds", median(seconds)},
+            {"median_rms_mm", median(rms_mm)}};
   }
 };
 
@@ -113,11 +116,16 @@ void run_register_bench(const RegisterBenchArguments& args, CommandContext& ctx)
   const double ratio = with_elastix ? median(elastix.seconds) / median(ours.seconds) : 0;
   const Spread spread = spread_of(answers, skin);
   if (ctx.global.json) {
-    Json json = {{"runs", args.runs},          {"rotation_deg", args.rotation_deg},
-                 {"translation_mm", args.translation_mm}, {"skin_vertices", skin.rows()},
-                 {"ours", ours.json()},        {"iterations", iterations},
-                 {"threads", args.ours.threads}, {"same_seed", args.same_seed},
-                 {"spread_deg", spread.degrees}, {"spread_mm", spread.mm}};
+    Json json = {{"runs", args.runs},
+                 {"rotation_deg", args.rotation_deg},
+                 {"translation_mm", args.translation_mm},
+                 {"skin_vertices", skin.rows()},
+                 {"ours", ours.json()},
+                 {"iterations", iterations},
+                 {"threads", args.ours.threads},
+                 {"same_seed", args.same_seed},
+                 {"spread_deg", spread.degrees},
+                 {"spread_mm", spread.mm}};
     if (with_elastix) {
       json["elastix"] = elastix.json();
       json["elastix_to_ours_time_ratio"] = ratio;
@@ -138,32 +146,44 @@ void run_register_bench(const RegisterBenchArguments& args, CommandContext& ctx)
 }  // namespace
 
 void attach_bench_register(CLI::App& bench, CommandContext& ctx) {
-  CLI::App* sub = bench.add_subcommand("register", "rigid CT registration on the real head: ours vs elastix (s, RMS mm)");
+  CLI::App* sub =
+      bench.add_subcommand("register", "rigid CT registration on the real head: ours vs elastix (s, RMS mm)");
   auto args = std::make_shared<RegisterBenchArguments>();
   sub->add_option("--data", args->data,
                   "folder holding slices/CThead.* (default: $MAXILLO_SHARED_DATA or ../shared/data, /cthead-stanford)");
   sub->add_option("--runs", args->runs, "runs; medians are reported")->check(CLI::Range(1, 50))->capture_default_str();
   sub->add_option("--rotation-deg", args->rotation_deg, "known rotation, degrees")
-      ->check(CLI::Range(0.0, 30.0))->capture_default_str();
+      ->check(CLI::Range(0.0, 30.0))
+      ->capture_default_str();
   sub->add_option("--translation-mm", args->translation_mm, "known translation, mm")
-      ->check(CLI::Range(0.0, 50.0))->capture_default_str();
+      ->check(CLI::Range(0.0, 50.0))
+      ->capture_default_str();
   sub->add_flag("!--no-elastix", args->elastix, "run only ours");
   sub->add_option("--sampling-fraction", args->ours.sampling_fraction, "ours: fraction of each level's voxels sampled")
-      ->check(CLI::Range(1e-4, 1.0))->capture_default_str();
-  sub->add_option("--convergence", args->ours.convergence, "ours: full resolution stops when the last --window steps each moved the image less than this (mm)")
-      ->check(CLI::Range(1e-12, 1.0))->capture_default_str();
-  sub->add_option("--coarse-convergence", args->ours.coarse_convergence, "ours: shrunk levels stop when the metric's normalised slope over the window falls below this")
-      ->check(CLI::Range(1e-12, 1.0))->capture_default_str();
+      ->check(CLI::Range(1e-4, 1.0))
+      ->capture_default_str();
+  sub->add_option("--convergence", args->ours.convergence,
+                  "ours: full resolution stops when the last --window steps each moved the image less than this (mm)")
+      ->check(CLI::Range(1e-12, 1.0))
+      ->capture_default_str();
+  sub->add_option("--coarse-convergence", args->ours.coarse_convergence,
+                  "ours: shrunk levels stop when the metric's normalised slope over the window falls below this")
+      ->check(CLI::Range(1e-12, 1.0))
+      ->capture_default_str();
   sub->add_flag("!--random-sampling", args->ours.regular_sampling, "ours: random samples instead of a jittered grid");
-  sub->add_option("--bins", args->ours.histogram_bins, "ours: Mattes histogram bins")->check(CLI::Range(8, 256))
+  sub->add_option("--bins", args->ours.histogram_bins, "ours: Mattes histogram bins")
+      ->check(CLI::Range(8, 256))
       ->capture_default_str();
   sub->add_option("--window", args->ours.convergence_window, "ours: convergence window (steps)")
-      ->check(CLI::Range(3, 100))->capture_default_str();
+      ->check(CLI::Range(3, 100))
+      ->capture_default_str();
   sub->add_flag("--same-seed", args->same_seed, "every run samples alike: the spread is then non-determinism");
   sub->add_option("--threads", args->ours.threads, "ours: threads (0 = one per core; the answer is the same)")
       ->check(CLI::Range(0, 64))
       ->capture_default_str();
-  sub->add_option("--levels", args->ours.levels, "ours: resolution levels")->check(CLI::Range(1, 5))->capture_default_str();
+  sub->add_option("--levels", args->ours.levels, "ours: resolution levels")
+      ->check(CLI::Range(1, 5))
+      ->capture_default_str();
   sub->callback([args, &ctx] { run_register_bench(*args, ctx); });
 }
 

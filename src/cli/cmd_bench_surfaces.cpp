@@ -54,12 +54,18 @@ Volume load(const SurfacesBenchArguments& args, std::string& name, double& secon
 }
 
 Json pair_json(const pipeline::SurfacePair& p) {
-  return {{"skin_seconds", p.skin_seconds}, {"bone_seconds", p.bone_seconds}, {"skin_triangles", p.skin_triangles},
-          {"bone_triangles", p.bone_triangles}, {"bone_pieces", p.bone_pieces}};
+  return {{"skin_seconds", p.skin_seconds},
+          {"bone_seconds", p.bone_seconds},
+          {"skin_triangles", p.skin_triangles},
+          {"bone_triangles", p.bone_triangles},
+          {"bone_pieces", p.bone_pieces}};
 }
 
 Json distances_json(const validation::DistanceStatistics& d) {
-  return {{"mean_abs_mm", d.mean_absolute}, {"mean_mm", d.mean_signed}, {"p5_mm", d.p5}, {"p95_mm", d.p95},
+  return {{"mean_abs_mm", d.mean_absolute},
+          {"mean_mm", d.mean_signed},
+          {"p5_mm", d.p5},
+          {"p95_mm", d.p95},
           {"max_abs_mm", d.max_absolute}};
 }
 
@@ -68,12 +74,13 @@ void print(const std::string& name, const pipeline::SurfaceBenchmark& b) {
   std::printf("%s: %d x %d x %d voxels (%.1f million), %.2f x %.2f x %.2f mm; read in %.2f s\n", name.c_str(),
               g.size.x(), g.size.y(), g.size.z(), double(g.voxel_count()) / 1e6, g.spacing.x(), g.spacing.y(),
               g.spacing.z(), b.load_seconds);
-  std::printf("segmentation %.2f s, skin %.2f s (%lld triangles), bone %.2f s (%lld triangles, %zu pieces); "
-              "total %.2f s (wall; skin and bone at once); peak memory %.0f MB while segmenting and tracing "
-              "(the volume included), %.0f MB for the whole process\n",
-              b.segmentation_seconds, b.surfaces.skin_seconds, (long long)b.surfaces.skin_triangles,
-              b.surfaces.bone_seconds, (long long)b.surfaces.bone_triangles, b.surfaces.bone_pieces,
-              b.total_seconds, b.surfaces_peak_memory_kb / 1024.0, b.peak_memory_kb / 1024.0);
+  std::printf(
+      "segmentation %.2f s, skin %.2f s (%lld triangles), bone %.2f s (%lld triangles, %zu pieces); "
+      "total %.2f s (wall; skin and bone at once); peak memory %.0f MB while segmenting and tracing "
+      "(the volume included), %.0f MB for the whole process\n",
+      b.segmentation_seconds, b.surfaces.skin_seconds, (long long)b.surfaces.skin_triangles, b.surfaces.bone_seconds,
+      (long long)b.surfaces.bone_triangles, b.surfaces.bone_pieces, b.total_seconds, b.surfaces_peak_memory_kb / 1024.0,
+      b.peak_memory_kb / 1024.0);
   if (!b.native) return;
   const auto& n = *b.native;
   std::printf("native grid: skin %.2f s, bone %.2f s (%zu pieces)\n", n.native.skin_seconds, n.native.bone_seconds,
@@ -113,7 +120,8 @@ void run(const SurfacesBenchArguments& args, CommandContext& ctx) {
 }  // namespace
 
 void attach_bench_surfaces(CLI::App& bench, CommandContext& ctx) {
-  CLI::App* sub = bench.add_subcommand("surfaces", "segmentation, skin and bone of a clinical-size CT: s per stage, peak memory");
+  CLI::App* sub =
+      bench.add_subcommand("surfaces", "segmentation, skin and bone of a clinical-size CT: s per stage, peak memory");
   auto args = std::make_shared<SurfacesBenchArguments>();
   sub->add_option("--phantom-spacing", args->phantom_spacing, "the synthetic phantom at this spacing (mm)")
       ->check(CLI::Range(0.25, 4.0))

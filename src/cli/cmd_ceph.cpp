@@ -56,8 +56,11 @@ int run_add(const AddOptions& options, const GlobalOptions& global) {
   for (const auto& stored : pipeline::landmark_history(archive, case_id))
     if (stored.time_point.label == options.time_point.label) version = stored.version;
   if (global.json)
-    std::cout << Json{{"case", case_id}, {"time_point", options.time_point.label}, {"date", options.time_point.date},
-                      {"landmarks", landmarks.size()}, {"version", version}}
+    std::cout << Json{{"case", case_id},
+                      {"time_point", options.time_point.label},
+                      {"date", options.time_point.date},
+                      {"landmarks", landmarks.size()},
+                      {"version", version}}
                      .dump(2)
               << "\n";
   else
@@ -72,8 +75,11 @@ int run_classify_isbi(const std::filesystem::path& table, const GlobalOptions& g
   auto agreement = ceph::isbi_class_agreement(images);
   int n = agreement.images;
   if (global.json) {
-    std::cout << Json{{"images", n}, {"ANB_equal", agreement.anb_equal}, {"SNB_equal", agreement.snb_equal},
-                      {"SNA_equal", agreement.sna_equal}, {"disagreements", agreement.disagreements}}
+    std::cout << Json{{"images", n},
+                      {"ANB_equal", agreement.anb_equal},
+                      {"SNB_equal", agreement.snb_equal},
+                      {"SNA_equal", agreement.sna_equal},
+                      {"disagreements", agreement.disagreements}}
                      .dump(2)
               << "\n";
   } else {
@@ -104,7 +110,8 @@ int run_sample_cohort(const std::filesystem::path& out, const GlobalOptions& glo
 void attach_ceph(CLI::App& app, CommandContext& ctx) {
   app.require_subcommand(1);
 
-  CLI::App* measure = app.add_subcommand("measure", "SNA, SNB, ANB, Wits, nasion-frame positions, alpha of a landmark file");
+  CLI::App* measure =
+      app.add_subcommand("measure", "SNA, SNB, ANB, Wits, nasion-frame positions, alpha of a landmark file");
   measure->fallthrough();
   auto measure_options = std::make_shared<MeasureOptions>();
   measure->add_option("LANDMARKS", measure_options->file, "landmark file: .mrk.json, .fcsv or .csv (label,x,y,z)")
@@ -117,7 +124,9 @@ void attach_ceph(CLI::App& app, CommandContext& ctx) {
   add->fallthrough();
   auto add_options = std::make_shared<AddOptions>();
   add->add_option("CASE", add_options->case_text, "case id, or a Patient ID (its default case)")->required();
-  add->add_option("LANDMARKS", add_options->file, "landmark file: .mrk.json, .fcsv or .csv")->required()->check(CLI::ExistingFile);
+  add->add_option("LANDMARKS", add_options->file, "landmark file: .mrk.json, .fcsv or .csv")
+      ->required()
+      ->check(CLI::ExistingFile);
   add->add_option("--time-point", add_options->time_point.label, "free label: pre, post, 6M, 12M, ...")->required();
   add->add_option("--date", add_options->time_point.date, "date of the image, YYYY-MM-DD")
       ->check(CLI::Validator([](std::string& s) { return pipeline::is_iso_date(s) ? "" : "date must be YYYY-MM-DD"; },
@@ -125,13 +134,15 @@ void attach_ceph(CLI::App& app, CommandContext& ctx) {
   add_geometry_options(*add, add_options->geometry);
   add->callback([add_options, &ctx] { ctx.exit_code = run_add(*add_options, ctx.global); });
 
-  CLI::App* isbi = app.add_subcommand("classify-isbi", "ISBI 2015 skeletal classes from our SNA/SNB/ANB vs the organisers'");
+  CLI::App* isbi =
+      app.add_subcommand("classify-isbi", "ISBI 2015 skeletal classes from our SNA/SNB/ANB vs the organisers'");
   isbi->fallthrough();
   auto table = std::make_shared<std::filesystem::path>();
   isbi->add_option("CSV", *table, "isbi2015_train_landmarks.csv")->required()->check(CLI::ExistingFile);
   isbi->callback([table, &ctx] { ctx.exit_code = run_classify_isbi(*table, ctx.global); });
 
-  CLI::App* sample = app.add_subcommand("sample-cohort", "write a synthetic follow-up cohort CSV (phantoms, 6 patients)");
+  CLI::App* sample =
+      app.add_subcommand("sample-cohort", "write a synthetic follow-up cohort CSV (phantoms, 6 patients)");
   sample->fallthrough();
   auto out = std::make_shared<std::filesystem::path>("cohort.csv");
   sample->add_option("--out", *out, "cohort CSV to write")->capture_default_str();

@@ -68,8 +68,8 @@ void run_convert(const ConvertOptions& options, CommandContext& ctx) {
     return;
   }
   std::cout << "wrote " << written.files.size() << " CT slices of " << g.size.x() << " x " << g.size.y() << " ("
-            << g.spacing.x() << " x " << g.spacing.y() << " x " << g.spacing.z() << " mm) to "
-            << options.out.string() << "\nseries " << written.series_instance_uid << "\n";
+            << g.spacing.x() << " x " << g.spacing.y() << " x " << g.spacing.z() << " mm) to " << options.out.string()
+            << "\nseries " << written.series_instance_uid << "\n";
 }
 
 }  // namespace
@@ -77,7 +77,8 @@ void run_convert(const ConvertOptions& options, CommandContext& ctx) {
 void attach_convert(CLI::App& app, CommandContext& ctx) {
   auto options = std::make_shared<ConvertOptions>();
   app.add_option("volume", options->input, "MetaImage (.mhd/.mha) or NRRD (.nrrd/.nhdr) volume")
-      ->required()->check(CLI::ExistingFile);
+      ->required()
+      ->check(CLI::ExistingFile);
   app.add_option("--out", options->out, "folder for the DICOM series (created if needed)")->required();
   app.add_option("--direction", options->direction,
                  "9 numbers: the i, j and k axes as LPS unit vectors (overrides the file's)")

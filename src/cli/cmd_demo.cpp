@@ -71,7 +71,7 @@ std::vector<std::filesystem::path> files_in(const std::filesystem::path& folder)
 // into `archive_dir` as `receiver` (the clinic's path: a scanner pushing to maxillo, maxillo
 // pushing the report to the PACS). Throws unless every file was sent and archived.
 net::StorageServerCounts push_over_dicom(const std::vector<std::filesystem::path>& files, const std::string& sender,
-                                          const std::string& receiver, const std::filesystem::path& archive_dir) {
+                                         const std::string& receiver, const std::filesystem::path& archive_dir) {
   // An archive on a PostgreSQL server has no folder of this machine's to receive into.
   std::optional<TemporaryFolder> spool;
   if (names_index_server(archive_dir.string())) spool.emplace("demo-spool");
@@ -107,8 +107,8 @@ int run_demo(const DemoOptions& options, const GlobalOptions& global) {
   // attached first so the phantom's own set stays the newest (it frames the views).
   pipeline::CohortImportReport follow_up;
   pipeline::attach_cohort_time_points(archive, case_id,
-                                      pipeline::sample_patient_follow_up(pipeline::sample_cohort_patients()[0], 2001), {},
-                                      "sample cohort P01 (phantoms)", follow_up);
+                                      pipeline::sample_patient_follow_up(pipeline::sample_cohort_patients()[0], 2001),
+                                      {}, "sample cohort P01 (phantoms)", follow_up);
   pipeline::attach_landmarks(archive, case_id, sample.landmarks, "phantom (analytic)");
   pipeline::ConsultationOptions report_options;
   report_options.occlusion = pipeline::phantom_occlusion_section(archive, case_id, options.skeletal_class,
@@ -153,23 +153,35 @@ int run_demo(const DemoOptions& options, const GlobalOptions& global) {
   clock.mark("report sent to the PACS");
   auto cohort = pipeline::analyse_cohort(pipeline::sample_cohort(), {}, ceph::Sex::kUnknown, "sample cohort");
   auto cohort_pdf = options.out / "cohort-followup.pdf";
-  int cohort_pages = pipeline::write_cohort_report(
-      cohort, pipeline::consecutive_pairs(pipeline::cohort_time_point_labels(cohort)), "sample cohort (synthetic)", cohort_pdf);
+  int cohort_pages =
+      pipeline::write_cohort_report(cohort, pipeline::consecutive_pairs(pipeline::cohort_time_point_labels(cohort)),
+                                    "sample cohort (synthetic)", cohort_pdf);
   clock.mark("cohort follow-up");
 
-  Json summary{{"report", report.pdf.string()}, {"pages", report.pages}, {"archive", archive_dir.string()},
-               {"case", case_id}, {"received_over_dicom", received.stored}, {"already_archived", received.already_archived},
-               {"report_sent_to_pacs", pacs.stored + pacs.already_archived}, {"pacs_archive", (options.out / "pacs").string()},
-               {"surfaces_reused", report.surfaces_reused}, {"cohort_report", cohort_pdf.string()},
-               {"cohort_pages", cohort_pages}, {"plan_result", plan.result_json.string()},
+  Json summary{{"report", report.pdf.string()},
+               {"pages", report.pages},
+               {"archive", archive_dir.string()},
+               {"case", case_id},
+               {"received_over_dicom", received.stored},
+               {"already_archived", received.already_archived},
+               {"report_sent_to_pacs", pacs.stored + pacs.already_archived},
+               {"pacs_archive", (options.out / "pacs").string()},
+               {"surfaces_reused", report.surfaces_reused},
+               {"cohort_report", cohort_pdf.string()},
+               {"cohort_pages", cohort_pages},
+               {"plan_result", plan.result_json.string()},
                {"plan_feasible", plan.result.feasible},
                {"soft_tissue_max_displacement_mm", predicted.views.max_displacement_mm},
-               {"validation", validation.summary}, {"validation_truth", postop.truth},
-               {"nightly_summary", nightly.summary_pdf.string()}, {"nightly_pages", nightly.summary_pages},
+               {"validation", validation.summary},
+               {"validation_truth", postop.truth},
+               {"nightly_summary", nightly.summary_pdf.string()},
+               {"nightly_pages", nightly.summary_pages},
                {"timing", clock.to_json()}};
-  if (global.json) std::cout << summary.dump(2) << "\n";
-  else std::cout << "demo report: " << report.pdf.string() << " (" << report.pages << " pages, "
-                 << summary["timing"]["total_seconds"].get<double>() << " s)\n";
+  if (global.json)
+    std::cout << summary.dump(2) << "\n";
+  else
+    std::cout << "demo report: " << report.pdf.string() << " (" << report.pages << " pages, "
+              << summary["timing"]["total_seconds"].get<double>() << " s)\n";
   return 0;
 }
 
@@ -177,9 +189,11 @@ int run_demo(const DemoOptions& options, const GlobalOptions& global) {
 
 void attach_demo(CLI::App& app, CommandContext& ctx) {
   auto options = std::make_shared<DemoOptions>();
-  app.add_option("--out", options->out, "output folder (created): sample/, archive/, report.pdf, nightly/, cohort-followup.pdf")
+  app.add_option("--out", options->out,
+                 "output folder (created): sample/, archive/, report.pdf, nightly/, cohort-followup.pdf")
       ->capture_default_str();
-  std::map<std::string, SkeletalClass> classes{{"I", SkeletalClass::I}, {"II", SkeletalClass::II}, {"III", SkeletalClass::III}};
+  std::map<std::string, SkeletalClass> classes{
+      {"I", SkeletalClass::I}, {"II", SkeletalClass::II}, {"III", SkeletalClass::III}};
   app.add_option("--class", options->skeletal_class, "skeletal class of the phantom: I, II or III")
       ->transform(CLI::CheckedTransformer(classes, CLI::ignore_case));
   app.callback([options, &ctx] { ctx.exit_code = run_demo(*options, ctx.global); });

@@ -17,8 +17,10 @@ struct EchoArguments {
 void run_echo(const EchoArguments& a, CommandContext& ctx) {
   const net::DicomPeer peer = net::parse_peer(a.peer);
   const double seconds = net::echo(peer, a.options);
-  if (ctx.global.json) std::cout << json_text(Json{{"peer", net::to_string(peer)}, {"seconds", seconds}}) << "\n";
-  else std::cout << net::to_string(peer) << " answered in " << seconds << " s\n";
+  if (ctx.global.json)
+    std::cout << json_text(Json{{"peer", net::to_string(peer)}, {"seconds", seconds}}) << "\n";
+  else
+    std::cout << net::to_string(peer) << " answered in " << seconds << " s\n";
 }
 
 }  // namespace

@@ -27,7 +27,8 @@ void attach_export(CLI::App& app, CommandContext& ctx) {
     if (ctx.global.json) {
       Json list = Json::array();
       for (const auto& f : files) list.push_back(f.string());
-      std::cout << json_text(Json{{"series", args->series}, {"deidentified", args->deidentify}, {"files", list}}) << "\n";
+      std::cout << json_text(Json{{"series", args->series}, {"deidentified", args->deidentify}, {"files", list}})
+                << "\n";
     } else {
       std::cout << files.size() << (args->deidentify ? " de-identified" : "") << " files written to "
                 << args->out.string() << "\n";

@@ -22,9 +22,14 @@ void run_find(const FindArguments& a, CommandContext& ctx) {
   if (ctx.global.json) {
     Json list = Json::array();
     for (const auto& m : matches)
-      list.push_back({{"patient_id", m.patient_id}, {"patient_name", m.patient_name}, {"study_uid", m.study_uid},
-                      {"study_date", m.study_date}, {"description", m.study_description}, {"modalities", m.modalities},
-                      {"accession", m.accession}, {"instances", m.instances}});
+      list.push_back({{"patient_id", m.patient_id},
+                      {"patient_name", m.patient_name},
+                      {"study_uid", m.study_uid},
+                      {"study_date", m.study_date},
+                      {"description", m.study_description},
+                      {"modalities", m.modalities},
+                      {"accession", m.accession},
+                      {"instances", m.instances}});
     std::cout << json_text(list) << "\n";
     return;
   }

@@ -24,7 +24,7 @@ struct FollowupOptions {
   std::filesystem::path import_cohort;  // store this cohort CSV's landmark sets in the archive
   std::string cohort_archive;           // the archived cohort of this name
   std::string cohort_name;              // --import-cohort: default the CSV's file stem
-  std::string from, to;  // cohort change between these time points; empty = every consecutive pair
+  std::string from, to;                 // cohort change between these time points; empty = every consecutive pair
   bool csv = false;
   std::filesystem::path pdf;  // cohort: also write the follow-up tables as a PDF report
   GeometryOptions geometry;
@@ -68,8 +68,10 @@ int run_cohort(const std::vector<ceph::CaseFollowUp>& cohort, const std::string&
                const FollowupOptions& options, const GlobalOptions& global) {
   auto labels = pipeline::cohort_time_point_labels(cohort);
   std::vector<std::pair<std::string, std::string>> pairs;
-  if (!options.from.empty()) pairs.push_back({options.from, options.to});
-  else pairs = pipeline::consecutive_pairs(labels);
+  if (!options.from.empty())
+    pairs.push_back({options.from, options.to});
+  else
+    pairs = pipeline::consecutive_pairs(labels);
 
   Json json_changes = Json::array();
   if (options.csv) std::printf("from,to,measurement,unit,n,mean,sd\n");
@@ -81,7 +83,8 @@ int run_cohort(const std::vector<ceph::CaseFollowUp>& cohort, const std::string&
         std::printf("%s,%s,%s,%s,%d,%s,%s\n", from.c_str(), to.c_str(), row.id.c_str(), row.unit.c_str(), row.n,
                     row.mean ? fixed(*row.mean, 3).c_str() : "", row.sd ? fixed(*row.sd, 3).c_str() : "");
       else if (!global.json)
-        std::printf("  %-7s %-18s %-3s n=%d\n", row.id.c_str(), ceph::format_mean_sd(row).c_str(), row.unit.c_str(), row.n);
+        std::printf("  %-7s %-18s %-3s n=%d\n", row.id.c_str(), ceph::format_mean_sd(row).c_str(), row.unit.c_str(),
+                    row.n);
       Json j{{"from", from}, {"to", to}, {"measurement", row.id}, {"unit", row.unit}, {"n", row.n}};
       j["mean"] = row.mean ? Json(*row.mean) : Json(nullptr);
       j["sd"] = row.sd ? Json(*row.sd) : Json(nullptr);
@@ -112,8 +115,9 @@ int run_cohort(const std::vector<ceph::CaseFollowUp>& cohort, const std::string&
     wits.push_back(row);
   }
   if (global.json && !options.csv)
-    std::cout << Json{{"cases", cohort.size()}, {"time_points", labels}, {"changes", json_changes}, {"wits", wits}}.dump(2)
-              << "\n";
+    std::cout
+        << Json{{"cases", cohort.size()}, {"time_points", labels}, {"changes", json_changes}, {"wits", wits}}.dump(2)
+        << "\n";
   return 0;
 }
 
@@ -122,10 +126,14 @@ int run_import_cohort(const FollowupOptions& options, const GlobalOptions& globa
   auto archive = Archive::open(resolve_archive_dir(global), OpenMode::CreateIfMissing);
   const auto cohort = ceph::read_cohort_csv(options.import_cohort);
   pipeline::LandmarkFrame frame{options.geometry.geometry, options.geometry.axes()};
-  const auto imported = pipeline::import_cohort(archive, cohort, name, frame, options.import_cohort.filename().string());
+  const auto imported =
+      pipeline::import_cohort(archive, cohort, name, frame, options.import_cohort.filename().string());
   if (global.json)
-    std::cout << Json{{"cohort", name}, {"cases", imported.cases}, {"sets_stored", imported.sets_stored},
-                      {"sets_unchanged", imported.sets_unchanged}}.dump(2)
+    std::cout << Json{{"cohort", name},
+                      {"cases", imported.cases},
+                      {"sets_stored", imported.sets_stored},
+                      {"sets_unchanged", imported.sets_unchanged}}
+                     .dump(2)
               << "\n";
   else
     std::printf("cohort %s: %d cases, %d landmark sets stored, %d already archived\n", name.c_str(), imported.cases,
@@ -143,10 +151,12 @@ int run_followup(const FollowupOptions& options, const GlobalOptions& global) {
                       "cohort " + options.cohort_archive, options, global);
   }
   if (options.case_text.empty())
-    throw Error(ErrorCode::kUsage, "followup", "give a CASE, --cohort FILE, --cohort-archive NAME or --import-cohort FILE");
+    throw Error(ErrorCode::kUsage, "followup",
+                "give a CASE, --cohort FILE, --cohort-archive NAME or --import-cohort FILE");
   auto archive = Archive::open(resolve_archive_dir(global));
   auto case_id = archive.resolve_case(options.case_text);
-  auto follow_up = pipeline::archived_case_follow_up(archive, case_id, "case " + std::to_string(case_id), options.geometry.sex);
+  auto follow_up =
+      pipeline::archived_case_follow_up(archive, case_id, "case " + std::to_string(case_id), options.geometry.sex);
   if (follow_up.time_points.empty())
     throw Error(ErrorCode::kNotFound, "case " + std::to_string(case_id),
                 "no landmark set with a time point (maxillo ceph add CASE --time-point LABEL ...)");
@@ -183,7 +193,8 @@ void attach_followup(CLI::App& app, CommandContext& ctx) {
       ->needs(import);
   cohort->excludes(cohort_archive)->excludes(import);
   cohort_archive->excludes(import);
-  auto* from = app.add_option("--from", options->from, "cohort change from this time point (default: consecutive pairs)");
+  auto* from =
+      app.add_option("--from", options->from, "cohort change from this time point (default: consecutive pairs)");
   auto* to = app.add_option("--to", options->to, "cohort change to this time point");
   from->needs(to);
   to->needs(from);

@@ -18,12 +18,13 @@ std::string summary_line(const ImportReport& r) {
   if (r.files() > 0 && r.already_archived == r.files() && r.restored == 0)
     return std::to_string(r.already_archived) + " already archived, nothing changed";
   std::string line = std::to_string(r.imported) + " imported, " + std::to_string(r.already_archived) +
-                     " already archived, " + std::to_string(r.conflicts) + " conflicts, " +
-                     std::to_string(r.failed) + " failed (" + std::to_string(r.files()) + " files)";
+                     " already archived, " + std::to_string(r.conflicts) + " conflicts, " + std::to_string(r.failed) +
+                     " failed (" + std::to_string(r.files()) + " files)";
   if (r.restored > 0) line += "; " + std::to_string(r.restored) + " lost object files restored";
   if (r.identity_flags > 0)
-    line += "; " + std::to_string(r.identity_flags) +
-            " identity flags raised (a Patient ID arrived with another name, birth date or sex: see `maxillo list flags`)";
+    line +=
+        "; " + std::to_string(r.identity_flags) +
+        " identity flags raised (a Patient ID arrived with another name, birth date or sex: see `maxillo list flags`)";
   return line;
 }
 
@@ -36,8 +37,10 @@ void run_import(const ImportArguments& args, CommandContext& ctx) {
     std::cerr << problem.path.string() << ": " << problem.reason << "\n";
   };
   ImportReport report = archive.import_paths(args.paths, options);
-  if (ctx.global.json) std::cout << json_text(to_json(report)) << "\n";
-  else std::cout << summary_line(report) << "\n";
+  if (ctx.global.json)
+    std::cout << json_text(to_json(report)) << "\n";
+  else
+    std::cout << summary_line(report) << "\n";
   ctx.exit_code = report.all_ok() ? 0 : exit_code_for(ErrorCode::kBatchPartlyFailed);
 }
 

@@ -39,15 +39,15 @@ void list_studies(const Archive& archive, bool json) {
   if (json) return print_json(rows);
   std::printf("%-5s %-7s %-9s %-30s %-6s %s\n", "id", "patient", "date", "description", "series", "study uid");
   for (const auto& r : rows)
-    std::printf("%-5lld %-7lld %-9s %-30s %-6lld %s\n", ll(r.id), ll(r.patient), r.date.c_str(),
-                r.description.c_str(), ll(r.series_count), r.study_uid.c_str());
+    std::printf("%-5lld %-7lld %-9s %-30s %-6lld %s\n", ll(r.id), ll(r.patient), r.date.c_str(), r.description.c_str(),
+                ll(r.series_count), r.study_uid.c_str());
 }
 
 void list_series(const Archive& archive, bool json) {
   auto rows = archive.series();
   if (json) return print_json(rows);
-  std::printf("%-5s %-5s %-4s %-4s %-24s %-9s %-13s %-8s %s\n", "id", "study", "mod", "no", "description", "rows x cols",
-              "spacing mm", "slices", "series uid");
+  std::printf("%-5s %-5s %-4s %-4s %-24s %-9s %-13s %-8s %s\n", "id", "study", "mod", "no", "description",
+              "rows x cols", "spacing mm", "slices", "series uid");
   for (const auto& r : rows) {
     std::string size = std::to_string(r.rows.value_or(0)) + "x" + std::to_string(r.columns.value_or(0));
     std::string spacing = millimetres(r.pixel_spacing_row) + "/" + millimetres(r.pixel_spacing_column) + "/" +
@@ -84,11 +84,16 @@ void attach_list(CLI::App& app, CommandContext& ctx) {
   app.callback([what, &ctx] {
     Archive archive = Archive::open(resolve_archive_dir(ctx.global));
     bool json = ctx.global.json;
-    if (*what == "patients") list_patients(archive, json);
-    else if (*what == "studies") list_studies(archive, json);
-    else if (*what == "series") list_series(archive, json);
-    else if (*what == "cases") list_cases(archive, json);
-    else list_flags(archive, json);
+    if (*what == "patients")
+      list_patients(archive, json);
+    else if (*what == "studies")
+      list_studies(archive, json);
+    else if (*what == "series")
+      list_series(archive, json);
+    else if (*what == "cases")
+      list_cases(archive, json);
+    else
+      list_flags(archive, json);
   });
 }
 

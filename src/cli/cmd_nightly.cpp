@@ -56,18 +56,20 @@ void attach_nightly(CLI::App& app, CommandContext& ctx) {
   auto a = std::make_shared<NightlyArguments>();
   app.add_option("--out", a->out, "output folder: case-<id>/ folders and validation-summary.pdf")->required();
   auto shard = app.add_option("--shard", a->shard,
-                 "run slice i of n, numbered from 1 (Slurm: sbatch --array=1-N with "
-                 "--shard $SLURM_ARRAY_TASK_ID/$SLURM_ARRAY_TASK_COUNT)")
-      ->capture_default_str();
-  auto claim = app.add_flag("--claim", a->claim,
-                            "claim cases one at a time from the archive's work queue with a lease, beside other workers "
-                            "on any node; no summary (run --summary-only after the workers)")
-                   ->excludes(shard);
+                              "run slice i of n, numbered from 1 (Slurm: sbatch --array=1-N with "
+                              "--shard $SLURM_ARRAY_TASK_ID/$SLURM_ARRAY_TASK_COUNT)")
+                   ->capture_default_str();
+  auto claim =
+      app.add_flag("--claim", a->claim,
+                   "claim cases one at a time from the archive's work queue with a lease, beside other workers "
+                   "on any node; no summary (run --summary-only after the workers)")
+          ->excludes(shard);
   app.add_option("--lease", a->lease_seconds, "with --claim: seconds before a dead worker's case is taken over")
       ->capture_default_str()
       ->check(CLI::Range(int64_t(5), int64_t(86400)))
       ->needs(claim);
-  app.add_option("--worker", a->worker, "with --claim: this worker's name in the queue (default host:pid)")->needs(claim);
+  app.add_option("--worker", a->worker, "with --claim: this worker's name in the queue (default host:pid)")
+      ->needs(claim);
   app.add_flag("--summary-only", a->summary_only, "validate nothing; summarise what the archive holds");
   app.add_flag("--no-correspondence", a->no_correspondence, "skip the corresponding-point distances");
   app.callback([a, &ctx] { ctx.exit_code = run(*a, ctx.global); });

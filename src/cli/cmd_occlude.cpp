@@ -46,8 +46,8 @@ void print_summary(const pipeline::OcclusionRun& run, const OccludeOptions& opti
         "splint: %s, %d component(s), %lld triangles, %.0f mm3, thickness %.2f mm where no tooth is (%d columns); "
         "distance to upper %.3f mm, lower %.3f mm; triangles crossing the arches: %lld, %lld (%.1f s)\n",
         s.watertight ? "watertight" : "NOT watertight", s.components, (long long)s.triangles, s.volume_mm3,
-        s.thickness_mm, s.thickness_columns, s.min_distance_upper_mm, s.min_distance_lower_mm, (long long)s.intersecting_pairs_upper,
-        (long long)s.intersecting_pairs_lower, s.seconds);
+        s.thickness_mm, s.thickness_columns, s.min_distance_upper_mm, s.min_distance_lower_mm,
+        (long long)s.intersecting_pairs_upper, (long long)s.intersecting_pairs_lower, s.seconds);
   } else if (!run.splint_error.empty()) {
     std::cout << "splint not made: " << run.splint_error << "\n";
   }
@@ -61,8 +61,8 @@ int run_occlude(OccludeOptions options, const GlobalOptions& global) {
   options.run.splint = !options.no_splint;
   options.run.upper_label = options.upper.string();
   options.run.lower_label = options.lower.string();
-  const pipeline::OcclusionRun run =
-      pipeline::run_occlusion(read_mesh(options.upper), read_mesh(options.lower), pairs, start, options.out, options.run);
+  const pipeline::OcclusionRun run = pipeline::run_occlusion(read_mesh(options.upper), read_mesh(options.lower), pairs,
+                                                             start, options.out, options.run);
   if (!options.case_text.empty()) {
     auto archive = Archive::open(resolve_archive_dir(global));
     const std::vector<std::string> inputs = {sha256_hex(read_file(options.upper)), sha256_hex(read_file(options.lower)),

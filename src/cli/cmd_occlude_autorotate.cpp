@@ -41,13 +41,14 @@ int run_autorotate(const AutorotateOptions& options, const GlobalOptions& global
     throw Error(ErrorCode::kBadValue, "--hinge", "the two hinge points coincide");
   const Eigen::Vector3d pogonion = point(options.pogonion, 0);
   const DistanceField upper_field(upper), lower_field(lower);
-  const AutorotationResult r = autorotate_mandible(upper_field, lower_field, upper_pose, hinge, pogonion, options.rotation);
+  const AutorotationResult r =
+      autorotate_mandible(upper_field, lower_field, upper_pose, hinge, pogonion, options.rotation);
   const std::string outcome = r.already_in_contact ? "already_in_contact" : r.contact ? "contact" : "no_contact";
   const Json result{{"outcome", outcome},
                     {"angle_deg", r.angle_deg},
                     {"pogonion_mm", r.pogonion_mm},
-                    {"pogonion_displacement_mm", {r.pogonion_displacement.x(), r.pogonion_displacement.y(),
-                                                  r.pogonion_displacement.z()}},
+                    {"pogonion_displacement_mm",
+                     {r.pogonion_displacement.x(), r.pogonion_displacement.y(), r.pogonion_displacement.z()}},
                     {"tolerance_deg", options.rotation.tolerance_deg},
                     {"frame", "lower file coordinates (mm); lower_transform moves the lower arch"},
                     {"lower_transform", transform_to_json(r.lower_motion)}};

@@ -44,12 +44,8 @@ int run_compare(const CompareOptions& options, const GlobalOptions& global) {
   if (!options.map.empty()) write_distance_map(upper, pose_a, c, options.map);
   const DistanceStatistics& s = c.statistics;
   if (global.json) {
-    std::cout << Json{{"roi_mm", options.roi_mm},
-                      {"region_vertices", s.count},
-                      {"median_mm", s.median_mm},
-                      {"p90_mm", s.p90_mm},
-                      {"p95_mm", s.p95_mm},
-                      {"max_mm", s.max_mm}}
+    std::cout << Json{{"roi_mm", options.roi_mm}, {"region_vertices", s.count}, {"median_mm", s.median_mm},
+                      {"p90_mm", s.p90_mm},       {"p95_mm", s.p95_mm},         {"max_mm", s.max_mm}}
                      .dump(2)
               << "\n";
   } else {

@@ -41,7 +41,8 @@ Plan plan_from_options(const CreateOptions& o) {
                                 o.from.string());
   }
   Plan plan = planning::distraction_plan(o.target, o.description);
-  plan.osteotomies.le_fort_i->variant = o.le_fort == "low" ? planning::LeFortVariant::Low : planning::LeFortVariant::High;
+  plan.osteotomies.le_fort_i->variant =
+      o.le_fort == "low" ? planning::LeFortVariant::Low : planning::LeFortVariant::High;
   plan.distraction->expected_clockwise_rotation_deg = o.expected_clockwise_deg;
   plan.distraction->device.screw_length_mm = o.screw_length_mm;
   plan.distraction->schedule.latency_days = o.latency_days;
@@ -57,7 +58,9 @@ int run_create(const CreateOptions& options, const GlobalOptions& global) {
   const int64_t case_id = archive.resolve_case(options.case_text);
   const pipeline::StoredPlan stored = pipeline::store_plan(archive, case_id, plan);
   if (global.json)
-    std::cout << Json{{"case", case_id}, {"version", stored.version}, {"artefact", stored.artefact_id},
+    std::cout << Json{{"case", case_id},
+                      {"version", stored.version},
+                      {"artefact", stored.artefact_id},
                       {"plan", planning::plan_to_json(plan)}}
                      .dump(2)
               << "\n";
@@ -71,16 +74,21 @@ int run_show(const std::string& case_text, int version, const GlobalOptions& glo
   auto archive = Archive::open(resolve_archive_dir(global));
   const int64_t case_id = archive.resolve_case(case_text);
   const auto history = pipeline::plan_history(archive, case_id);
-  if (history.empty()) throw Error(ErrorCode::kNotFound, case_text, "the case has no plan: make one with `maxillo plan create`");
+  if (history.empty())
+    throw Error(ErrorCode::kNotFound, case_text, "the case has no plan: make one with `maxillo plan create`");
   if (version > static_cast<int>(history.size()))
     throw Error(ErrorCode::kNotFound, case_text, "the case has " + std::to_string(history.size()) + " plan versions");
   const pipeline::StoredPlan& shown = version > 0 ? history[version - 1] : history.back();
   if (global.json) {
     Json versions = Json::array();
     for (const auto& s : history)
-      versions.push_back({{"version", s.version}, {"artefact", s.artefact_id}, {"created_at", s.created_at},
+      versions.push_back({{"version", s.version},
+                          {"artefact", s.artefact_id},
+                          {"created_at", s.created_at},
                           {"description", s.plan.description}});
-    std::cout << Json{{"case", case_id}, {"version", shown.version}, {"plan", planning::plan_to_json(shown.plan)},
+    std::cout << Json{{"case", case_id},
+                      {"version", shown.version},
+                      {"plan", planning::plan_to_json(shown.plan)},
                       {"history", versions}}
                      .dump(2)
               << "\n";
@@ -104,21 +112,24 @@ void print_result(const planning::PlanResult& r) {
   }
   const auto& d = *r.distraction;
   for (const auto* v : {&d.vectors.right, &d.vectors.left})
-    std::printf("%-5s entry (%.1f, %.1f, %.1f) axis (%.3f, %.3f, %.3f) outward %.2f deg elevation %.2f deg "
-                "activation %.2f mm\n",
-                std::string(planning::side_name(v->side)).c_str(), v->entry.x(), v->entry.y(), v->entry.z(),
-                v->axis.x(), v->axis.y(), v->axis.z(), v->outward_deg, v->elevation_deg, v->activation_mm);
+    std::printf(
+        "%-5s entry (%.1f, %.1f, %.1f) axis (%.3f, %.3f, %.3f) outward %.2f deg elevation %.2f deg "
+        "activation %.2f mm\n",
+        std::string(planning::side_name(v->side)).c_str(), v->entry.x(), v->entry.y(), v->entry.z(), v->axis.x(),
+        v->axis.y(), v->axis.z(), v->outward_deg, v->elevation_deg, v->activation_mm);
   std::printf("divergence %.2f deg (3D angle %.2f deg)\n", d.vectors.divergence_deg, d.vectors.angle_deg);
   for (const auto& c : d.checks)
-    std::printf("check %-5s %-18s %-11s value %.1f mm limit %.1f mm %s\n", std::string(planning::side_name(c.side)).c_str(),
-                c.name.c_str(), std::string(planning::status_name(c.status)).c_str(), c.value, c.limit, c.reason.c_str());
+    std::printf("check %-5s %-18s %-11s value %.1f mm limit %.1f mm %s\n",
+                std::string(planning::side_name(c.side)).c_str(), c.name.c_str(),
+                std::string(planning::status_name(c.status)).c_str(), c.value, c.limit, c.reason.c_str());
   const auto& s = d.schedule;
   std::printf("schedule: latency %d days, %.2f mm/day in %d activations of %.2f turn (%.2f mm/turn)\n",
-              s.settings.latency_days, s.settings.rate_mm_per_day, s.settings.activations_per_day, s.turns_per_activation,
-              s.settings.mm_per_turn);
+              s.settings.latency_days, s.settings.rate_mm_per_day, s.settings.activations_per_day,
+              s.turns_per_activation, s.settings.mm_per_turn);
   for (const auto* side : {&s.right, &s.left})
-    std::printf("  %-5s %.2f turns = %.2f mm, days %d-%d (%d days)\n", std::string(planning::side_name(side->side)).c_str(),
-                side->turns, side->delivered_mm, side->first_day, side->last_day, side->distraction_days);
+    std::printf("  %-5s %.2f turns = %.2f mm, days %d-%d (%d days)\n",
+                std::string(planning::side_name(side->side)).c_str(), side->turns, side->delivered_mm, side->first_day,
+                side->last_day, side->distraction_days);
   std::printf("  last activation day %d, consolidation until day %d\n", s.distraction_end_day, s.consolidation_end_day);
   for (const auto& p : d.simulation.points)
     std::printf("forward simulation %-4s error %.3f mm\n", p.label.c_str(), p.error_mm);
@@ -171,12 +182,15 @@ void attach_plan(CLI::App& app, CommandContext& ctx) {
       ->check(CLI::Range(0.0, 30.0));
   create->add_option("--midline", o->target.midline_shift_mm, "incisor midline shift, mm (+ to the patient's left)")
       ->check(CLI::Range(-15.0, 15.0));
-  create->add_option("--rotate", o->target.rotation_deg, "pitch, deg (+ anterior end up)")->check(CLI::Range(-45.0, 45.0));
-  create->add_option("--counter-rotate", o->target.counter_rotation_deg,
-                     "tilt the vectors anterior-end-up by this much, deg (against the clockwise drift)")
+  create->add_option("--rotate", o->target.rotation_deg, "pitch, deg (+ anterior end up)")
       ->check(CLI::Range(-45.0, 45.0));
-  create->add_option("--expected-clockwise", o->expected_clockwise_deg,
-                     "clockwise drift expected during distraction, deg (forward simulation)")
+  create
+      ->add_option("--counter-rotate", o->target.counter_rotation_deg,
+                   "tilt the vectors anterior-end-up by this much, deg (against the clockwise drift)")
+      ->check(CLI::Range(-45.0, 45.0));
+  create
+      ->add_option("--expected-clockwise", o->expected_clockwise_deg,
+                   "clockwise drift expected during distraction, deg (forward simulation)")
       ->check(CLI::Range(-45.0, 45.0));
   create->add_option("--screw-length", o->screw_length_mm, "distraction screw length, mm")
       ->check(CLI::Range(5.0, 80.0))
@@ -207,12 +221,14 @@ void attach_plan(CLI::App& app, CommandContext& ctx) {
   auto out = std::make_shared<std::filesystem::path>();
   auto no_face = std::make_shared<bool>(false);
   apply->add_option("CASE", *apply_case, "case id, or a Patient ID")->required();
-  apply->add_option("--out", *out,
-                    "output folder (created): plan-result.json, transfer-model.stl, planned segments, renders, "
-                    "soft-tissue/ (the predicted face)")
+  apply
+      ->add_option("--out", *out,
+                   "output folder (created): plan-result.json, transfer-model.stl, planned segments, renders, "
+                   "soft-tissue/ (the predicted face)")
       ->required();
   apply->add_flag("--no-face", *no_face, "skip the soft-tissue prediction of the planned face");
-  apply->callback([apply_case, out, no_face, &ctx] { ctx.exit_code = run_apply(*apply_case, *out, !*no_face, ctx.global); });
+  apply->callback(
+      [apply_case, out, no_face, &ctx] { ctx.exit_code = run_apply(*apply_case, *out, !*no_face, ctx.global); });
 }
 
 }  // namespace maxillo::cli

@@ -103,7 +103,8 @@ std::optional<LandmarkSet> case_landmarks_of(const Archive& archive, int64_t ser
 }
 
 Json box_json(const RegistrationBox& box, const std::string& source) {
-  return {{"min", {box.min.x(), box.min.y(), box.min.z()}}, {"max", {box.max.x(), box.max.y(), box.max.z()}},
+  return {{"min", {box.min.x(), box.min.y(), box.min.z()}},
+          {"max", {box.max.x(), box.max.y(), box.max.z()}},
           {"source", source}};
 }
 

@@ -25,16 +25,24 @@ int run_report(const ReportOptions& options, const GlobalOptions& global) {
   auto result = pipeline::write_consultation_report(archive, case_id, options.out, consultation);
   std::optional<pipeline::ReportDicom> dicom;
   if (!options.dicom_out.empty() || options.store_dicom) {
-    auto file = options.dicom_out.empty() ? std::filesystem::path(options.out).replace_extension(".dcm") : options.dicom_out;
-    dicom = pipeline::write_report_dicom(archive, case_id, options.out, file,
-                                         options.store_dicom ? pipeline::StoreInArchive::Yes : pipeline::StoreInArchive::No);
+    auto file =
+        options.dicom_out.empty() ? std::filesystem::path(options.out).replace_extension(".dcm") : options.dicom_out;
+    dicom = pipeline::write_report_dicom(
+        archive, case_id, options.out, file,
+        options.store_dicom ? pipeline::StoreInArchive::Yes : pipeline::StoreInArchive::No);
   }
   if (global.json) {
-    std::cout << Json{{"report", result.pdf.string()}, {"pages", result.pages}, {"case", case_id},
-                      {"sha256", result.report_sha256}, {"surfaces_reused", result.surfaces_reused},
-                      {"seconds", {{"surfaces", result.seconds_surfaces}, {"views", result.seconds_views},
-                                   {"layout", result.seconds_layout}}},
-                      {"dicom", dicom ? Json{{"file", dicom->file.string()}, {"sop_instance_uid", dicom->sop_instance_uid},
+    std::cout << Json{{"report", result.pdf.string()},
+                      {"pages", result.pages},
+                      {"case", case_id},
+                      {"sha256", result.report_sha256},
+                      {"surfaces_reused", result.surfaces_reused},
+                      {"seconds",
+                       {{"surfaces", result.seconds_surfaces},
+                        {"views", result.seconds_views},
+                        {"layout", result.seconds_layout}}},
+                      {"dicom", dicom ? Json{{"file", dicom->file.string()},
+                                             {"sop_instance_uid", dicom->sop_instance_uid},
                                              {"stored", options.store_dicom}}
                                       : Json(nullptr)}}
                      .dump(2)

@@ -26,7 +26,8 @@ std::vector<std::string> studies_to_retrieve(const RetrieveArguments& a, const n
   if (a.studies.empty() == a.patient_id.empty())
     throw Error(ErrorCode::kUsage, "retrieve", "give Study Instance UIDs or --patient-id, one of the two");
   if (a.patient_id.empty()) return a.studies;
-  const net::QueryOptions query{.calling_ae = a.options.calling_ae, .timeout_seconds = a.options.timeout_seconds, .tls = a.options.tls};
+  const net::QueryOptions query{
+      .calling_ae = a.options.calling_ae, .timeout_seconds = a.options.timeout_seconds, .tls = a.options.tls};
   net::StudyQuery of_patient;
   of_patient.patient_id = a.patient_id;
   std::vector<std::string> studies;
@@ -44,11 +45,15 @@ void run_retrieve(const RetrieveArguments& a, CommandContext& ctx) {
   bool all_ok = true;
   for (const auto& study : studies_to_retrieve(a, peer)) {
     const auto report = net::retrieve_study(peer, study, archive, options);
-    for (const auto& problem : report.imported.problems) std::cerr << problem.path.string() << ": " << problem.reason << "\n";
+    for (const auto& problem : report.imported.problems)
+      std::cerr << problem.path.string() << ": " << problem.reason << "\n";
     all_ok &= report.imported.all_ok() && report.failed_by_peer == 0 && report.received > 0;
     if (report.received == 0) std::cerr << study << ": the peer sent nothing (no such study there?)\n";
-    results.push_back({{"study", study}, {"received", report.received}, {"failed_at_peer", report.failed_by_peer},
-                       {"imported", report.imported.imported}, {"already_archived", report.imported.already_archived},
+    results.push_back({{"study", study},
+                       {"received", report.received},
+                       {"failed_at_peer", report.failed_by_peer},
+                       {"imported", report.imported.imported},
+                       {"already_archived", report.imported.already_archived},
                        {"seconds", report.seconds}});
     if (!ctx.global.json)
       std::cout << study << ": " << report.received << " instances received, " << report.imported.imported

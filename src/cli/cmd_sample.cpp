@@ -30,15 +30,18 @@ void run_sample(const SampleOptions& options, CommandContext& ctx) {
                    {"skeletal_class", class_name},
                    {"maxillary_advancement_mm", spec.maxillary_advancement_mm},
                    {"mandibular_protrusion_mm", spec.mandibular_protrusion_mm},
-                   {"ct", {{"folder", sample.ct_folder.string()},
-                           {"files", sample.series.files.size()},
-                           {"size", {g.size.x(), g.size.y(), g.size.z()}},
-                           {"spacing_mm", {g.spacing.x(), g.spacing.y(), g.spacing.z()}},
-                           {"origin_lps_mm", {g.origin.x(), g.origin.y(), g.origin.z()}},
-                           {"study_instance_uid", sample.series.study_instance_uid},
-                           {"series_instance_uid", sample.series.series_instance_uid}}},
-                   {"landmarks", {{"frame", "LPS"}, {"count", sample.landmarks.size()},
-                                  {"files", {sample.markups_file.string(), sample.csv_file.string()}}}}};
+                   {"ct",
+                    {{"folder", sample.ct_folder.string()},
+                     {"files", sample.series.files.size()},
+                     {"size", {g.size.x(), g.size.y(), g.size.z()}},
+                     {"spacing_mm", {g.spacing.x(), g.spacing.y(), g.spacing.z()}},
+                     {"origin_lps_mm", {g.origin.x(), g.origin.y(), g.origin.z()}},
+                     {"study_instance_uid", sample.series.study_instance_uid},
+                     {"series_instance_uid", sample.series.series_instance_uid}}},
+                   {"landmarks",
+                    {{"frame", "LPS"},
+                     {"count", sample.landmarks.size()},
+                     {"files", {sample.markups_file.string(), sample.csv_file.string()}}}}};
     std::cout << result.dump(2) << "\n";
     return;
   }

@@ -39,7 +39,8 @@ std::vector<int64_t> series_of(const Archive& archive, const std::string& text) 
     case ItemKind::Case:
       for (const auto& s : archive.case_contents(item.id).series) ids.push_back(s.series.id);
       break;
-    case ItemKind::Instance: throw Error(ErrorCode::kUsage, text, "send a series, study, patient or case, not one instance");
+    case ItemKind::Instance:
+      throw Error(ErrorCode::kUsage, text, "send a series, study, patient or case, not one instance");
   }
   return ids;
 }
@@ -49,13 +50,15 @@ std::vector<int64_t> report_series(const Archive& archive, const std::string& ca
   for (const auto& s : archive.case_contents(archive.resolve_case(case_text)).series)
     if (s.role == "report") ids.push_back(s.series.id);
   if (ids.empty())
-    throw Error(ErrorCode::kNotFound, case_text, "the case has no report in the archive: run `maxillo report CASE --store-dicom`");
+    throw Error(ErrorCode::kNotFound, case_text,
+                "the case has no report in the archive: run `maxillo report CASE --store-dicom`");
   return ids;
 }
 
 void run_send(const SendArguments& a, CommandContext& ctx) {
   const net::DicomPeer peer = net::parse_peer(a.peer);
-  if (a.items.empty() && a.report_case.empty()) throw Error(ErrorCode::kUsage, "send", "give ITEMs to send, or --report CASE");
+  if (a.items.empty() && a.report_case.empty())
+    throw Error(ErrorCode::kUsage, "send", "give ITEMs to send, or --report CASE");
   const Archive archive = Archive::open(resolve_archive_dir(ctx.global));
   std::vector<int64_t> series = a.report_case.empty() ? std::vector<int64_t>{} : report_series(archive, a.report_case);
   for (const auto& text : a.items)
@@ -63,12 +66,13 @@ void run_send(const SendArguments& a, CommandContext& ctx) {
   std::set<int64_t> seen;
   std::vector<std::filesystem::path> files;
   const TemporaryFolder scratch("maxillo-send");  // de-identified copies, removed when done
-  size_t withheld = 0;  // series that cannot leave de-identified: named, and the rest sent
+  size_t withheld = 0;                            // series that cannot leave de-identified: named, and the rest sent
   for (int64_t id : series) {
     if (!seen.insert(id).second) continue;
     try {
-      const auto these = a.deidentify ? archive.export_series(id, scratch / std::to_string(id), ExportProfile::Deidentified)
-                                      : archive.series_instance_files(id);
+      const auto these = a.deidentify
+                             ? archive.export_series(id, scratch / std::to_string(id), ExportProfile::Deidentified)
+                             : archive.series_instance_files(id);
       files.insert(files.end(), these.begin(), these.end());
     } catch (const Error& e) {
       if (e.code() != ErrorCode::kCannotDeidentify) throw;
@@ -81,8 +85,11 @@ void run_send(const SendArguments& a, CommandContext& ctx) {
   const net::StoreReport report = net::send_files(peer, files, options);
   for (const auto& failure : report.failures) std::cerr << failure.file.string() << ": " << failure.reason << "\n";
   if (ctx.global.json) {
-    std::cout << json_text(Json{{"peer", net::to_string(peer)}, {"sent", report.sent}, {"failed", report.failures.size()},
-                                {"seconds", report.seconds}, {"deidentified", a.deidentify},
+    std::cout << json_text(Json{{"peer", net::to_string(peer)},
+                                {"sent", report.sent},
+                                {"failed", report.failures.size()},
+                                {"seconds", report.seconds},
+                                {"deidentified", a.deidentify},
                                 {"series_withheld", withheld}})
               << "\n";
   } else {
@@ -101,7 +108,8 @@ void attach_send(CLI::App& app, CommandContext& ctx) {
   app.add_option("ITEM", a->items, "series, study, patient or case (any id or UID `maxillo show` takes)");
   app.add_option("--report", a->report_case, "send the case's reports (Encapsulated PDF series)");
   app.add_option("--to", a->peer, "the peer: AE@HOST:PORT")->required();
-  app.add_flag("--deidentify", a->deidentify, "send de-identified copies (as `export --deidentify`) instead of the archived bytes");
+  app.add_flag("--deidentify", a->deidentify,
+               "send de-identified copies (as `export --deidentify`) instead of the archived bytes");
   add_requestor_options(app, a->options.calling_ae, a->options.timeout_seconds, a->options.tls);
   app.callback([a, &ctx] { run_send(*a, ctx); });
 }

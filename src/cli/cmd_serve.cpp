@@ -58,8 +58,7 @@ class StopOnSignal {
     sigaction(SIGINT, &action, nullptr);
     waiter_ = std::thread([&server] {
       char byte = 0;
-      while (read(stop_pipe[0], &byte, 1) < 0 && errno == EINTR) {
-      }
+      while (read(stop_pipe[0], &byte, 1) < 0 && errno == EINTR) {}
       if (byte == 's') log::info("serve: stop requested: finishing the associations in flight");
       server.stop();
     });
@@ -134,34 +133,37 @@ void run_serve(const ServeArguments& a, CommandContext& ctx) {
 void attach_serve(CLI::App& app, CommandContext& ctx) {
   auto a = std::make_shared<ServeArguments>();
   auto& given = a->given;
-  app.add_option("--config", a->config, "JSON configuration (README: Receiving from scanners and PACS); options given here override it")
+  app.add_option("--config", a->config,
+                 "JSON configuration (README: Receiving from scanners and PACS); options given here override it")
       ->check(CLI::ExistingFile);
   given["--aet"] = app.add_option("--aet", a->ae_title, "our AE title (peers call it)")->capture_default_str();
   given["--port"] =
       app.add_option("--port", a->port, "TCP port to listen on")->check(CLI::Range(1, 65535))->capture_default_str();
-  given["--allow"] =
-      app.add_option("--allow", a->allowed, "a peer that may store: AE title, or AE@ADDRESS (repeatable; others are refused)");
-  given["--max-associations"] =
-      app.add_option("--max-associations", a->max_associations, "associations served at once (more are refused as busy)")
-          ->check(CLI::Range(1, 64))
+  given["--allow"] = app.add_option("--allow", a->allowed,
+                                    "a peer that may store: AE title, or AE@ADDRESS (repeatable; others are refused)");
+  given["--max-associations"] = app.add_option("--max-associations", a->max_associations,
+                                               "associations served at once (more are refused as busy)")
+                                    ->check(CLI::Range(1, 64))
+                                    ->capture_default_str();
+  given["--timeout"] =
+      app.add_option("--timeout", a->timeout_seconds, "seconds a peer may stay silent before it is dropped")
+          ->check(CLI::Range(1, 3600))
           ->capture_default_str();
-  given["--timeout"] = app.add_option("--timeout", a->timeout_seconds, "seconds a peer may stay silent before it is dropped")
-                           ->check(CLI::Range(1, 3600))
-                           ->capture_default_str();
   given["--on-stable-study"] = app.add_option(
       "--on-stable-study", a->on_stable_study,
       "shell command run once a study has had nothing new for --stable-seconds (again after each change); "
       "environment: MAXILLO_ARCHIVE, MAXILLO_STUDY_UID, MAXILLO_CASE");
-  given["--stable-seconds"] = app.add_option("--stable-seconds", a->stable_seconds, "quiet time after which a study is stable")
-                                  ->check(CLI::Range(1, 86400))
-                                  ->capture_default_str();
+  given["--stable-seconds"] =
+      app.add_option("--stable-seconds", a->stable_seconds, "quiet time after which a study is stable")
+          ->check(CLI::Range(1, 86400))
+          ->capture_default_str();
   given["--spool"] = app.add_option("--spool", a->spool,
                                     "this node's folder for files being received and owed actions (default: the "
                                     "archive folder; required with an archive on a PostgreSQL server)");
   given["--tls-cert"] = app.add_option("--tls-cert", a->tls.certificate, "our certificate (PEM): serve DICOM TLS only")
                             ->check(CLI::ExistingFile);
-  given["--tls-key"] = app.add_option("--tls-key", a->tls.private_key, "the certificate's private key (PEM)")
-                           ->check(CLI::ExistingFile);
+  given["--tls-key"] =
+      app.add_option("--tls-key", a->tls.private_key, "the certificate's private key (PEM)")->check(CLI::ExistingFile);
   given["--tls-trust"] = app.add_option("--tls-trust", a->tls.trusted,
                                         "a certificate file or folder: callers must present a certificate signed by "
                                         "one of them (repeatable; adds to the configuration's)")

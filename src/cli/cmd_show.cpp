@@ -73,7 +73,10 @@ void print_text(const Json& json, int indent = 0) {
 
 void attach_show(CLI::App& app, CommandContext& ctx) {
   auto id = std::make_shared<std::string>();
-  app.add_option("ID", *id, "archive id (typed: patient:N, study:N, series:N, instance:N, case:N), Patient ID, or Study/Series/SOP Instance UID")->required();
+  app.add_option("ID", *id,
+                 "archive id (typed: patient:N, study:N, series:N, instance:N, case:N), Patient ID, or "
+                 "Study/Series/SOP Instance UID")
+      ->required();
   app.callback([id, &ctx] {
     Archive archive = Archive::open(resolve_archive_dir(ctx.global));
     ResolvedItem item = archive.resolve(*id);

@@ -34,7 +34,8 @@ pipeline::SimulationRequest make_request(const SimulateOptions& o) {
   } else if (o.advance_mm != 0) {
     request.plan = pipeline::le_fort_advancement_plan(o.advance_mm);
   } else {
-    throw Error(ErrorCode::kUsage, "simulate", "give a plan (--plan PLAN.json) or a Le Fort I advancement (--advance MM)");
+    throw Error(ErrorCode::kUsage, "simulate",
+                "give a plan (--plan PLAN.json) or a Le Fort I advancement (--advance MM)");
   }
   request.options.model = *pipeline::parse_model(o.model);
   request.options.poisson_ratio = o.poisson;
@@ -60,13 +61,13 @@ int run_simulate(const SimulateOptions& options, const GlobalOptions& global) {
             << "solve: " << p.seconds.solve << " s, " << p.iterations << " iterations; mesh " << p.seconds.meshing
             << " s; mapping " << p.seconds.mapping << " s\n"
             << "largest skin displacement: " << result.views.max_displacement_mm << " mm\n";
-  if (result.uncertainty)
-  {
+  if (result.uncertainty) {
     std::cout << "uncertainty (" << result.uncertainty->runs.size() << " runs): P95 " << result.uncertainty->p95_mm
               << " mm, max " << result.uncertainty->max_mm << " mm\n";
     for (size_t r = 0; r < result.uncertainty->runs.size(); ++r)
-      std::cout << "  " << result.uncertainty->runs[r] << ": largest skin displacement " << result.uncertainty->run_max_mm[r]
-                << " mm, P95 " << result.uncertainty->run_p95_from_first_mm[r] << " mm from the first run\n";
+      std::cout << "  " << result.uncertainty->runs[r] << ": largest skin displacement "
+                << result.uncertainty->run_max_mm[r] << " mm, P95 " << result.uncertainty->run_p95_from_first_mm[r]
+                << " mm from the first run\n";
   }
   for (const auto& file : result.files) std::cout << "wrote " << file.string() << "\n";
   return 0;

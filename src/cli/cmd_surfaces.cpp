@@ -32,6 +32,7 @@ struct SurfacesOptions {
 class Stopwatch {
  public:
   double seconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+
  private:
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
@@ -104,51 +105,66 @@ void run_surfaces(const SurfacesOptions& options, CommandContext& ctx) {
   const VolumeGeometry& g = volume.geometry;
 
   Stopwatch segmentation_clock;
-  SegmentationOptions segmentation{.skin_hu = options.skin_hu, .bone_hu = options.bone_hu,
-                                   .headrest_gap_mm = options.headrest_gap_mm};
+  SegmentationOptions segmentation{
+      .skin_hu = options.skin_hu, .bone_hu = options.bone_hu, .headrest_gap_mm = options.headrest_gap_mm};
   const LabelVolume labels = segment_tissues(volume, segmentation);
   const double segmentation_seconds = segmentation_clock.seconds();
 
   std::error_code error;
   std::filesystem::create_directories(options.out, error);
   if (error) throw Error(ErrorCode::kWriteFailed, options.out.string(), error.message());
-  SurfaceOptions skin{.keep_largest_components = 1, .smoothing_iterations = options.smoothing_iterations,
+  SurfaceOptions skin{.keep_largest_components = 1,
+                      .smoothing_iterations = options.smoothing_iterations,
                       .target_triangles = options.triangles};
-  SurfaceOptions bone{.keep_largest_components = 0, .min_component_fraction = 0.001,
-                      .smoothing_iterations = options.smoothing_iterations, .target_triangles = options.triangles};
-  Json result = {
-      {"volume",
-       {{"size", {g.size.x(), g.size.y(), g.size.z()}},
-        {"spacing_mm", {g.spacing.x(), g.spacing.y(), g.spacing.z()}},
-        {"slices_read", assembly.input_slices},
-        {"slice_spacing", assembly.spacing == SliceSpacing::Uniform ? "uniform" : "resampled"},
-        {"seconds", load_seconds}}},
-      {"frame", "patient LPS; lengths mm, areas mm2, volumes mm3"},
-      {"segmentation_seconds", segmentation_seconds},
-      {"surfaces", Json::array()}};
-  result["surfaces"].push_back(make_surface("skin", volume, labels, {kSoftTissue, kTeeth}, options.skin_hu, skin, options));
+  SurfaceOptions bone{.keep_largest_components = 0,
+                      .min_component_fraction = 0.001,
+                      .smoothing_iterations = options.smoothing_iterations,
+                      .target_triangles = options.triangles};
+  Json result = {{"volume",
+                  {{"size", {g.size.x(), g.size.y(), g.size.z()}},
+                   {"spacing_mm", {g.spacing.x(), g.spacing.y(), g.spacing.z()}},
+                   {"slices_read", assembly.input_slices},
+                   {"slice_spacing", assembly.spacing == SliceSpacing::Uniform ? "uniform" : "resampled"},
+                   {"seconds", load_seconds}}},
+                 {"frame", "patient LPS; lengths mm, areas mm2, volumes mm3"},
+                 {"segmentation_seconds", segmentation_seconds},
+                 {"surfaces", Json::array()}};
+  result["surfaces"].push_back(
+      make_surface("skin", volume, labels, {kSoftTissue, kTeeth}, options.skin_hu, skin, options));
   result["surfaces"].push_back(make_surface("bone", volume, labels, {kBone, kTeeth}, options.bone_hu, bone, options));
   result["seconds"] = total.seconds();
-  if (ctx.global.json) std::cout << result.dump(2) << "\n";
-  else print_text(result);
+  if (ctx.global.json)
+    std::cout << result.dump(2) << "\n";
+  else
+    print_text(result);
 }
 
 }  // namespace
 
 void attach_surfaces(CLI::App& app, CommandContext& ctx) {
   auto options = std::make_shared<SurfacesOptions>();
-  app.add_option("inputs", options->inputs, "DICOM files or folders of ONE series")->required()->check(CLI::ExistingPath);
+  app.add_option("inputs", options->inputs, "DICOM files or folders of ONE series")
+      ->required()
+      ->check(CLI::ExistingPath);
   app.add_option("--out", options->out, "output folder (created if needed)")->required();
-  app.add_option("--skin-hu", options->skin_hu, "skin iso-value, HU")->capture_default_str()->check(CLI::Range(-1000.0, 200.0));
-  app.add_option("--bone-hu", options->bone_hu, "bone iso-value, HU")->capture_default_str()->check(CLI::Range(100.0, 1500.0));
+  app.add_option("--skin-hu", options->skin_hu, "skin iso-value, HU")
+      ->capture_default_str()
+      ->check(CLI::Range(-1000.0, 200.0));
+  app.add_option("--bone-hu", options->bone_hu, "bone iso-value, HU")
+      ->capture_default_str()
+      ->check(CLI::Range(100.0, 1500.0));
   app.add_option("--triangles", options->triangles, "target triangle count per surface (0: no decimation)")
-      ->capture_default_str()->check(CLI::Range(int64_t(0), int64_t(100000000)));
+      ->capture_default_str()
+      ->check(CLI::Range(int64_t(0), int64_t(100000000)));
   app.add_option("--smoothing", options->smoothing_iterations, "windowed-sinc smoothing iterations (0: none)")
-      ->capture_default_str()->check(CLI::Range(0, 500));
+      ->capture_default_str()
+      ->check(CLI::Range(0, 500));
   app.add_option("--headrest-gap", options->headrest_gap_mm,
                  "opening radius (mm) that detaches a head rest touching the skin (0: off)")
-      ->capture_default_str()->check(CLI::Range(0.0, 20.0));
-  app.add_option("--format", options->format, "mesh file format")->capture_default_str()
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 20.0));
+  app.add_option("--format", options->format, "mesh file format")
+      ->capture_default_str()
       ->check(CLI::IsMember({"stl", "ply", "obj", "vtp"}));
   app.callback([options, &ctx] { run_surfaces(*options, ctx); });
 }

@@ -51,15 +51,18 @@ void print_report(const Archive& archive, const VerifyReport& report, bool repai
     std::cout << "; " << report.within_grace << " left in place, younger than the grace period (--grace)";
   std::cout << (ok ? " - consistent\n" : " - INCONSISTENT\n");
   if (!repair && (!report.orphans.empty() || !report.temporaries.empty()))
-    std::cout << "`maxillo verify --repair` moves orphans and temporary files into the quarantine (nothing is deleted)\n";
+    std::cout
+        << "`maxillo verify --repair` moves orphans and temporary files into the quarantine (nothing is deleted)\n";
 }
 
 void run_verify(const VerifyArguments& args, CommandContext& ctx) {
   Archive archive = Archive::open(resolve_archive_dir(ctx.global));
   if (args.purge) {
     size_t purged = archive.purge_quarantine();
-    if (ctx.global.json) std::cout << json_text(Json{{"purged", purged}}) << "\n";
-    else std::cout << purged << " quarantined files deleted\n";
+    if (ctx.global.json)
+      std::cout << json_text(Json{{"purged", purged}}) << "\n";
+    else
+      std::cout << purged << " quarantined files deleted\n";
     return;
   }
   VerifyOptions options{args.repair ? RepairMode::Repair : RepairMode::ReportOnly, args.force,

@@ -38,11 +38,11 @@ struct CommandSpec {
 std::span<const CommandSpec> command_table();
 
 // Ranges shared by several commands' options.
-inline const CLI::Range kCoordinateMm(-1.0e4, 1.0e4);      // a position in the patient or model frame
-inline const CLI::Range kAdvancementMm(-60.0, 60.0);       // a bone move, as plan create limits it
-inline const CLI::Range kTetrahedra(5000, 2000000);        // a face model: fewer cannot resolve a face
-inline const CLI::Range kCellMm(1.0, 20.0);                // target tetrahedron size of a face model
-inline const CLI::Range kTriangles(1000, 5000000);         // a surface's decimation target
+inline const CLI::Range kCoordinateMm(-1.0e4, 1.0e4);  // a position in the patient or model frame
+inline const CLI::Range kAdvancementMm(-60.0, 60.0);   // a bone move, as plan create limits it
+inline const CLI::Range kTetrahedra(5000, 2000000);    // a face model: fewer cannot resolve a face
+inline const CLI::Range kCellMm(1.0, 20.0);            // target tetrahedron size of a face model
+inline const CLI::Range kTriangles(1000, 5000000);     // a surface's decimation target
 
 // The archive folder the global options and environment select.
 std::filesystem::path resolve_archive_dir(const GlobalOptions& global);

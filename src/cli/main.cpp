@@ -19,8 +19,10 @@ std::filesystem::path resolve_archive_dir(const GlobalOptions& global) {
 namespace {
 
 void configure_logging(const GlobalOptions& global) {
-  if (global.quiet) log::set_level(log::Level::Error);
-  else if (global.verbosity > 0) log::set_level(log::Level::Debug);
+  if (global.quiet)
+    log::set_level(log::Level::Error);
+  else if (global.verbosity > 0)
+    log::set_level(log::Level::Debug);
 }
 
 // CLI11 reads "nan", "inf" and "1e400" as doubles; no numeric option of maxillo means them.
@@ -36,7 +38,8 @@ void refuse_non_finite_numbers(CLI::App& app) {
       "", "");
   for (CLI::Option* option : app.get_options())
     if (option->get_type_name().find("FLOAT") != std::string::npos) option->check(finite);
-  for (CLI::App* subcommand : app.get_subcommands([](CLI::App*) { return true; })) refuse_non_finite_numbers(*subcommand);
+  for (CLI::App* subcommand : app.get_subcommands([](CLI::App*) { return true; }))
+    refuse_non_finite_numbers(*subcommand);
 }
 
 int run(int argc, char** argv) {

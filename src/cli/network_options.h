@@ -13,7 +13,8 @@ namespace maxillo::cli {
 inline void add_requestor_tls_options(CLI::App& app, net::TlsOptions& tls) {
   const auto turn_on = [&tls](const auto&) { tls.enabled = true; };
   app.add_flag("--tls", tls.enabled, "DICOM TLS (needs --tls-trust)");
-  app.add_option("--tls-trust", tls.trusted, "a certificate file, or a folder of them, that the peer's must be signed by")
+  app.add_option("--tls-trust", tls.trusted,
+                 "a certificate file, or a folder of them, that the peer's must be signed by")
       ->check(CLI::ExistingPath)
       ->each(turn_on);
   app.add_option("--tls-cert", tls.certificate, "our certificate (PEM), for peers that require one")

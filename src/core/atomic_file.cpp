@@ -42,8 +42,8 @@ std::vector<std::byte> read_file(const std::filesystem::path& path) {
   FileDescriptor file{::open(path.c_str(), O_RDONLY | O_CLOEXEC)};
   if (file.fd < 0) {
     int e = errno;
-    throw Error(e == EACCES || e == EPERM ? ErrorCode::kPermissionDenied : ErrorCode::kFileNotFound,
-                path.string(), std::strerror(e));
+    throw Error(e == EACCES || e == EPERM ? ErrorCode::kPermissionDenied : ErrorCode::kFileNotFound, path.string(),
+                std::strerror(e));
   }
   struct stat info {};
   if (::fstat(file.fd, &info) != 0 || S_ISDIR(info.st_mode))
@@ -64,13 +64,12 @@ std::vector<std::byte> read_file(const std::filesystem::path& path) {
 std::filesystem::path temporary_sibling(const std::filesystem::path& path) {
   static std::atomic<unsigned> counter{0};
   thread_local std::mt19937_64 random{std::random_device{}()};
-  auto name = "." + path.filename().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
-              std::to_string(counter++) + "-" + std::to_string(random() % 1000000);
+  auto name = "." + path.filename().string() + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) +
+              "-" + std::to_string(random() % 1000000);
   return path.parent_path() / name;
 }
 
-void write_file_atomically(const std::filesystem::path& path, std::span<const std::byte> bytes,
-                           Durability durability) {
+void write_file_atomically(const std::filesystem::path& path, std::span<const std::byte> bytes, Durability durability) {
   auto temporary = temporary_sibling(path);
   {
     FileDescriptor file{::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644)};

@@ -14,8 +14,10 @@ class KeyPathTracker : public nlohmann::json_sax<Json> {
   std::string path() const {
     std::string text;
     for (const auto& level : levels_) {
-      if (level.in_array) text += "[" + std::to_string(level.index) + "]";
-      else if (!level.key.empty()) text += (text.empty() ? "" : ".") + level.key;
+      if (level.in_array)
+        text += "[" + std::to_string(level.index) + "]";
+      else if (!level.key.empty())
+        text += (text.empty() ? "" : ".") + level.key;
     }
     return text;
   }

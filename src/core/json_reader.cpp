@@ -93,7 +93,8 @@ Eigen::Isometry3d JsonReader::required_rigid_transform(const std::string& key) {
   for (size_t i = 0; i < 4; ++i) {
     if (!rows[i].is_array() || rows[i].size() != 4) fail(name, "must be 4 rows of 4 numbers");
     for (size_t j = 0; j < 4; ++j) {
-      if (!rows[i][j].is_number() || !std::isfinite(rows[i][j].get<double>())) fail(name, "must be 4 rows of 4 numbers");
+      if (!rows[i][j].is_number() || !std::isfinite(rows[i][j].get<double>()))
+        fail(name, "must be 4 rows of 4 numbers");
       m(Eigen::Index(i), Eigen::Index(j)) = rows[i][j].get<double>();
     }
   }
@@ -115,9 +116,7 @@ int JsonReader::format_version(int newest) {
   return version;
 }
 
-JsonReader JsonReader::object(const std::string& key) {
-  return JsonReader(at(key), field(key), source_, code_, root_);
-}
+JsonReader JsonReader::object(const std::string& key) { return JsonReader(at(key), field(key), source_, code_, root_); }
 
 JsonReader JsonReader::element(const Json& array, const std::string& key, size_t index) const {
   return JsonReader(array.at(index), field(key) + "[" + std::to_string(index) + "]", source_, code_, root_);

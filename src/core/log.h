@@ -20,10 +20,22 @@ void emit(Level at, const Parts&... parts) {
   write(at, out.str());
 }
 
-template <typename... Parts> void error(const Parts&... p) { emit(Level::Error, p...); }
-template <typename... Parts> void warning(const Parts&... p) { emit(Level::Warning, p...); }
-template <typename... Parts> void info(const Parts&... p) { emit(Level::Info, p...); }
+template <typename... Parts>
+void error(const Parts&... p) {
+  emit(Level::Error, p...);
+}
+template <typename... Parts>
+void warning(const Parts&... p) {
+  emit(Level::Warning, p...);
+}
+template <typename... Parts>
+void info(const Parts&... p) {
+  emit(Level::Info, p...);
+}
 // The only level allowed to carry patient names or IDs.
-template <typename... Parts> void debug(const Parts&... p) { emit(Level::Debug, p...); }
+template <typename... Parts>
+void debug(const Parts&... p) {
+  emit(Level::Debug, p...);
+}
 
 }  // namespace maxillo::log

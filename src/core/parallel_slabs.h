@@ -11,8 +11,8 @@
 namespace maxillo {
 
 struct SlabOptions {
-  int max_threads = 0;     // <= 0: the hardware's cores (at most 8)
-  int min_slab_size = 8;   // fewer items than this per thread are not worth a thread
+  int max_threads = 0;    // <= 0: the hardware's cores (at most 8)
+  int min_slab_size = 8;  // fewer items than this per thread are not worth a thread
 };
 
 // Calls body(begin, end) on disjoint [begin, end) slabs covering [first, last), in parallel.

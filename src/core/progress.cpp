@@ -37,8 +37,8 @@ void Progress::draw(bool final_draw) {
   if (total_ > 0) {
     double fraction = std::min(1.0, static_cast<double>(done_) / total_);
     int filled = static_cast<int>(fraction * kWidth);
-    std::fprintf(stderr, "\r%s [%.*s%*s] %zu/%zu (%.0f/s)", label_.c_str(), filled,
-                 "##############################", kWidth - filled, "", done_, total_, rate);
+    std::fprintf(stderr, "\r%s [%.*s%*s] %zu/%zu (%.0f/s)", label_.c_str(), filled, "##############################",
+                 kWidth - filled, "", done_, total_, rate);
   } else {
     std::fprintf(stderr, "\r%s %zu (%.0f/s)", label_.c_str(), done_, rate);
   }

@@ -12,16 +12,14 @@
 namespace maxillo {
 
 struct VolumeGeometry {
-  Eigen::Vector3i size{0, 0, 0};                         // voxels along i, j, k
-  Eigen::Vector3d spacing{1, 1, 1};                      // mm between voxel centres
-  Eigen::Vector3d origin{0, 0, 0};                       // LPS position of voxel (0,0,0), mm
+  Eigen::Vector3i size{0, 0, 0};                            // voxels along i, j, k
+  Eigen::Vector3d spacing{1, 1, 1};                         // mm between voxel centres
+  Eigen::Vector3d origin{0, 0, 0};                          // LPS position of voxel (0,0,0), mm
   Eigen::Matrix3d direction = Eigen::Matrix3d::Identity();  // columns: i, j, k axes in LPS
 
   int64_t voxel_count() const { return int64_t(size.x()) * size.y() * size.z(); }
   int64_t index(int i, int j, int k) const { return i + int64_t(size.x()) * (j + int64_t(size.y()) * k); }
-  Eigen::Vector3d world(const Eigen::Vector3d& ijk) const {
-    return origin + direction * spacing.cwiseProduct(ijk);
-  }
+  Eigen::Vector3d world(const Eigen::Vector3d& ijk) const { return origin + direction * spacing.cwiseProduct(ijk); }
   // Continuous voxel coordinates of an LPS point (inverse of world()).
   Eigen::Vector3d continuous_index(const Eigen::Vector3d& lps) const {
     return (direction.transpose() * (lps - origin)).cwiseQuotient(spacing);

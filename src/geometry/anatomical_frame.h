@@ -24,7 +24,7 @@ namespace maxillo {
 enum class FrameSource { Frankfort, PatientAxes };
 
 struct AnatomicalFrame {
-  Eigen::Vector3d origin = Eigen::Vector3d::Zero();     // LPS mm
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();      // LPS mm
   Eigen::Vector3d anterior = -Eigen::Vector3d::UnitY();  // unit vectors, right-handed:
   Eigen::Vector3d superior = Eigen::Vector3d::UnitZ();   // anterior x left = superior
   Eigen::Vector3d left = Eigen::Vector3d::UnitX();

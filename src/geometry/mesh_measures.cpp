@@ -32,8 +32,8 @@ double surface_area(const TriangleMesh& mesh) {
 
 double signed_volume(const TriangleMesh& mesh) {
   // Relative to the centroid of the vertices, which keeps the sum well conditioned far from 0.
-  Eigen::Vector3d centre = mesh.vertex_count() ? Eigen::Vector3d(mesh.vertices.colwise().mean().transpose())
-                                               : Eigen::Vector3d::Zero();
+  Eigen::Vector3d centre =
+      mesh.vertex_count() ? Eigen::Vector3d(mesh.vertices.colwise().mean().transpose()) : Eigen::Vector3d::Zero();
   double volume = 0;
   for (Eigen::Index f = 0; f < mesh.face_count(); ++f) {
     Eigen::Vector3d a = corner(mesh, f, 0) - centre, b = corner(mesh, f, 1) - centre, c = corner(mesh, f, 2) - centre;
@@ -43,7 +43,10 @@ double signed_volume(const TriangleMesh& mesh) {
 }
 
 EdgeCounts count_edges(const TriangleMesh& mesh) {
-  struct Use { int count = 0; int forward = 0; };  // forward: traversed from smaller to larger index
+  struct Use {
+    int count = 0;
+    int forward = 0;
+  };  // forward: traversed from smaller to larger index
   std::unordered_map<uint64_t, Use> edges;
   edges.reserve(size_t(mesh.face_count()) * 2);
   for (Eigen::Index f = 0; f < mesh.face_count(); ++f)
@@ -55,9 +58,12 @@ EdgeCounts count_edges(const TriangleMesh& mesh) {
     }
   EdgeCounts counts;
   for (const auto& [key, use] : edges) {
-    if (use.count == 1) ++counts.boundary;
-    else if (use.count > 2) ++counts.non_manifold;
-    else if (use.forward != 1) ++counts.inconsistent;
+    if (use.count == 1)
+      ++counts.boundary;
+    else if (use.count > 2)
+      ++counts.non_manifold;
+    else if (use.forward != 1)
+      ++counts.inconsistent;
   }
   return counts;
 }

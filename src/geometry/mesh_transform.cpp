@@ -34,7 +34,7 @@ TriangleMesh cylinder_mesh(const Eigen::Vector3d& a, const Eigen::Vector3d& b, d
     // Counter-clockwise seen from outside: the ring runs u -> w, i.e. anticlockwise about the axis.
     mesh.faces.row(4 * s + 0) << s, next, sides + next;
     mesh.faces.row(4 * s + 1) << s, sides + next, sides + s;
-    mesh.faces.row(4 * s + 2) << cap_a, next, s;                 // cap at a faces -axis
+    mesh.faces.row(4 * s + 2) << cap_a, next, s;                  // cap at a faces -axis
     mesh.faces.row(4 * s + 3) << cap_b, sides + s, sides + next;  // cap at b faces +axis
   }
   return mesh;

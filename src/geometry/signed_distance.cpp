@@ -47,20 +47,13 @@ DistanceField::DistanceField(const TriangleMesh& mesh) : tree_(mesh) {
 Vector3d DistanceField::pseudo_normal(int face, TriangleFeature feature) const {
   const auto& f = tree_.mesh().faces;
   switch (feature) {
-    case TriangleFeature::Face:
-      return face_normals_[size_t(face)];
-    case TriangleFeature::EdgeAB:
-      return edge_normals_[size_t(3 * face)];
-    case TriangleFeature::EdgeBC:
-      return edge_normals_[size_t(3 * face + 1)];
-    case TriangleFeature::EdgeCA:
-      return edge_normals_[size_t(3 * face + 2)];
-    case TriangleFeature::VertexA:
-      return vertex_normals_[size_t(f(face, 0))];
-    case TriangleFeature::VertexB:
-      return vertex_normals_[size_t(f(face, 1))];
-    case TriangleFeature::VertexC:
-      return vertex_normals_[size_t(f(face, 2))];
+    case TriangleFeature::Face: return face_normals_[size_t(face)];
+    case TriangleFeature::EdgeAB: return edge_normals_[size_t(3 * face)];
+    case TriangleFeature::EdgeBC: return edge_normals_[size_t(3 * face + 1)];
+    case TriangleFeature::EdgeCA: return edge_normals_[size_t(3 * face + 2)];
+    case TriangleFeature::VertexA: return vertex_normals_[size_t(f(face, 0))];
+    case TriangleFeature::VertexB: return vertex_normals_[size_t(f(face, 1))];
+    case TriangleFeature::VertexC: return vertex_normals_[size_t(f(face, 2))];
   }
   return face_normals_[size_t(face)];
 }

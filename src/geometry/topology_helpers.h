@@ -20,8 +20,6 @@ struct UnionFind {
 };
 
 // The undirected edge {a, b} as one integer.
-inline uint64_t edge_key(int a, int b) {
-  return (uint64_t(uint32_t(std::min(a, b))) << 32) | uint32_t(std::max(a, b));
-}
+inline uint64_t edge_key(int a, int b) { return (uint64_t(uint32_t(std::min(a, b))) << 32) | uint32_t(std::max(a, b)); }
 
 }  // namespace maxillo::topology

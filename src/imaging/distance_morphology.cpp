@@ -54,9 +54,12 @@ void transform_axis(std::vector<float>& d, const MaskGrid& g, int axis) {
   for (size_t l = 0; l < lines; ++l) {
     // The first voxel of line l: skip the axis' own index.
     size_t first = 0;
-    if (axis == 0) first = l * n;
-    else if (axis == 1) first = (l % g.size[0]) + (l / g.size[0]) * g.size[0] * g.size[1];
-    else first = l;
+    if (axis == 0)
+      first = l * n;
+    else if (axis == 1)
+      first = (l % g.size[0]) + (l / g.size[0]) * g.size[0] * g.size[1];
+    else
+      first = l;
     for (size_t q = 0; q < n; ++q) line[q] = d[first + q * stride];
     lower_envelope(line, g.spacing[size_t(axis)], v, z, out);
     for (size_t q = 0; q < n; ++q) d[first + q * stride] = line[q];
@@ -114,7 +117,8 @@ Mask coarsened(const Mask& mask, const MaskGrid& grid, const std::array<size_t, 
   return out;
 }
 
-Mask refined(const Mask& coarse_mask, const MaskGrid& coarse, const std::array<size_t, 3>& factor, const MaskGrid& fine) {
+Mask refined(const Mask& coarse_mask, const MaskGrid& coarse, const std::array<size_t, 3>& factor,
+             const MaskGrid& fine) {
   Mask out(fine.voxel_count());
   for (size_t k = 0; k < fine.size[2]; ++k)
     for (size_t j = 0; j < fine.size[1]; ++j) {

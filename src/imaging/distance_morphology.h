@@ -25,6 +25,7 @@ Mask dilated(const Mask& mask, const MaskGrid& grid, double radius_mm);
 // block is set; the grid of the result is written to `coarse`.
 Mask coarsened(const Mask& mask, const MaskGrid& grid, const std::array<size_t, 3>& factor, MaskGrid& coarse);
 // Each coarse voxel back onto the fine voxels of its block (`fine` is the grid coarsened from).
-Mask refined(const Mask& coarse_mask, const MaskGrid& coarse, const std::array<size_t, 3>& factor, const MaskGrid& fine);
+Mask refined(const Mask& coarse_mask, const MaskGrid& coarse, const std::array<size_t, 3>& factor,
+             const MaskGrid& fine);
 
 }  // namespace maxillo

@@ -52,10 +52,9 @@ class CubicInterpolator : public itk::InterpolateImageFunction<MovingImage, doub
   using Superclass = itk::InterpolateImageFunction<MovingImage, double>;
   using Pointer = itk::SmartPointer<Self>;
   using ConstPointer = itk::SmartPointer<const Self>;
-  itkNewMacro(Self)
-  itkTypeMacro(CubicInterpolator, InterpolateImageFunction)
+  itkNewMacro(Self) itkTypeMacro(CubicInterpolator, InterpolateImageFunction)
 
-  void SetRange(double low, double high) {
+      void SetRange(double low, double high) {
     low_ = low;
     high_ = high;
   }
@@ -92,7 +91,8 @@ class CubicInterpolator : public itk::InterpolateImageFunction<MovingImage, doub
     evaluate(x, value, &by_index);
     Gradient gradient;
     for (int r = 0; r < 3; ++r)
-      gradient[r] = index_to_lps_(r, 0) * by_index[0] + index_to_lps_(r, 1) * by_index[1] + index_to_lps_(r, 2) * by_index[2];
+      gradient[r] =
+          index_to_lps_(r, 0) * by_index[0] + index_to_lps_(r, 1) * by_index[1] + index_to_lps_(r, 2) * by_index[2];
     return gradient;
   }
 
@@ -152,10 +152,11 @@ class CubicGradient : public itk::ImageFunction<MovingImage, Gradient, double> {
   using Self = CubicGradient;
   using Superclass = itk::ImageFunction<MovingImage, Gradient, double>;
   using Pointer = itk::SmartPointer<Self>;
-  itkNewMacro(Self)
-  itkTypeMacro(CubicGradient, ImageFunction)
+  itkNewMacro(Self) itkTypeMacro(CubicGradient, ImageFunction)
 
-  void SetInterpolator(const CubicInterpolator* interpolator) { interpolator_ = interpolator; }
+      void SetInterpolator(const CubicInterpolator* interpolator) {
+    interpolator_ = interpolator;
+  }
 
   OutputType Evaluate(const PointType& point) const override { return interpolator_->GradientAt(point); }
   OutputType EvaluateAtIndex(const IndexType& index) const override {

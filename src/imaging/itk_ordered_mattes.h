@@ -35,11 +35,10 @@ class OrderedMattesMetric : public itk::MattesMutualInformationImageToImageMetri
   using Superclass = itk::MattesMutualInformationImageToImageMetricv4<TFixedImage, TMovingImage>;
   using Pointer = itk::SmartPointer<Self>;
   using JointPDFDerivativesType = typename Superclass::JointPDFDerivativesType;
-  itkNewMacro(Self)
-  itkTypeMacro(OrderedMattesMetric, MattesMutualInformationImageToImageMetricv4)
+  itkNewMacro(Self) itkTypeMacro(OrderedMattesMetric, MattesMutualInformationImageToImageMetricv4)
 
-  // Samples are split into this many contiguous ranges whatever the number of threads.
-  static constexpr itk::ThreadIdType kWorkUnits = 16;
+      // Samples are split into this many contiguous ranges whatever the number of threads.
+      static constexpr itk::ThreadIdType kWorkUnits = 16;
 
   void SetIntensityRange(double low, double high) {
     low_ = low;
@@ -78,7 +77,7 @@ class OrderedMattesMetric : public itk::MattesMutualInformationImageToImageMetri
       unit_sums_[unit]->FillBuffer(0);
       // The buffer length ITK's threader chose (BeforeThreadedExecution).
       this->m_ThreaderDerivativeManager[unit].Initialize(std::max<size_t>(500, bins * bins / units), parameters,
-                                                          &unit_locks_[unit], unit_sums_[unit]);
+                                                         &unit_locks_[unit], unit_sums_[unit]);
     }
   }
 
@@ -108,19 +107,18 @@ class OrderedMattesMetric : public itk::MattesMutualInformationImageToImageMetri
 template <typename TPartitioner, typename TMetric>
 class OrderedMattesThreader
     : public itk::MattesMutualInformationImageToImageMetricv4GetValueAndDerivativeThreader<
-          TPartitioner, typename TMetric::Superclass::Superclass,
-          typename TMetric::Superclass> {
+          TPartitioner, typename TMetric::Superclass::Superclass, typename TMetric::Superclass> {
  public:
   using Self = OrderedMattesThreader;
   using Superclass = itk::MattesMutualInformationImageToImageMetricv4GetValueAndDerivativeThreader<
-      TPartitioner, typename TMetric::Superclass::Superclass,
-      typename TMetric::Superclass>;
+      TPartitioner, typename TMetric::Superclass::Superclass, typename TMetric::Superclass>;
   using Pointer = itk::SmartPointer<Self>;
   itkNewMacro(Self)
-  itkTypeMacro(OrderedMattesThreader, MattesMutualInformationImageToImageMetricv4GetValueAndDerivativeThreader)
+      itkTypeMacro(OrderedMattesThreader, MattesMutualInformationImageToImageMetricv4GetValueAndDerivativeThreader)
 
- protected:
-  OrderedMattesThreader() { this->SetNumberOfWorkUnits(TMetric::kWorkUnits); }
+          protected : OrderedMattesThreader() {
+    this->SetNumberOfWorkUnits(TMetric::kWorkUnits);
+  }
 
   void BeforeThreadedExecution() override {
     Superclass::BeforeThreadedExecution();
@@ -138,8 +136,10 @@ class OrderedMattesThreader
 
 template <typename TFixedImage, typename TMovingImage>
 OrderedMattesMetric<TFixedImage, TMovingImage>::OrderedMattesMetric() {
-  this->m_DenseGetValueAndDerivativeThreader = OrderedMattesThreader<itk::ThreadedImageRegionPartitioner<3>, Self>::New();
-  this->m_SparseGetValueAndDerivativeThreader = OrderedMattesThreader<itk::ThreadedIndexedContainerPartitioner, Self>::New();
+  this->m_DenseGetValueAndDerivativeThreader =
+      OrderedMattesThreader<itk::ThreadedImageRegionPartitioner<3>, Self>::New();
+  this->m_SparseGetValueAndDerivativeThreader =
+      OrderedMattesThreader<itk::ThreadedIndexedContainerPartitioner, Self>::New();
 }
 
 }  // namespace maxillo::itk_registration

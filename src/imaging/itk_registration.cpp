@@ -108,8 +108,7 @@ class IterationCounter : public itk::Command {
  public:
   using Self = IterationCounter;
   using Pointer = itk::SmartPointer<Self>;
-  itkNewMacro(Self)
-  int iterations = 0;
+  itkNewMacro(Self) int iterations = 0;
   void Execute(itk::Object*, const itk::EventObject&) override { ++iterations; }
   void Execute(const itk::Object*, const itk::EventObject&) override { ++iterations; }
 };
@@ -261,8 +260,8 @@ LevelOutcome register_shrunk_level(FixedImage* fixed, MovingImage* moving, Cubic
   } catch (const itk::ExceptionObject& e) {
     throw Error(ErrorCode::kProcessing, "registration", std::string("ITK registration failed: ") + e.GetDescription());
   }
-  log::debug("registration level with ", spacing[0], " x ", spacing[1], " x ", spacing[2], " mm voxels: ",
-             counter->iterations, " iterations, metric ", optimizer->GetValue(), "; ",
+  log::debug("registration level with ", spacing[0], " x ", spacing[1], " x ", spacing[2],
+             " mm voxels: ", counter->iterations, " iterations, metric ", optimizer->GetValue(), "; ",
              optimizer->GetStopConditionDescription());
   return {counter->iterations, optimizer->GetValue(), true};
 }
@@ -365,8 +364,8 @@ Outcome register_rigid(const Image& fixed, const Image& moving, const Settings& 
         register_shrunk_level(fixed_pyramid[size_t(level)], moving_level, interpolator, inside, transform, settings)
             .iterations;
   }
-  const LevelOutcome finest =
-      register_full_resolution(fixed_pyramid.front(), moving_pyramid.front(), settings.samples.front(), transform, settings);
+  const LevelOutcome finest = register_full_resolution(fixed_pyramid.front(), moving_pyramid.front(),
+                                                       settings.samples.front(), transform, settings);
   outcome.iterations += finest.iterations;
   outcome.metric = finest.metric;
   outcome.converged = finest.converged;

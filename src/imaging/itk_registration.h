@@ -30,22 +30,22 @@ struct RigidMap {
 using Samples = std::vector<std::array<double, 3>>;  // LPS mm, in the order the metric sums them
 
 struct Settings {
-  std::vector<Samples> samples;     // per pyramid level, [0] = full resolution; their number = the levels
+  std::vector<Samples> samples;  // per pyramid level, [0] = full resolution; their number = the levels
   int histogram_bins = 32;
   double low = -1000, high = 2000;  // both CTs clamped to [low, high], the histograms' range
   int max_iterations_per_level = 200;
-  double fine_step_mm = 1e-4;       // full resolution: stop when `window` steps in a row each moved the
-                                    // fixed domain's corners by less than this
-  double coarse_convergence = 1e-3; // shrunk levels (they only need to get close): stop when the metric's
-  int window = 3;                   // normalised slope over the last `window` iterations falls below this
-  int threads = 0;  // 0 = ITK's default; the answer does not depend on it
-  RigidMap initial;                 // fixed -> moving
+  double fine_step_mm = 1e-4;        // full resolution: stop when `window` steps in a row each moved the
+                                     // fixed domain's corners by less than this
+  double coarse_convergence = 1e-3;  // shrunk levels (they only need to get close): stop when the metric's
+  int window = 3;                    // normalised slope over the last `window` iterations falls below this
+  int threads = 0;                   // 0 = ITK's default; the answer does not depend on it
+  RigidMap initial;                  // fixed -> moving
 };
 
 struct Outcome {
   RigidMap fixed_to_moving;
-  double metric = 0;  // Mattes mutual information, negated (lower is better)
-  int iterations = 0;  // over all levels
+  double metric = 0;      // Mattes mutual information, negated (lower is better)
+  int iterations = 0;     // over all levels
   bool converged = true;  // false: the finest level stopped at max_iterations_per_level
 };
 

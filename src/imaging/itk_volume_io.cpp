@@ -19,7 +19,8 @@ using FloatImage = itk::Image<float, 3>;
 
 itk::ImageIOBase::Pointer image_io_for(const std::string& path) {
   std::string extension = std::filesystem::path(path).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   if (extension == ".mhd" || extension == ".mha") return itk::MetaImageIO::New().GetPointer();
   if (extension == ".nrrd" || extension == ".nhdr") return itk::NrrdImageIO::New().GetPointer();
   throw Error(ErrorCode::kUnsupportedSyntax, path,

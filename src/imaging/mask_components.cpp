@@ -96,13 +96,15 @@ Mask paint(const Runs& r, const Components& c, const MaskGrid& grid, Keep&& keep
   const size_t nx = grid.size[0];
   for (size_t row = 0; row + 1 < r.row_start.size(); ++row)
     for (size_t a = r.row_start[row]; a < r.row_start[row + 1]; ++a)
-      if (keep(c.root[a])) std::fill(out.begin() + long(row * nx + r.runs[a].begin), out.begin() + long(row * nx + r.runs[a].end), 1);
+      if (keep(c.root[a]))
+        std::fill(out.begin() + long(row * nx + r.runs[a].begin), out.begin() + long(row * nx + r.runs[a].end), 1);
   return out;
 }
 
 bool touches_border(const Run& run, size_t row, const MaskGrid& grid) {
   const size_t j = row % grid.size[1], k = row / grid.size[1];
-  return run.begin == 0 || run.end == grid.size[0] || j == 0 || j + 1 == grid.size[1] || k == 0 || k + 1 == grid.size[2];
+  return run.begin == 0 || run.end == grid.size[0] || j == 0 || j + 1 == grid.size[1] || k == 0 ||
+         k + 1 == grid.size[2];
 }
 
 }  // namespace

@@ -159,7 +159,8 @@ std::pair<double, double> tissue_z_extent(const Volume& volume) {
         z_high = std::max(z_high, z);
       }
   }
-  if (z_low > z_high) throw Error(ErrorCode::kBadValue, "fixed CT", "no tissue (HU >= -400) to place the registration box");
+  if (z_low > z_high)
+    throw Error(ErrorCode::kBadValue, "fixed CT", "no tissue (HU >= -400) to place the registration box");
   return {z_low, z_high};
 }
 
@@ -197,12 +198,14 @@ RegistrationBox cranial_registration_box(const Volume& fixed, const LandmarkSet*
     box.max.z() = std::min(box.max.z(), z_high);
   }
   if (box.min.z() >= box.max.z())
-    throw Error(ErrorCode::kBadValue, "registration box",
-                "orbitale (z = " + std::to_string(orbit ? orbit->z() : 0.0) + " mm) is at or above the top of the fixed CT");
+    throw Error(
+        ErrorCode::kBadValue, "registration box",
+        "orbitale (z = " + std::to_string(orbit ? orbit->z() : 0.0) + " mm) is at or above the top of the fixed CT");
   return box;
 }
 
-RigidRegistrationResult register_rigid(const Volume& fixed, const Volume& moving, const RigidRegistrationOptions& options) {
+RigidRegistrationResult register_rigid(const Volume& fixed, const Volume& moving,
+                                       const RigidRegistrationOptions& options) {
   const auto start_time = std::chrono::steady_clock::now();
   check_volume(fixed, "fixed CT");
   check_volume(moving, "moving CT");
@@ -225,12 +228,12 @@ RigidRegistrationResult register_rigid(const Volume& fixed, const Volume& moving
   itk_registration::Settings settings;
   // Level l has voxels 2^l times the CT's; the same seed gives each level its own pattern.
   for (int level = 0; level < std::max(1, options.levels); ++level)
-    settings.samples.push_back(metric_samples(
-        fixed.geometry, mask,
-        {.fraction = options.sampling_fraction,
-         .level_factor = 1 << level,
-         .pattern = options.regular_sampling ? SamplePattern::kJitteredGrid : SamplePattern::kRandom,
-         .seed = options.seed}));
+    settings.samples.push_back(
+        metric_samples(fixed.geometry, mask,
+                       {.fraction = options.sampling_fraction,
+                        .level_factor = 1 << level,
+                        .pattern = options.regular_sampling ? SamplePattern::kJitteredGrid : SamplePattern::kRandom,
+                        .seed = options.seed}));
   settings.histogram_bins = options.histogram_bins;
   settings.low = options.intensity_low;
   settings.high = options.intensity_high;

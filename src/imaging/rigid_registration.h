@@ -62,7 +62,7 @@ struct RigidRegistrationOptions {
 
 struct RigidRegistrationResult {
   Eigen::Isometry3d moving_to_fixed = Eigen::Isometry3d::Identity();
-  double metric = 0;  // final Mattes mutual information, negated as ITK reports it (lower = better)
+  double metric = 0;   // final Mattes mutual information, negated as ITK reports it (lower = better)
   int iterations = 0;  // optimiser iterations over all levels
   double seconds = 0;  // wall time of register_rigid
 };

@@ -83,8 +83,10 @@ LabelVolume segment_tissues(const Volume& volume, const SegmentationOptions& opt
   LabelVolume labels{volume.geometry, std::vector<uint8_t>(volume.hu.size(), kBackground)};
   for (size_t n = 0; n < labels.labels.size(); ++n) {
     if (!filled[n]) continue;
-    if (bone[n]) labels.labels[n] = volume.hu[n] >= options.teeth_hu ? kTeeth : kBone;
-    else labels.labels[n] = body[n] ? kSoftTissue : kEnclosedAir;
+    if (bone[n])
+      labels.labels[n] = volume.hu[n] >= options.teeth_hu ? kTeeth : kBone;
+    else
+      labels.labels[n] = body[n] ? kSoftTissue : kEnclosedAir;
   }
   return labels;
 }

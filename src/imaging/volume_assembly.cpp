@@ -34,8 +34,8 @@ void check_same_frame(const std::vector<DicomSlice>& slices) {
   const DicomSlice& first = slices.front();
   for (const DicomSlice& s : slices) {
     if (s.series_instance_uid != first.series_instance_uid)
-      refuse(s, "belongs to series " + s.series_instance_uid + ", not " + first.series_instance_uid +
-                    " (of " + first.path.filename().string() + ")");
+      refuse(s, "belongs to series " + s.series_instance_uid + ", not " + first.series_instance_uid + " (of " +
+                    first.path.filename().string() + ")");
     if ((s.row_direction - first.row_direction).cwiseAbs().maxCoeff() > kOrientationTolerance ||
         (s.column_direction - first.column_direction).cwiseAbs().maxCoeff() > kOrientationTolerance)
       refuse(s, "image orientation differs from " + first.path.filename().string() + " (mixed orientations)");
@@ -60,7 +60,8 @@ std::vector<double> checked_gaps(const std::vector<DicomSlice>& slices, const st
   for (size_t n = 1; n < slices.size(); ++n) gaps.push_back(along[n] - along[n - 1]);
   const double typical = median(gaps);
   for (size_t n = 0; n < gaps.size(); ++n) {
-    const std::string neighbours = slices[n].path.filename().string() + " and " + slices[n + 1].path.filename().string();
+    const std::string neighbours =
+        slices[n].path.filename().string() + " and " + slices[n + 1].path.filename().string();
     if (gaps[n] <= kDuplicateFraction * typical)
       refuse(slices[n + 1], "same position as " + slices[n].path.filename().string() + " (duplicate slice, " +
                                 mm(gaps[n]) + " apart)");
@@ -132,9 +133,8 @@ Volume assemble_volume(std::vector<DicomSlice> slices, AssemblyReport* report) {
                 "a volume needs at least 3 slices, the series has " + std::to_string(slices.size()));
   check_same_frame(slices);
   const Eigen::Vector3d normal = slices.front().normal().normalized();
-  std::sort(slices.begin(), slices.end(), [&](const DicomSlice& a, const DicomSlice& b) {
-    return a.position.dot(normal) < b.position.dot(normal);
-  });
+  std::sort(slices.begin(), slices.end(),
+            [&](const DicomSlice& a, const DicomSlice& b) { return a.position.dot(normal) < b.position.dot(normal); });
   std::vector<double> along;
   for (const DicomSlice& s : slices) along.push_back(s.position.dot(normal));
   const std::vector<double> gaps = checked_gaps(slices, along);

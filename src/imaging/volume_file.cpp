@@ -11,7 +11,8 @@ namespace maxillo {
 
 Volume read_volume_file(const std::filesystem::path& path, const VolumeFileOptions& options) {
   std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error)) throw Error(ErrorCode::kFileNotFound, path.string(), "no such file");
+  if (!std::filesystem::is_regular_file(path, error))
+    throw Error(ErrorCode::kFileNotFound, path.string(), "no such file");
   itk_filters::RawVolume raw = itk_filters::read_scalar_volume(path.string());
   Volume volume;
   VolumeGeometry& g = volume.geometry;

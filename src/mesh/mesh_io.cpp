@@ -114,7 +114,8 @@ TriangleMesh read_with(TriangleMesh (*parse)(std::span<const std::byte>, const s
 
 MeshFormat mesh_format_for(const std::filesystem::path& path) {
   std::string extension = path.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   if (extension == ".stl") return MeshFormat::Stl;
   if (extension == ".ply") return MeshFormat::Ply;
   if (extension == ".obj") return MeshFormat::Obj;
@@ -161,7 +162,8 @@ void write_mesh(const TriangleMesh& mesh, const std::filesystem::path& path, con
 TriangleMesh read_mesh(const std::filesystem::path& path) {
   const MeshFormat format = mesh_format_for(path);
   std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error)) throw Error(ErrorCode::kFileNotFound, path.string(), "no such file");
+  if (!std::filesystem::is_regular_file(path, error))
+    throw Error(ErrorCode::kFileNotFound, path.string(), "no such file");
   switch (format) {
     case MeshFormat::Stl: return read_with(parse_stl, path);
     case MeshFormat::Ply: return read_with(parse_ply, path);

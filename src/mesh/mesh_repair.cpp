@@ -97,10 +97,16 @@ int64_t close_small_holes(TriangleMesh& mesh, int max_edges) {
     for (int v = start;;) {
       visited[v] = true;
       auto it = next.find(v);
-      if (it == next.end() || it->second.size() != 1) { simple = false; break; }
+      if (it == next.end() || it->second.size() != 1) {
+        simple = false;
+        break;
+      }
       v = it->second.front();
       if (v == start) break;
-      if (visited[v] || int(loop.size()) >= max_edges) { simple = false; break; }
+      if (visited[v] || int(loop.size()) >= max_edges) {
+        simple = false;
+        break;
+      }
       loop.push_back(v);
     }
     if (!simple || loop.size() < 3) continue;

@@ -18,11 +18,11 @@ enum class Format { Ascii, BinaryLittle, BinaryBig };
 
 struct Property {
   std::string name;
-  int size = 0;            // bytes of the value (binary), or of each list item
-  bool is_float = false;   // float32/float64 rather than an integer type
+  int size = 0;           // bytes of the value (binary), or of each list item
+  bool is_float = false;  // float32/float64 rather than an integer type
   bool is_signed = false;
   bool is_list = false;
-  int count_size = 0;      // lists: bytes of the item count (an integer type) ...
+  int count_size = 0;         // lists: bytes of the item count (an integer type) ...
   bool count_signed = false;  // ... and whether it is signed
 };
 
@@ -43,10 +43,10 @@ std::optional<Property> scalar_type(std::string_view name) {
     int size;
     bool is_float, is_signed;
   };
-  static constexpr Known kTypes[] = {{"char", "int8", 1, false, true},     {"uchar", "uint8", 1, false, false},
-                                     {"short", "int16", 2, false, true},   {"ushort", "uint16", 2, false, false},
-                                     {"int", "int32", 4, false, true},     {"uint", "uint32", 4, false, false},
-                                     {"float", "float32", 4, true, true},  {"double", "float64", 8, true, true}};
+  static constexpr Known kTypes[] = {{"char", "int8", 1, false, true},    {"uchar", "uint8", 1, false, false},
+                                     {"short", "int16", 2, false, true},  {"ushort", "uint16", 2, false, false},
+                                     {"int", "int32", 4, false, true},    {"uint", "uint32", 4, false, false},
+                                     {"float", "float32", 4, true, true}, {"double", "float64", 8, true, true}};
   for (const auto& type : kTypes)
     if (name == type.a || name == type.b) {
       Property p;
@@ -113,10 +113,14 @@ Header parse_header(std::string_view text, const std::string& source) {
     if (w[0] == "end_header") break;
     if (w[0] == "format") {
       if (w.size() != 3 || w[2] != "1.0") refuse(source, "unsupported format line");
-      if (w[1] == "ascii") header.format = Format::Ascii;
-      else if (w[1] == "binary_little_endian") header.format = Format::BinaryLittle;
-      else if (w[1] == "binary_big_endian") header.format = Format::BinaryBig;
-      else refuse(source, "unknown format \"" + std::string(w[1]) + "\"");
+      if (w[1] == "ascii")
+        header.format = Format::Ascii;
+      else if (w[1] == "binary_little_endian")
+        header.format = Format::BinaryLittle;
+      else if (w[1] == "binary_big_endian")
+        header.format = Format::BinaryBig;
+      else
+        refuse(source, "unknown format \"" + std::string(w[1]) + "\"");
       format_seen = true;
     } else if (w[0] == "element") {
       Element element;
@@ -195,7 +199,8 @@ class BodyReader {
 // The fewest bytes one instance of the element can take: to refuse impossible counts early.
 size_t smallest_record(const Element& element, Format format) {
   size_t bytes = 0;
-  for (const auto& p : element.properties) bytes += format == Format::Ascii ? 2 : size_t(p.is_list ? p.count_size : p.size);
+  for (const auto& p : element.properties)
+    bytes += format == Format::Ascii ? 2 : size_t(p.is_list ? p.count_size : p.size);
   return std::max<size_t>(bytes, 1);
 }
 
@@ -208,7 +213,8 @@ int index_of(const Element& element, std::string_view name) {
 }  // namespace
 
 TriangleMesh parse_ply(std::span<const std::byte> bytes, const std::string& source) {
-  const Header header = parse_header(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), source);
+  const Header header =
+      parse_header(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), source);
   BodyReader body(bytes.subspan(header.body), header.format, source);
   std::vector<double> coordinates;
   std::vector<std::array<int64_t, 3>> triangles;
@@ -221,7 +227,8 @@ TriangleMesh parse_ply(std::span<const std::byte> bytes, const std::string& sour
     int list = index_of(element, "vertex_indices");
     if (list < 0) list = index_of(element, "vertex_index");
     if (is_vertex && (x < 0 || y < 0 || z < 0)) refuse(source, "vertices without x, y and z");
-    if (is_face && (list < 0 || !element.properties[size_t(list)].is_list)) refuse(source, "faces without vertex_indices");
+    if (is_face && (list < 0 || !element.properties[size_t(list)].is_list))
+      refuse(source, "faces without vertex_indices");
     vertices_seen |= is_vertex;
     faces_seen |= is_face;
     if (is_vertex) coordinates.reserve(size_t(element.count) * 3);
@@ -255,12 +262,14 @@ TriangleMesh parse_ply(std::span<const std::byte> bytes, const std::string& sour
   TriangleMesh mesh;
   const auto vertex_count = Eigen::Index(coordinates.size() / 3);
   mesh.vertices = Eigen::Map<const VertexMatrix>(coordinates.data(), vertex_count, 3);
-  if (!mesh.vertices.allFinite()) throw Error(ErrorCode::kBadValue, source, "vertex coordinates that are not finite numbers");
+  if (!mesh.vertices.allFinite())
+    throw Error(ErrorCode::kBadValue, source, "vertex coordinates that are not finite numbers");
   mesh.faces.resize(Eigen::Index(triangles.size()), 3);
   for (size_t f = 0; f < triangles.size(); ++f)
     for (int c = 0; c < 3; ++c) {
       const int64_t index = triangles[f][size_t(c)];
-      if (index < 0 || index >= vertex_count) refuse(source, "a face names vertex " + std::to_string(index) + " of " + std::to_string(vertex_count));
+      if (index < 0 || index >= vertex_count)
+        refuse(source, "a face names vertex " + std::to_string(index) + " of " + std::to_string(vertex_count));
       mesh.faces(Eigen::Index(f), c) = int(index);
     }
   return mesh;

@@ -25,8 +25,8 @@
 namespace maxillo {
 
 struct QuadricDecimationOptions {
-  int64_t target_triangles = 0;     // stop at or below this many faces
-  double max_normal_turn_deg = 60;  // a collapse may turn no remaining face more than this
+  int64_t target_triangles = 0;       // stop at or below this many faces
+  double max_normal_turn_deg = 60;    // a collapse may turn no remaining face more than this
   double min_triangle_quality = 0.1;  // 4 sqrt(3) area / (sum of squared edges): 1 equilateral, 0 degenerate
 };
 

@@ -52,7 +52,8 @@ class CornerMerger {
 
 Corner finite_corner(const Corner& corner, const std::string& source) {
   for (float value : corner)
-    if (!std::isfinite(value)) throw Error(ErrorCode::kBadValue, source, "vertex coordinates that are not finite numbers");
+    if (!std::isfinite(value))
+      throw Error(ErrorCode::kBadValue, source, "vertex coordinates that are not finite numbers");
   return corner;
 }
 
@@ -106,11 +107,12 @@ class Words {
 
 TriangleMesh parse_ascii(std::string_view text, const std::string& source) {
   Words words(text);
-  words.next();  // "solid"
+  words.next();       // "solid"
   words.skip_line();  // the solid's name, any text
   auto expect = [&](std::string_view word) {
     const auto got = words.next();
-    if (got != word) refuse(source, "expected \"" + std::string(word) + "\", found \"" + std::string(got.substr(0, 40)) + "\"");
+    if (got != word)
+      refuse(source, "expected \"" + std::string(word) + "\", found \"" + std::string(got.substr(0, 40)) + "\"");
   };
   auto number = [&] {
     const auto word = words.next();
@@ -124,7 +126,9 @@ TriangleMesh parse_ascii(std::string_view text, const std::string& source) {
   for (;;) {
     const auto word = words.next();
     if (word == "endsolid") break;
-    if (word != "facet") refuse(source, word.empty() ? "no endsolid" : "expected \"facet\", found \"" + std::string(word.substr(0, 40)) + "\"");
+    if (word != "facet")
+      refuse(source,
+             word.empty() ? "no endsolid" : "expected \"facet\", found \"" + std::string(word.substr(0, 40)) + "\"");
     expect("normal");
     for (int a = 0; a < 3; ++a) number();
     expect("outer");

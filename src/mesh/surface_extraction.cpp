@@ -104,8 +104,10 @@ vtkSmartPointer<vtkImageData> padded_image(const VolumeGeometry& g, Value outsid
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i) {
         bool inside = i > 0 && j > 0 && k > 0 && i < nx - 1 && j < ny - 1 && k < nz - 1;
-        if (!inside) *out++ = outside;
-        else *out++ = native ? value_at(g.index(i - 1, j - 1, k - 1)) : block_mean(i - 1, j - 1, k - 1);
+        if (!inside)
+          *out++ = outside;
+        else
+          *out++ = native ? value_at(g.index(i - 1, j - 1, k - 1)) : block_mean(i - 1, j - 1, k - 1);
       }
   image->GetPointData()->SetScalars(values);
   return image;
@@ -161,7 +163,8 @@ TriangleMesh finish_surface(vtkImageData* image, double iso, const VolumeGeometr
     changes += split_pinched_vertices(mesh);  // may open holes where an edge had 3 faces ...
     changes += close_small_holes(mesh);       // ... which are closed here
   }
-  if (changes > 0) mesh = keep_largest_components(mesh, options.keep_largest_components, options.min_component_fraction);
+  if (changes > 0)
+    mesh = keep_largest_components(mesh, options.keep_largest_components, options.min_component_fraction);
   // index*spacing space -> LPS. A left-handed direction matrix mirrors the mesh; orient_outward
   // repairs the winding afterwards.
   for (Eigen::Index v = 0; v < mesh.vertex_count(); ++v)
@@ -187,7 +190,8 @@ TriangleMesh extract_iso_surface(const VolumeGeometry& g, auto value_at, double 
 
 TriangleMesh extract_surface(const Volume& volume, double iso_hu, const SurfaceOptions& options) {
   assert(volume.hu.size() == size_t(volume.geometry.voxel_count()) && "volume.hu must hold one value per voxel");
-  return extract_iso_surface(volume.geometry, [&](int64_t n) { return volume.hu[size_t(n)]; }, iso_hu, options);
+  return extract_iso_surface(
+      volume.geometry, [&](int64_t n) { return volume.hu[size_t(n)]; }, iso_hu, options);
 }
 
 TriangleMesh extract_region_surface(const Volume& volume, const LabelVolume& labels, LabelRange region, double iso_hu,

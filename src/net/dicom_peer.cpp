@@ -50,7 +50,9 @@ DicomPeer parse_peer(std::string_view text) {
   return peer;
 }
 
-std::string to_string(const DicomPeer& peer) { return peer.ae_title + "@" + peer.host + ":" + std::to_string(peer.port); }
+std::string to_string(const DicomPeer& peer) {
+  return peer.ae_title + "@" + peer.host + ":" + std::to_string(peer.port);
+}
 
 AllowedPeer parse_allowed_peer(std::string_view text) {
   AllowedPeer peer;

@@ -60,22 +60,25 @@ void GroupCommit::archive_from_one_source(std::vector<Waiting*>& files) {
     options.progress = ProgressDisplay::Never;
     options.batch_files = paths.size();  // one durable batch for the whole group
     options.source_label = files.front()->source;
-    options.on_archived = [&](const std::filesystem::path& path, ImportOutcome outcome) { results[path] = {outcome, {}, {}}; };
+    options.on_archived = [&](const std::filesystem::path& path, ImportOutcome outcome) {
+      results[path] = {outcome, {}, {}};
+    };
     options.on_problem = [&](const ImportProblem& problem) {
       results[problem.path] = {problem.outcome, problem.code, problem.reason};
     };
     archive_->import_paths(paths, options);
   } catch (const std::exception& error) {
     // Nothing of this group is known to be durable: every file is answered with the failure.
-    for (Waiting* waiting : files) waiting->result.set_value({ImportOutcome::Failed, ErrorCode::kWriteFailed, error.what()});
+    for (Waiting* waiting : files)
+      waiting->result.set_value({ImportOutcome::Failed, ErrorCode::kWriteFailed, error.what()});
     archive_.reset();  // reopened for the next group
     return;
   }
   for (Waiting* waiting : files) {
     const auto found = results.find(waiting->file);
-    waiting->result.set_value(found != results.end()
-                                  ? found->second
-                                  : Result{ImportOutcome::Failed, ErrorCode::kProcessing, "the archive did not take the instance"});
+    waiting->result.set_value(found != results.end() ? found->second
+                                                     : Result{ImportOutcome::Failed, ErrorCode::kProcessing,
+                                                              "the archive did not take the instance"});
   }
 }
 

@@ -45,7 +45,8 @@ void wait_until_answering(const DicomPeer& peer, const std::string& calling_ae, 
 
 }  // namespace
 
-StorageServerCounts with_loopback_server(StorageServerOptions options, const std::function<void(const DicomPeer&)>& work) {
+StorageServerCounts with_loopback_server(StorageServerOptions options,
+                                         const std::function<void(const DicomPeer&)>& work) {
   options.port = free_loopback_port();
   const DicomPeer peer{options.ae_title, "127.0.0.1", options.port};
   const std::string caller = options.allowed.empty() ? options.ae_title : options.allowed.front().ae_title;

@@ -11,6 +11,7 @@ namespace maxillo::net {
 // options.port is replaced by a free loopback port. Returns the server's counts once `work` has
 // returned and the server has stopped; an exception from `work` or from the server (its port)
 // is rethrown after the server has stopped.
-StorageServerCounts with_loopback_server(StorageServerOptions options, const std::function<void(const DicomPeer&)>& work);
+StorageServerCounts with_loopback_server(StorageServerOptions options,
+                                         const std::function<void(const DicomPeer&)>& work);
 
 }  // namespace maxillo::net

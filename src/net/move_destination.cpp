@@ -16,8 +16,8 @@ struct MoveDestination::Listener : public DcmStorageSCP {
 
   OFBool checkCallingAETitleAccepted(const OFString& calling_ae) override {
     if (calling_ae == peer_ae_title.c_str()) return OFTrue;
-    log::warning("retrieve: an association from '", calling_ae.c_str(), "' to our C-MOVE destination was refused: only ",
-                 peer_ae_title, " may deliver");
+    log::warning("retrieve: an association from '", calling_ae.c_str(),
+                 "' to our C-MOVE destination was refused: only ", peer_ae_title, " may deliver");
     return OFFalse;
   }
   // Checked between associations (the accept loop wakes every second).

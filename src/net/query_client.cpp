@@ -66,9 +66,11 @@ std::vector<StudyMatch> find_studies(const DicomPeer& peer, const StudyQuery& qu
   std::vector<StudyMatch> matches;
   Uint16 final_status = 0;
   for (QRResponse* response : responses) {
-    if (response->m_status == STATUS_FIND_Pending_MatchesAreContinuing || response->m_status == STATUS_FIND_Pending_WarningUnsupportedOptionalKeys)
+    if (response->m_status == STATUS_FIND_Pending_MatchesAreContinuing ||
+        response->m_status == STATUS_FIND_Pending_WarningUnsupportedOptionalKeys)
       matches.push_back(match_of(response->m_dataset));
-    else final_status = response->m_status;
+    else
+      final_status = response->m_status;
     delete response;
   }
   if (found.bad()) throw Error(ErrorCode::kNetwork, to_string(peer), std::string("C-FIND failed: ") + found.text());

@@ -41,7 +41,8 @@ class RetrieveRequestor : public Requestor {
 
  private:
   void note(const RetrieveResponse& response) {
-    const size_t done = response.m_numberOfCompletedSubops + response.m_numberOfFailedSubops + response.m_numberOfWarningSubops;
+    const size_t done =
+        response.m_numberOfCompletedSubops + response.m_numberOfFailedSubops + response.m_numberOfWarningSubops;
     if (!progress_) progress_.emplace("retrieve", done + response.m_numberOfRemainingSubops, display_);
     if (done > shown_) progress_->advance(done - shown_);
     shown_ = std::max(shown_, done);
@@ -106,7 +107,8 @@ void request_study(const DicomPeer& peer, const std::string& study_uid, const st
     propose_get(scu);
   }
   request_association(scu, peer);
-  const char* model = by_move ? UID_MOVEStudyRootQueryRetrieveInformationModel : UID_GETStudyRootQueryRetrieveInformationModel;
+  const char* model =
+      by_move ? UID_MOVEStudyRootQueryRetrieveInformationModel : UID_GETStudyRootQueryRetrieveInformationModel;
   const std::string service = by_move ? "C-MOVE" : "C-GET";
   const T_ASC_PresentationContextID context = require_context(scu, peer, model, service + " (Study Root)");
   DcmDataset keys;
@@ -135,7 +137,8 @@ RetrieveReport retrieve_study(const DicomPeer& peer, const std::string& study_ui
                           options.tls);
     request_study(peer, study_uid, scratch.path(), options, report);
   }
-  for (const auto& entry : std::filesystem::directory_iterator(scratch.path())) report.received += entry.is_regular_file();
+  for (const auto& entry : std::filesystem::directory_iterator(scratch.path()))
+    report.received += entry.is_regular_file();
   ImportOptions import;
   import.progress = options.progress;
   import.source_label = network_source(peer.ae_title, peer.host);

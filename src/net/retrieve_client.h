@@ -27,9 +27,9 @@ struct RetrieveOptions {
 };
 
 struct RetrieveReport {
-  size_t received = 0;         // instances the peer sent
-  size_t failed_by_peer = 0;   // sub-operations the peer reported failed
-  ImportReport imported;       // what the archive made of the received instances
+  size_t received = 0;        // instances the peer sent
+  size_t failed_by_peer = 0;  // sub-operations the peer reported failed
+  ImportReport imported;      // what the archive made of the received instances
   double seconds = 0;
 };
 

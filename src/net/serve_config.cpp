@@ -12,7 +12,8 @@ namespace {
 
 class ConfigReader {
  public:
-  ConfigReader(const Json& json, const std::filesystem::path& file) : json_(json), source_(file.string()), folder_(file.parent_path()) {}
+  ConfigReader(const Json& json, const std::filesystem::path& file)
+      : json_(json), source_(file.string()), folder_(file.parent_path()) {}
 
   [[noreturn]] void fail(const std::string& key, const std::string& reason) const {
     throw Error(ErrorCode::kBadValue, source_, key + ": " + reason);
@@ -24,7 +25,8 @@ class ConfigReader {
       if (!known.count(key)) fail(prefix + key, "unknown key");
   }
 
-  int integer(const Json& object, const std::string& key, const std::string& path, int low, int high, int fallback) const {
+  int integer(const Json& object, const std::string& key, const std::string& path, int low, int high,
+              int fallback) const {
     if (!object.contains(key)) return fallback;
     const Json& value = object.at(key);
     if (!value.is_number_integer() || value.get<int64_t>() < low || value.get<int64_t>() > high)
@@ -58,7 +60,8 @@ class ConfigReader {
     if (json_.contains("stable_study")) {
       const Json& stable = json_.at("stable_study");
       only_keys(stable, {"after_seconds", "command"}, "stable_study.");
-      options.stable_seconds = integer(stable, "after_seconds", "stable_study.after_seconds", 1, 86400, options.stable_seconds);
+      options.stable_seconds =
+          integer(stable, "after_seconds", "stable_study.after_seconds", 1, 86400, options.stable_seconds);
       options.on_stable_study = text(stable, "command", "stable_study.command", "");
     }
     if (json_.contains("tls")) options.tls = tls(json_.at("tls"));

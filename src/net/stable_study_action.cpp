@@ -37,7 +37,8 @@ int run_stable_study_action(const std::string& command, const std::filesystem::p
   std::vector<char*> environment;
   for (char** entry = environ; *entry; ++entry) {
     const bool replaced = std::strncmp(*entry, "MAXILLO_ARCHIVE=", 16) == 0 ||
-                          std::strncmp(*entry, "MAXILLO_STUDY_UID=", 18) == 0 || std::strncmp(*entry, "MAXILLO_CASE=", 13) == 0;
+                          std::strncmp(*entry, "MAXILLO_STUDY_UID=", 18) == 0 ||
+                          std::strncmp(*entry, "MAXILLO_CASE=", 13) == 0;
     if (!replaced) environment.push_back(*entry);
   }
   for (auto& variable : variables) environment.push_back(variable.data());
@@ -51,11 +52,12 @@ int run_stable_study_action(const std::string& command, const std::filesystem::p
     return -1;
   }
   int status = 0;
-  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
   const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  if (code == 0) log::info("serve: stable-study command done");
-  else log::warning("serve: stable-study command exited with status ", code);
+  if (code == 0)
+    log::info("serve: stable-study command done");
+  else
+    log::warning("serve: stable-study command exited with status ", code);
   return code;
 }
 

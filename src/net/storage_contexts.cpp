@@ -18,7 +18,8 @@ void accept_verification(DcmSCPConfig& config) {
 void accept_storage(DcmSCPConfig& config) {
   OFList<OFString> syntaxes;
   for (const auto& uid : accepted_transfer_syntaxes()) syntaxes.push_back(uid.c_str());
-  for (const auto& storage : accepted_storage_classes()) config.addPresentationContext(storage.sop_class_uid.c_str(), syntaxes);
+  for (const auto& storage : accepted_storage_classes())
+    config.addPresentationContext(storage.sop_class_uid.c_str(), syntaxes);
 }
 
 namespace {
@@ -61,7 +62,8 @@ std::vector<std::string> refused_contexts(const T_ASC_Parameters& request) {
       any |= accepted_syntax(abstract_syntax, context.proposedTransferSyntaxes[s]);
       proposed += (s ? ", " : "") + name_of_uid(context.proposedTransferSyntaxes[s]);
     }
-    if (!any) refusals.push_back(name_of_uid(context.abstractSyntax) + ": no transfer syntax we decode among " + proposed);
+    if (!any)
+      refusals.push_back(name_of_uid(context.abstractSyntax) + ": no transfer syntax we decode among " + proposed);
   }
   return refusals;
 }

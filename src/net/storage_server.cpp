@@ -56,7 +56,8 @@ StoreAnswer answer_for(const GroupCommit::Result& result) {
   // Input errors (20-39) and conflicts are the sender's data; anything else is ours.
   const int exit_code = exit_code_for(result.code);
   const bool senders_data = (exit_code >= 20 && exit_code < 40) || result.outcome == ImportOutcome::Conflict;
-  return {Uint16(senders_data ? STATUS_STORE_Error_CannotUnderstand : STATUS_STORE_Refused_OutOfResources), result.reason};
+  return {Uint16(senders_data ? STATUS_STORE_Error_CannotUnderstand : STATUS_STORE_Refused_OutOfResources),
+          result.reason};
 }
 
 // One association: checks who calls, archives each C-STORE before answering it.
@@ -98,7 +99,8 @@ class ArchivingSCP : public DcmThreadSCP {
 
   void notifyAssociationTermination() override {
     if (!calling_ae_.empty())
-      log::info("serve: association from ", calling_ae_, " ended: ", stored_, " instances archived, ", failed_, " refused");
+      log::info("serve: association from ", calling_ae_, " ended: ", stored_, " instances archived, ", failed_,
+                " refused");
     calling_ae_.clear();
     archive_.reset();
   }
@@ -134,12 +136,14 @@ class ArchivingSCP : public DcmThreadSCP {
 
  private:
   std::filesystem::path incoming_file() {
-    return shared_.incoming / ("received-" + std::to_string(getpid()) + "-" + std::to_string(++shared_.next_file) + ".dcm");
+    return shared_.incoming /
+           ("received-" + std::to_string(getpid()) + "-" + std::to_string(++shared_.next_file) + ".dcm");
   }
 
   std::string study_of(const std::string& sop_instance_uid) const {
     const ResolvedItem item = archive_->resolve(sop_instance_uid);
-    if (item.kind != ItemKind::Instance) throw Error(ErrorCode::kNotFound, sop_instance_uid, "not an archived instance");
+    if (item.kind != ItemKind::Instance)
+      throw Error(ErrorCode::kNotFound, sop_instance_uid, "not an archived instance");
     const auto instance = archive_->instance(item.id);
     return archive_->study(archive_->series_by_id(instance->series)->study)->study_uid;
   }
@@ -182,7 +186,9 @@ class ArchivingPool : public DcmBaseSCPPool {
   class Worker : public DcmBaseSCPWorker, private ArchivingSCP {
    public:
     Worker(DcmBaseSCPPool& pool, StorageServer::Shared& shared) : DcmBaseSCPWorker(pool), ArchivingSCP(shared) {}
-    OFCondition setSharedConfig(const DcmSharedSCPConfig& config) override { return ArchivingSCP::setSharedConfig(config); }
+    OFCondition setSharedConfig(const DcmSharedSCPConfig& config) override {
+      return ArchivingSCP::setSharedConfig(config);
+    }
     OFBool busy() override { return ArchivingSCP::isConnected(); }
 
    protected:
@@ -293,14 +299,11 @@ void StorageServer::run() {
                 std::string("cannot listen: ") + result.text());
 }
 
-void StorageServer::stop() {
-  shared_->stop_requested = true;
-}
+void StorageServer::stop() { shared_->stop_requested = true; }
 
 StorageServerCounts StorageServer::counts() const {
-  return {shared_->associations, shared_->refused,        shared_->stored,
-          shared_->already_archived, shared_->failed, shared_->stable_actions,
-          shared_->failed_actions};
+  return {shared_->associations, shared_->refused,        shared_->stored,        shared_->already_archived,
+          shared_->failed,       shared_->stable_actions, shared_->failed_actions};
 }
 
 }  // namespace maxillo::net

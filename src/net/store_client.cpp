@@ -60,7 +60,8 @@ std::string status_text(Uint16 status) {
 
 }  // namespace
 
-StoreReport send_files(const DicomPeer& peer, const std::vector<std::filesystem::path>& files, const StoreOptions& options) {
+StoreReport send_files(const DicomPeer& peer, const std::vector<std::filesystem::path>& files,
+                       const StoreOptions& options) {
   const auto started = std::chrono::steady_clock::now();
   std::vector<FileSyntax> syntaxes;
   std::set<std::pair<std::string, std::string>> pairs;
@@ -71,7 +72,8 @@ StoreReport send_files(const DicomPeer& peer, const std::vector<std::filesystem:
   StoreReport report;
   if (files.empty()) return report;
   if (pairs.size() > 128)
-    throw Error(ErrorCode::kUsage, to_string(peer), "more than 128 SOP class and transfer syntax pairs for one association");
+    throw Error(ErrorCode::kUsage, to_string(peer),
+                "more than 128 SOP class and transfer syntax pairs for one association");
 
   const auto tls = requestor_tls(options.tls);  // outlives the association
   Requestor scu;
@@ -101,8 +103,10 @@ StoreReport send_files(const DicomPeer& peer, const std::vector<std::filesystem:
       continue;
     }
     // Success (0x0000) and warnings (0xB...) mean the peer kept the instance.
-    if (status == STATUS_Success || (status & 0xf000) == 0xb000) ++report.sent;
-    else report.failures.push_back({files[i], "refused by the peer: " + status_text(status)});
+    if (status == STATUS_Success || (status & 0xf000) == 0xb000)
+      ++report.sent;
+    else
+      report.failures.push_back({files[i], "refused by the peer: " + status_text(status)});
   }
   progress.finish();
   if (scu.isConnected()) scu.releaseAssociation();

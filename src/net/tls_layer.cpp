@@ -64,7 +64,8 @@ std::unique_ptr<DcmTLSTransportLayer> acceptor_tls(const TlsOptions& options) {
 std::unique_ptr<DcmTLSTransportLayer> requestor_tls(const TlsOptions& options) {
   if (!options.enabled) return nullptr;
   if (options.trusted.empty())
-    throw Error(ErrorCode::kUsage, "--tls-trust", "TLS needs the certificate (or its CA) that the peer's must be signed by");
+    throw Error(ErrorCode::kUsage, "--tls-trust",
+                "TLS needs the certificate (or its CA) that the peer's must be signed by");
   auto layer = make_layer(NET_REQUESTOR, options);
   layer->setCertificateVerification(DCV_requireCertificate);
   return layer;

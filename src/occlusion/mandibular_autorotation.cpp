@@ -66,7 +66,8 @@ AutorotationResult autorotate_mandible(const DistanceField& upper, const Distanc
   const double radius = std::max(radius_about(lower.mesh(), hinge), 1e-9);
   const double step_deg = std::min(options.max_substep_mm / radius / kDegree, 1.0);
   double free = 0, blocked = -1;
-  for (double angle = step_deg; free < options.max_angle_deg; angle = std::min(angle + step_deg, options.max_angle_deg)) {
+  for (double angle = step_deg; free < options.max_angle_deg;
+       angle = std::min(angle + step_deg, options.max_angle_deg)) {
     if (in_contact(angle)) {
       blocked = angle;
       break;

@@ -22,12 +22,12 @@ struct AutorotationOptions {
 };
 
 struct AutorotationResult {
-  bool contact = false;       // false: no contact within max_angle_deg (or in contact already: angle 0)
+  bool contact = false;  // false: no contact within max_angle_deg (or in contact already: angle 0)
   bool already_in_contact = false;
-  double angle_deg = 0;       // the closing rotation, >= 0 (last contact-free angle of the bracket)
-  Eigen::Isometry3d lower_motion = Eigen::Isometry3d::Identity();  // applied to the lower arch (lower frame)
+  double angle_deg = 0;  // the closing rotation, >= 0 (last contact-free angle of the bracket)
+  Eigen::Isometry3d lower_motion = Eigen::Isometry3d::Identity();   // applied to the lower arch (lower frame)
   Eigen::Vector3d pogonion_displacement = Eigen::Vector3d::Zero();  // mm, lower frame
-  double pogonion_mm = 0;     // its length
+  double pogonion_mm = 0;                                           // its length
 };
 
 // Rotation of the lower arch by angle_deg about the hinge axis (right-hand rule about first->second).

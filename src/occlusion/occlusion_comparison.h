@@ -32,7 +32,6 @@ OcclusionComparison compare_poses(const TriangleMesh& upper, const std::vector<i
 // The region of interest is the upper vertices within roi_mm of the lower arch at pose_a (the
 // reference occlusion): the occlusal surfaces, not the gingiva or the roots far from the plane.
 OcclusionComparison compare_occlusions(const DistanceField& upper, const DistanceField& lower,
-                                       const Eigen::Isometry3d& pose_a, const Eigen::Isometry3d& pose_b,
-                                       double roi_mm);
+                                       const Eigen::Isometry3d& pose_a, const Eigen::Isometry3d& pose_b, double roi_mm);
 
 }  // namespace maxillo::occlusion

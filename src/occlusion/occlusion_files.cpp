@@ -55,7 +55,8 @@ std::vector<SpringPair> read_spring_pairs(const std::filesystem::path& path) {
                       " values, expected ux,uy,uz,lx,ly,lz");
     for (double value : values)
       if (!std::isfinite(value))
-        throw Error(ErrorCode::kBadValue, path.string(), "row " + std::to_string(row) + " holds a value that is not a finite number");
+        throw Error(ErrorCode::kBadValue, path.string(),
+                    "row " + std::to_string(row) + " holds a value that is not a finite number");
     pairs.push_back({{values[0], values[1], values[2]}, {values[3], values[4], values[5]}});
   }
   if (pairs.size() < 3)

@@ -149,7 +149,8 @@ SplintField splint_field(const DistanceField& upper, const DistanceField& lower,
   const auto collect = [&](const TriangleMesh& mesh, const Eigen::Isometry3d& to_lower) {
     for (Eigen::Index v = 0; v < mesh.vertex_count(); ++v) {
       const Eigen::Vector3d x = to_lower * vertex(mesh, v) - plane.centre;
-      if (std::abs(x.dot(plane.normal)) <= half + options.clearance_mm) outline.emplace_back(x.dot(plane.u), x.dot(plane.v));
+      if (std::abs(x.dot(plane.normal)) <= half + options.clearance_mm)
+        outline.emplace_back(x.dot(plane.u), x.dot(plane.v));
     }
   };
   collect(upper.mesh(), upper_pose);
@@ -175,7 +176,9 @@ SplintField splint_field(const DistanceField& upper, const DistanceField& lower,
     marked[size_t(j) * size_t(width) + size_t(i)] = 1;
   }
   const std::vector<double> outline_distance = distance_to_marked(marked, width, height);
-  const auto band = [&](int i, int j) { return options.margin_mm - h * outline_distance[size_t(j) * size_t(width) + size_t(i)]; };
+  const auto band = [&](int i, int j) {
+    return options.margin_mm - h * outline_distance[size_t(j) * size_t(width) + size_t(i)];
+  };
   const auto slab = [&](int k) { return half - std::abs(-(half + 2 * h) + k * h); };
 
   // Arch distances only where the band and slab leave the voxel within two voxels of the splint.
@@ -196,7 +199,8 @@ SplintField splint_field(const DistanceField& upper, const DistanceField& lower,
         const double nearest_arch = std::min(to_upper[n], to_lower[n]);
         const double value = std::min({band(i, j), slab(k), nearest_arch - options.clearance_mm});
         out.field.hu[n] = int16_t(std::clamp(std::lround(value * 1000), -32000L, 32000L));
-        if (slab(k) >= 0 && nearest_arch <= options.clearance_mm + h) column_touches[size_t(j) * size_t(width) + size_t(i)] = 1;
+        if (slab(k) >= 0 && nearest_arch <= options.clearance_mm + h)
+          column_touches[size_t(j) * size_t(width) + size_t(i)] = 1;
       }
   for (int j = 0; j < height; ++j)
     for (int i = 0; i < width; ++i)

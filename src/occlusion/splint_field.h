@@ -19,12 +19,12 @@
 namespace maxillo::occlusion {
 
 struct SplintOptions {
-  double thickness_mm = 2.0;       // minimum thickness where no tooth is
-  double imprint_depth_mm = 1.0;   // how far the wafer reaches into each arch beyond that
-  double clearance_mm = 0.1;       // gap left around the teeth (seating, scan noise)
-  double margin_mm = 3.0;          // the band extends this far beyond the teeth's outline
-  double voxel_mm = 0.25;          // grid spacing of the field
-  double plane_region_mm = 2.0;    // vertices this close to the other arch fit the occlusal plane
+  double thickness_mm = 2.0;      // minimum thickness where no tooth is
+  double imprint_depth_mm = 1.0;  // how far the wafer reaches into each arch beyond that
+  double clearance_mm = 0.1;      // gap left around the teeth (seating, scan noise)
+  double margin_mm = 3.0;         // the band extends this far beyond the teeth's outline
+  double voxel_mm = 0.25;         // grid spacing of the field
+  double plane_region_mm = 2.0;   // vertices this close to the other arch fit the occlusal plane
 };
 
 // A plane through `centre` with unit `normal` pointing towards the upper arch; `u`, `v` span it.

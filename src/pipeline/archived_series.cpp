@@ -32,7 +32,8 @@ Volume load_archived_series(const Archive& archive, int64_t series) {
     std::string reason = e.reason();
     for (const auto& [object, original] : source_of) {
       replace_all(reason, object, original);
-      replace_all(reason, std::filesystem::path(object).filename().string(), std::filesystem::path(original).filename().string());
+      replace_all(reason, std::filesystem::path(object).filename().string(),
+                  std::filesystem::path(original).filename().string());
     }
     throw Error(e.code(), source->second + " (archived as " + source->first + ")", reason);
   }

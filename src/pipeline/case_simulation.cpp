@@ -36,12 +36,12 @@ Json write_outputs(SimulationResult& result, const std::filesystem::path& out, c
   Eigen::MatrixXd magnitude = p.skin_displacement.rowwise().norm();
   std::vector<PointArray> arrays{{"displacement", p.skin_displacement}, {"displacement_magnitude", magnitude}};
   if (result.uncertainty)
-    arrays.push_back({"uncertainty", Eigen::Map<const Eigen::VectorXd>(result.uncertainty->spread_mm.data(),
-                                                                        Eigen::Index(result.uncertainty->spread_mm.size()))});
+    arrays.push_back(
+        {"uncertainty", Eigen::Map<const Eigen::VectorXd>(result.uncertainty->spread_mm.data(),
+                                                          Eigen::Index(result.uncertainty->spread_mm.size()))});
   std::vector<std::filesystem::path>& files = result.files;
-  files = {out / "predicted-skin.vtp", out / "predicted-skin.stl",
-                                           out / "predicted-skin.ply", out / "soft-tissue-model.vtu",
-                                           out / "simulation.json"};
+  files = {out / "predicted-skin.vtp", out / "predicted-skin.stl", out / "predicted-skin.ply",
+           out / "soft-tissue-model.vtu", out / "simulation.json"};
   write_mesh(p.skin_after, files[0], arrays);
   write_mesh(p.skin_after, files[1]);
   write_mesh(p.skin_after, files[2]);
@@ -61,11 +61,16 @@ Json write_outputs(SimulationResult& result, const std::filesystem::path& out, c
                {"free_nodes", softtissue::count_nodes(p.bc, softtissue::NodeConstraint::kFree)},
                {"iterations", p.iterations},
                {"max_skin_displacement_mm", magnitude.size() ? magnitude.maxCoeff() : 0.0},
-               {"seconds", {{"region", p.seconds.region}, {"meshing", p.seconds.meshing},
-                            {"attachment", p.seconds.attachment}, {"assembly", p.seconds.assembly},
-                            {"solve", p.seconds.solve}, {"mapping", p.seconds.mapping}}}};
+               {"seconds",
+                {{"region", p.seconds.region},
+                 {"meshing", p.seconds.meshing},
+                 {"attachment", p.seconds.attachment},
+                 {"assembly", p.seconds.assembly},
+                 {"solve", p.seconds.solve},
+                 {"mapping", p.seconds.mapping}}}};
   if (result.uncertainty)
-    summary["uncertainty"] = {{"runs", result.uncertainty->runs}, {"p95_mm", result.uncertainty->p95_mm},
+    summary["uncertainty"] = {{"runs", result.uncertainty->runs},
+                              {"p95_mm", result.uncertainty->p95_mm},
                               {"max_mm", result.uncertainty->max_mm}};
   write_file_atomically(files[4], summary.dump(2) + "\n");
   return summary;
@@ -92,7 +97,8 @@ Uncertainty prediction_uncertainty(const SoftTissuePrediction& base, const Trian
   Uncertainty band;
   std::vector<Eigen::MatrixX3d> answers{base.skin_displacement};
   char label[48];
-  std::snprintf(label, sizeof label, "%s nu=%.2f", std::string(model_name(options.model)).c_str(), options.poisson_ratio);
+  std::snprintf(label, sizeof label, "%s nu=%.2f", std::string(model_name(options.model)).c_str(),
+                options.poisson_ratio);
   band.runs.push_back(label);
   auto add = [&](SoftTissueModel model, double poisson) {
     SoftTissueOptions variant = options;
@@ -126,7 +132,8 @@ Uncertainty prediction_uncertainty(const SoftTissuePrediction& base, const Trian
     band.run_p95_from_first_mm.push_back(validation::percentile(off, 95));
   }
   for (Eigen::Index v = 0; v < mean.rows(); ++v) {
-    for (const auto& a : answers) band.spread_mm[size_t(v)] = std::max(band.spread_mm[size_t(v)], (a.row(v) - mean.row(v)).norm());
+    for (const auto& a : answers)
+      band.spread_mm[size_t(v)] = std::max(band.spread_mm[size_t(v)], (a.row(v) - mean.row(v)).norm());
     if (mean.row(v).norm() > kMovedSkinMm) moved.push_back(band.spread_mm[size_t(v)]);
   }
   band.p95_mm = validation::percentile(moved, 95);
@@ -151,14 +158,16 @@ SimulationResult simulate_case(Archive& archive, int64_t case_id, const Simulati
       plan_moves(archive, case_id, request.plan, landmarks, case_tissues.segmentation, &result.reused_plan_application);
   const LabelVolume& tissues = case_tissues.jaws;
   const auto cut = planning::cut_skeleton(tissues, planning::resolve_osteotomies(request.plan.osteotomies, landmarks));
-  for (const auto& s : cut.stats) log::info("bone segment ", planning::segment_name(s.segment), ": ", s.volume_ml, " ml");
+  for (const auto& s : cut.stats)
+    log::info("bone segment ", planning::segment_name(s.segment), ": ", s.volume_ml, " ml");
 
   const SurfaceRecipe recipe;
   result.skin_before =
       case_surfaces(archive, case_id, series, recipe, case_tissues.ct_labels_for(recipe.segmentation)).skin;
   SoftTissueInput input{&tissues, &cut.segments, &result.skin_before, landmarks, moves_by_segment(moves)};
   result.prediction = predict_soft_tissue(input, request.options, request.face_model.get());
-  if (request.uncertainty) result.uncertainty = prediction_uncertainty(result.prediction, result.skin_before, request.options);
+  if (request.uncertainty)
+    result.uncertainty = prediction_uncertainty(result.prediction, result.skin_before, request.options);
 
   std::filesystem::create_directories(request.out);
   const auto frame = anatomical_frame(landmarks);
@@ -167,15 +176,17 @@ SimulationResult simulate_case(Archive& archive, int64_t case_id, const Simulati
                             soft_landmarks_of(landmarks)};
   result.section = soft_tissue_section(result.prediction, result.views, frame, summary);
   if (result.uncertainty) {
-    auto spread = render_uncertainty_views(result.prediction.skin_after, result.uncertainty->spread_mm, frame, request.out);
-    result.section.blocks.push_back(report::Paragraph{"Uncertainty band: how far the predicted skin moves when the model "
-                                                      "or the Poisson ratio changes (largest distance from the runs' mean)."});
+    auto spread =
+        render_uncertainty_views(result.prediction.skin_after, result.uncertainty->spread_mm, frame, request.out);
+    result.section.blocks.push_back(
+        report::Paragraph{"Uncertainty band: how far the predicted skin moves when the model "
+                          "or the Poisson ratio changes (largest distance from the runs' mean)."});
     result.section.blocks.push_back(spread);
-    result.section.blocks.push_back(report::Note{
-        "Uncertainty band: across " + std::to_string(result.uncertainty->runs.size()) +
-        " runs (other models, Poisson ratio 0.45-0.49) the predicted skin position spreads by up to " +
-        std::to_string(result.uncertainty->max_mm).substr(0, 4) + " mm (95th percentile " +
-        std::to_string(result.uncertainty->p95_mm).substr(0, 4) + " mm) from their mean."});
+    result.section.blocks.push_back(
+        report::Note{"Uncertainty band: across " + std::to_string(result.uncertainty->runs.size()) +
+                     " runs (other models, Poisson ratio 0.45-0.49) the predicted skin position spreads by up to " +
+                     std::to_string(result.uncertainty->max_mm).substr(0, 4) + " mm (95th percentile " +
+                     std::to_string(result.uncertainty->p95_mm).substr(0, 4) + " mm) from their mean."});
   }
   result.summary = write_outputs(result, request.out, request.options);
   return result;

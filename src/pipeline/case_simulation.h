@@ -21,21 +21,21 @@ namespace maxillo::pipeline {
 
 struct SimulationRequest {
   planning::Plan plan;
-  std::string plan_text;          // one line for the report, e.g. "maxilla 6.0 mm advancement"
+  std::string plan_text;  // one line for the report, e.g. "maxilla 6.0 mm advancement"
   SoftTissueOptions options;
-  bool uncertainty = false;       // also solve with every model and Poisson 0.45 and 0.49
+  bool uncertainty = false;  // also solve with every model and Poisson 0.45 and 0.49
   // The case's face model when the caller has it (PlannedCase::face_model with these options);
   // null: built here. A model of other tissues, landmarks or meshing options is refused.
   std::shared_ptr<const FaceModel> face_model;
-  std::filesystem::path out;      // folder (created) for the files and pictures
+  std::filesystem::path out;  // folder (created) for the files and pictures
 };
 
 struct Uncertainty {
-  std::vector<std::string> runs;        // "mtm nu=0.46", ...
-  std::vector<double> run_max_mm;       // each run's largest skin displacement
+  std::vector<std::string> runs;              // "mtm nu=0.46", ...
+  std::vector<double> run_max_mm;             // each run's largest skin displacement
   std::vector<double> run_p95_from_first_mm;  // each run's P95 distance from the first run, moved skin
-  std::vector<double> spread_mm;        // per skin vertex: largest distance of a run from the mean
-  double p95_mm = 0, max_mm = 0;        // over the skin vertices that moved
+  std::vector<double> spread_mm;              // per skin vertex: largest distance of a run from the mean
+  double p95_mm = 0, max_mm = 0;              // over the skin vertices that moved
 };
 
 struct SimulationResult {
@@ -43,10 +43,10 @@ struct SimulationResult {
   TriangleMesh skin_before;
   std::optional<Uncertainty> uncertainty;
   SoftTissueViewFiles views;
-  report::Section section;                          // "soft_tissue", ready for the report
-  std::vector<std::filesystem::path> files;         // predicted skin (vtp, stl, ply), model (vtu), json
-  Json summary;                                     // what simulation.json holds
-  bool reused_plan_application = false;             // the plan's moves came from `plan apply`'s stored result
+  report::Section section;                   // "soft_tissue", ready for the report
+  std::vector<std::filesystem::path> files;  // predicted skin (vtp, stl, ply), model (vtu), json
+  Json summary;                              // what simulation.json holds
+  bool reused_plan_application = false;      // the plan's moves came from `plan apply`'s stored result
 };
 
 // The uncertainty band: the same model re-solved with every other model and with Poisson

@@ -37,7 +37,9 @@ std::string surfaces_key(Archive& archive, int64_t series, const Json& parameter
 CaseSurfaces extract_case_surfaces(const Volume& volume, const SurfaceRecipe& recipe, SurfaceTimes* times,
                                    const LabelVolume* segmented) {
   using Clock = std::chrono::steady_clock;
-  auto seconds_since = [](Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); };
+  auto seconds_since = [](Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+  };
   SurfaceTimes spent;
   const auto started = Clock::now();
   const LabelVolume made = segmented ? LabelVolume{} : segment_tissues(volume, recipe.segmentation);

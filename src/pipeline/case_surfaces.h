@@ -24,7 +24,7 @@ struct SurfaceRecipe {
 struct CaseSurfaces {
   TriangleMesh skin;
   TriangleMesh bone;
-  std::string key;  // derivation key of both surfaces
+  std::string key;      // derivation key of both surfaces
   bool reused = false;  // true when both came from the archive
 };
 
@@ -36,8 +36,8 @@ struct SurfaceTimes {
 
 // The surfaces of a volume, computed (no archive): segmentation, then skin and bone. `segmented`, when given, is
 // segment_tissues(volume, recipe.segmentation) made earlier; the segmentation is then not repeated.
-CaseSurfaces extract_case_surfaces(const Volume& volume, const SurfaceRecipe& recipe = {}, SurfaceTimes* times = nullptr,
-                                   const LabelVolume* segmented = nullptr);
+CaseSurfaces extract_case_surfaces(const Volume& volume, const SurfaceRecipe& recipe = {},
+                                   SurfaceTimes* times = nullptr, const LabelVolume* segmented = nullptr);
 
 // Surfaces of `series` (a CT series of the case). Throws what volume loading and
 // segmentation throw (Error naming the file or series). `segmented` as above, for that series.

@@ -91,16 +91,16 @@ std::vector<SegmentSurface> segment_bone_surfaces(const PlannedCase& planned) {
     if (stats.segment == planning::Segment::kCranium || planned.planned_moves.count(uint8_t(stats.segment)) > 0)
       surfaces.push_back({stats.segment, {}});
   // One segment per thread, each into its own slot.
-  for_each_slab(
-      0, int(surfaces.size()),
-      [&](int first, int last) {
-        for (int s = first; s < last; ++s) {
-          auto& surface = surfaces[size_t(s)];
-          const uint8_t label = uint8_t(surface.segment);
-          surface.mesh = extract_region_surface(planned.preop_ct, planned.cut.segments, {label, label}, bone_hu, options);
-        }
-      },
-      {.min_slab_size = 1});
+  for_each_slab(0, int(surfaces.size()),
+                [&](int first, int last) {
+                  for (int s = first; s < last; ++s) {
+                    auto& surface = surfaces[size_t(s)];
+                    const uint8_t label = uint8_t(surface.segment);
+                    surface.mesh = extract_region_surface(planned.preop_ct, planned.cut.segments, {label, label},
+                                                          bone_hu, options);
+                  }
+                },
+                {.min_slab_size = 1});
   return surfaces;
 }
 
@@ -247,8 +247,8 @@ std::map<int64_t, CaseInputsHash> validation_inputs_hashes(const Archive& archiv
   const Json parameters = options.to_json();
   size_t next = 0;
   for (const auto& [id, inputs] : eligible) {
-    result[id].hash =
-        derivation_key({series_hashes[next], series_hashes[next + 1], inputs.plan_sha256, inputs.landmarks_hash}, parameters);
+    result[id].hash = derivation_key(
+        {series_hashes[next], series_hashes[next + 1], inputs.plan_sha256, inputs.landmarks_hash}, parameters);
     next += 2;
   }
   return result;
@@ -320,19 +320,17 @@ CaseValidation validate_case(Archive& archive, int64_t case_id, const Validation
   const auto frame = anatomical_frame(planned.landmarks);
   // The corresponding points (coherent point drift, the longest step here) need nothing the closest-point map and
   // its views make: they run beside them, each writing only its own member; rendering stays on this thread.
-  run_concurrently({[&] {
-                      v.closest_mm = validation::signed_distance_map(v.predicted_skin, v.actual_skin, face);
-                      v.error_maps =
-                          render_error_maps(v.predicted_skin, v.closest_mm, frame, options.error_map_range_mm, out);
-                      v.profile_png = out / "profile.png";
-                      write_profile_overlay(planned.skin, v.predicted_skin, v.actual_skin, planned.landmarks, frame,
-                                            v.profile_png);
-                    },
-                    [&] {
-                      if (options.corresponding_points)
-                        v.corresponding_mm =
-                            corresponding_map(v.predicted_skin, v.actual_skin, face, options.correspondence);
-                    }});
+  run_concurrently(
+      {[&] {
+         v.closest_mm = validation::signed_distance_map(v.predicted_skin, v.actual_skin, face);
+         v.error_maps = render_error_maps(v.predicted_skin, v.closest_mm, frame, options.error_map_range_mm, out);
+         v.profile_png = out / "profile.png";
+         write_profile_overlay(planned.skin, v.predicted_skin, v.actual_skin, planned.landmarks, frame, v.profile_png);
+       },
+       [&] {
+         if (options.corresponding_points)
+           v.corresponding_mm = corresponding_map(v.predicted_skin, v.actual_skin, face, options.correspondence);
+       }});
   v.statistics = region_statistics(v, options.tolerance_mm);
   write_skins(v, out);
   v.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

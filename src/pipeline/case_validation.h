@@ -94,8 +94,8 @@ std::optional<std::string> validation_inputs_hash(const Archive& archive, int64_
 
 // One case's part of validation_inputs_hashes.
 struct CaseInputsHash {
-  std::optional<std::string> hash;  // nothing: no post-operative CT, plan or landmarks
-  std::exception_ptr error;         // what reading this case's records threw (Error(kNotFound): no such case)
+  std::optional<std::string> hash;        // nothing: no post-operative CT, plan or landmarks
+  std::exception_ptr error;               // what reading this case's records threw (Error(kNotFound): no such case)
   std::vector<ArtefactRecord> artefacts;  // the case's, read on the way: its stored validations are among them
 };
 // validation_inputs_hash of many cases, read set-wise: a few queries per 4,096 cases instead of several per case (the

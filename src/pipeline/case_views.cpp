@@ -37,24 +37,28 @@ std::string artefact_kind(ViewedTissue tissue, render::StandardView view) {
   using render::StandardView;
   const bool skin = tissue == ViewedTissue::Skin;
   switch (view) {
-    case StandardView::Frontal: return kind_name(skin ? ArtefactKind::kRenderSkinFrontal : ArtefactKind::kRenderBoneFrontal);
-    case StandardView::Lateral: return kind_name(skin ? ArtefactKind::kRenderSkinLateral : ArtefactKind::kRenderBoneLateral);
-    case StandardView::Oblique: return kind_name(skin ? ArtefactKind::kRenderSkinOblique : ArtefactKind::kRenderBoneOblique);
+    case StandardView::Frontal:
+      return kind_name(skin ? ArtefactKind::kRenderSkinFrontal : ArtefactKind::kRenderBoneFrontal);
+    case StandardView::Lateral:
+      return kind_name(skin ? ArtefactKind::kRenderSkinLateral : ArtefactKind::kRenderBoneLateral);
+    case StandardView::Oblique:
+      return kind_name(skin ? ArtefactKind::kRenderSkinOblique : ArtefactKind::kRenderBoneOblique);
   }
   return kind_name(ArtefactKind::kRenderSkinFrontal);
 }
 
 render::Scene scene_of(ViewedTissue tissue, const CaseSurfaces& surfaces) {
   render::Scene scene;
-  if (tissue == ViewedTissue::Skin) scene.meshes.push_back({&surfaces.skin, render::kSkinTone, 1.0, std::nullopt});
-  else scene.meshes.push_back({&surfaces.bone, render::kBoneIvory, 1.0, std::nullopt});
+  if (tissue == ViewedTissue::Skin)
+    scene.meshes.push_back({&surfaces.skin, render::kSkinTone, 1.0, std::nullopt});
+  else
+    scene.meshes.push_back({&surfaces.bone, render::kBoneIvory, 1.0, std::nullopt});
   return scene;
 }
 
 // Renders every tissue and view and stores each PNG as an artefact under `key`.
-void render_and_store(Archive& archive, int64_t case_id, const CaseSurfaces& surfaces,
-                      const AnatomicalFrame& frame, const ViewRecipe& recipe, const std::string& key,
-                      const Json& parameters) {
+void render_and_store(Archive& archive, int64_t case_id, const CaseSurfaces& surfaces, const AnatomicalFrame& frame,
+                      const ViewRecipe& recipe, const std::string& key, const Json& parameters) {
   auto skin_bounds = render::scene_bounds(scene_of(ViewedTissue::Skin, surfaces));
   std::vector<render::Camera> cameras;
   for (auto view : kViews) cameras.push_back(render::standard_camera(view, frame, skin_bounds, 1.0));
@@ -86,7 +90,8 @@ std::vector<CaseView> case_views(Archive& archive, int64_t case_id, const CaseSu
 
   bool all_stored = true;
   for (auto tissue : kTissues)
-    for (auto view : kViews) all_stored = all_stored && archive.find_artefact(case_id, artefact_kind(tissue, view), key);
+    for (auto view : kViews)
+      all_stored = all_stored && archive.find_artefact(case_id, artefact_kind(tissue, view), key);
   if (!all_stored) render_and_store(archive, case_id, surfaces, frame, recipe, key, parameters);
 
   std::vector<CaseView> views;
@@ -99,4 +104,3 @@ std::vector<CaseView> case_views(Archive& archive, int64_t case_id, const CaseSu
 }
 
 }  // namespace maxillo::pipeline
-

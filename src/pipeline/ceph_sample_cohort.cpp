@@ -39,12 +39,13 @@ std::vector<SamplePatient> sample_cohort_patients() {
 
 ceph::CohortCase sample_patient_follow_up(const SamplePatient& patient, int first_year) {
   // pre, end of distraction (2 months later), then 6, 12 and 24 months after it.
-  const Visit visits[] = {{"pre", "01-15", -1}, {"post", "03-15", 0}, {"6M", "09-15", 6}, {"12M", "03-15", 12},
-                          {"24M", "03-15", 24}};
+  const Visit visits[] = {
+      {"pre", "01-15", -1}, {"post", "03-15", 0}, {"6M", "09-15", 6}, {"12M", "03-15", 12}, {"24M", "03-15", 24}};
   ceph::CohortCase c{patient.name, {}};
   for (const auto& v : visits) {
     int visit_year = first_year + (v.months_after_post >= 12 ? v.months_after_post / 12 : 0);
-    c.time_points.push_back({v.label, std::to_string(visit_year) + "-" + v.date_suffix, phantom_at(patient, v.months_after_post)});
+    c.time_points.push_back(
+        {v.label, std::to_string(visit_year) + "-" + v.date_suffix, phantom_at(patient, v.months_after_post)});
   }
   return c;
 }

@@ -14,8 +14,8 @@ namespace maxillo::pipeline {
 
 struct SamplePatient {
   std::string name;
-  double advancement_mm;       // maxillary advancement at the end of distraction
-  double relapse_mm;           // maxillary setback between post and 6 months
+  double advancement_mm;                 // maxillary advancement at the end of distraction
+  double relapse_mm;                     // maxillary setback between post and 6 months
   double mandibular_growth_mm_per_year;  // forward growth of the mandible after distraction
 };
 // The six patients of the sample cohort.

@@ -25,7 +25,9 @@ std::string with_unit(double value, const std::string& unit) {
 
 report::Table measurement_table(const ceph::CephalometricAnalysis& analysis) {
   report::Table table;
-  table.columns = {{"Measurement", 3.2}, {"Value", 1.1, Align::Right}, {"Norm (mean \u00b1 SD)", 1.6, Align::Right},
+  table.columns = {{"Measurement", 3.2},
+                   {"Value", 1.1, Align::Right},
+                   {"Norm (mean \u00b1 SD)", 1.6, Align::Right},
                    {"Deviation", 1.4}};
   for (const auto& m : analysis.measurements) {
     std::string norm = m.norm ? fixed(m.norm->mean, 1) + " \u00b1 " + fixed(m.norm->sd, 1) : "";
@@ -58,9 +60,12 @@ report::Table follow_up_table(const ceph::CaseFollowUp& follow_up) {
 const std::vector<std::string> kChangeIds = {"PNS_X", "Si_X", "ANS_X", "PNS_Y", "Si_Y", "ANS_Y",
                                              "alpha", "SNA",  "SNB",   "ANB",   "Wits"};
 
-report::Table change_table(const std::vector<ceph::CaseFollowUp>& cohort, const std::string& from, const std::string& to) {
+report::Table change_table(const std::vector<ceph::CaseFollowUp>& cohort, const std::string& from,
+                           const std::string& to) {
   report::Table table;
-  table.columns = {{"Measurement", 1.5}, {"Unit", 0.6}, {"Change " + from + " to " + to + " (mean \u00b1 SD)", 2.2, Align::Right},
+  table.columns = {{"Measurement", 1.5},
+                   {"Unit", 0.6},
+                   {"Change " + from + " to " + to + " (mean \u00b1 SD)", 2.2, Align::Right},
                    {"n", 0.5, Align::Right}};
   for (const auto& row : ceph::cohort_changes(cohort, from, to, kChangeIds))
     if (row.n > 0) table.rows.push_back({row.id, row.unit, ceph::format_mean_sd(row), std::to_string(row.n)});
@@ -124,17 +129,20 @@ std::string stability_summary(const std::vector<ceph::CaseFollowUp>& cohort, con
                               const std::string& to) {
   const ceph::ChangeRow* largest_mm = nullptr;
   const ceph::ChangeRow* alpha = nullptr;
-  const auto rows = ceph::cohort_changes(cohort, from, to, {"PNS_X", "Si_X", "ANS_X", "PNS_Y", "Si_Y", "ANS_Y", "alpha"});
+  const auto rows =
+      ceph::cohort_changes(cohort, from, to, {"PNS_X", "Si_X", "ANS_X", "PNS_Y", "Si_Y", "ANS_Y", "alpha"});
   for (const auto& row : rows) {
     if (!row.mean) continue;
-    if (row.id == "alpha") alpha = &row;
-    else if (!largest_mm || std::abs(*row.mean) > std::abs(*largest_mm->mean)) largest_mm = &row;
+    if (row.id == "alpha")
+      alpha = &row;
+    else if (!largest_mm || std::abs(*row.mean) > std::abs(*largest_mm->mean))
+      largest_mm = &row;
   }
   if (!largest_mm) return "No case has both " + from + " and " + to + ": stability not assessed.";
   const bool stable = std::abs(*largest_mm->mean) <= kStableMm && (!alpha || std::abs(*alpha->mean) <= kStableDeg);
   std::string text = "Stability from " + from + " to " + to + ": the largest mean change of a maxillary point is " +
-                     largest_mm->id + " " + ceph::format_mean_sd(*largest_mm) + " mm (n = " +
-                     std::to_string(largest_mm->n) + ")";
+                     largest_mm->id + " " + ceph::format_mean_sd(*largest_mm) +
+                     " mm (n = " + std::to_string(largest_mm->n) + ")";
   if (alpha) text += ", alpha " + ceph::format_mean_sd(*alpha) + "\u00b0";
   return text + (stable ? ": stable (every mean change within 1 mm and 1\u00b0)."
                         : ": not stable (a mean change exceeds 1 mm or 1\u00b0).");
@@ -148,15 +156,17 @@ report::Section cohort_follow_up_section(const std::vector<ceph::CaseFollowUp>& 
                                         " patients. Changes between time points in the nasion frame (mm) and of the "
                                         "palatal plane angle alpha (degrees)."});
   for (const auto& [from, to] : changes) blocks.emplace_back(change_table(cohort, from, to));
-  blocks.emplace_back(report::Note{"Anterior and inferior displacements positive; alpha: upward rotation positive "
-                                   "(as the source's Tables II and III). SD: sample SD (n - 1)."});
+  blocks.emplace_back(
+      report::Note{"Anterior and inferior displacements positive; alpha: upward rotation positive "
+                   "(as the source's Tables II and III). SD: sample SD (n - 1)."});
   if (auto stability = end_to_six_months(cohort))
     blocks.emplace_back(report::Paragraph{stability_summary(cohort, stability->first, stability->second)});
   blocks.emplace_back(report::Paragraph{"Wits appraisal (mm) per patient and time point."});
   blocks.emplace_back(wits_table(cohort));
   if (wits_chart)
-    blocks.emplace_back(chart_block(*wits_chart, "Wits appraisal over months, one line per patient (0 mm: normal; "
-                                                 "negative: Class III)"));
+    blocks.emplace_back(chart_block(*wits_chart,
+                                    "Wits appraisal over months, one line per patient (0 mm: normal; "
+                                    "negative: Class III)"));
   return {"cephalometry", std::move(blocks)};
 }
 
@@ -174,14 +184,15 @@ report::Section cephalometry_section(const std::optional<ceph::CephalometricAnal
       "inferior positions positive. Alpha: palatal plane ANS-PNS against Y, upward rotation positive. Deviation "
       "flags: more than 1 or 2 SD from the norm."};
   report::Paragraph heading{"Cephalometric measurements of " + current_label + "."};
-  if (follow_up.time_points.size() < 2)
-    return {"cephalometry", {heading, measurement_table(*current), conventions}};
+  if (follow_up.time_points.size() < 2) return {"cephalometry", {heading, measurement_table(*current), conventions}};
   report::Paragraph follow_up_heading{"Follow-up over " + std::to_string(follow_up.time_points.size()) +
                                       " time points (mm and degrees)."};
   report::Section section{
-      "cephalometry", {heading, measurement_table(*current), conventions, follow_up_heading, follow_up_table(follow_up)}};
+      "cephalometry",
+      {heading, measurement_table(*current), conventions, follow_up_heading, follow_up_table(follow_up)}};
   if (wits_chart)
-    section.blocks.emplace_back(chart_block(*wits_chart, "Wits appraisal over months (0 mm: normal; negative: Class III)"));
+    section.blocks.emplace_back(
+        chart_block(*wits_chart, "Wits appraisal over months (0 mm: normal; negative: Class III)"));
   return section;
 }
 

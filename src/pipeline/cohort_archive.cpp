@@ -28,11 +28,13 @@ bool same_frame(const LandmarkFrame& a, const LandmarkFrame& b) {
 
 LandmarkFrame resolved(const LandmarkFrame& frame, const LandmarkSet& landmarks) {
   if (frame.geometry != LandmarkGeometry::kAuto) return frame;
-  const bool flat = std::all_of(landmarks.begin(), landmarks.end(), [](const Landmark& l) { return l.position.z() == 0; });
+  const bool flat =
+      std::all_of(landmarks.begin(), landmarks.end(), [](const Landmark& l) { return l.position.z() == 0; });
   return {flat ? LandmarkGeometry::kCephalogram : LandmarkGeometry::kVolumeLps, frame.axes};
 }
 
-bool already_stored(const std::vector<StoredLandmarks>& stored, const ceph::TimePointSet& tp, const LandmarkFrame& frame) {
+bool already_stored(const std::vector<StoredLandmarks>& stored, const ceph::TimePointSet& tp,
+                    const LandmarkFrame& frame) {
   for (const auto& s : stored)
     if (s.time_point.label == tp.label)
       return s.time_point.date == tp.date && same_frame(s.frame, frame) && same_points(s.landmarks, tp.landmarks);
@@ -45,7 +47,8 @@ std::vector<CaseRecord> cohort_cases(const Archive& archive, const std::string& 
     if (c.label == cohort_case_label(cohort_name)) cases.push_back(c);
   std::sort(cases.begin(), cases.end(), [](const CaseRecord& a, const CaseRecord& b) { return a.id < b.id; });
   if (cases.empty())
-    throw Error(ErrorCode::kNotFound, cohort_name, "no cohort of this name in the archive (maxillo followup --import-cohort)");
+    throw Error(ErrorCode::kNotFound, cohort_name,
+                "no cohort of this name in the archive (maxillo followup --import-cohort)");
   return cases;
 }
 
@@ -59,7 +62,8 @@ std::string patient_id_of(const Archive& archive, const CaseRecord& c) {
 std::string cohort_case_label(const std::string& cohort_name) { return "cohort:" + cohort_name; }
 
 CohortImportReport import_cohort(Archive& archive, const std::vector<ceph::CohortCase>& cohort,
-                                 const std::string& cohort_name, const LandmarkFrame& frame, const std::string& source) {
+                                 const std::string& cohort_name, const LandmarkFrame& frame,
+                                 const std::string& source) {
   if (cohort_name.empty()) throw Error(ErrorCode::kBadValue, source, "empty cohort name");
   CohortImportReport report;
   for (const auto& c : cohort)

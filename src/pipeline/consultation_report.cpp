@@ -54,8 +54,10 @@ std::string describe_reception(const Archive& archive, const CaseContents& conte
     const std::string way = received_by(archive, entry.series.id);
     if (way.empty()) continue;
     auto found = std::find_if(ways.begin(), ways.end(), [&](const auto& w) { return w.first == way; });
-    if (found == ways.end()) ways.emplace_back(way, 1);
-    else ++found->second;
+    if (found == ways.end())
+      ways.emplace_back(way, 1);
+    else
+      ++found->second;
   }
   std::string text;
   for (const auto& [way, count] : ways)
@@ -65,15 +67,19 @@ std::string describe_reception(const Archive& archive, const CaseContents& conte
 
 report::ReportModel model_header(const Archive& archive, const CaseContents& contents) {
   report::ReportModel model;
-  model.patient = {contents.patient.name, contents.patient.patient_id, contents.patient.birth_date, contents.patient.sex};
+  model.patient = {contents.patient.name, contents.patient.patient_id, contents.patient.birth_date,
+                   contents.patient.sex};
   model.case_label = contents.record.label;
   model.images_received = describe_reception(archive, contents);
   for (const auto& entry : contents.series) {
     const auto& s = entry.series;
     const StudyRecord* study = study_of(contents, s.study);
-    model.series.push_back({study ? study->date : "", s.modality, describe_series(study, s), int(s.instance_count),
-                            {s.pixel_spacing_column.value_or(0), s.pixel_spacing_row.value_or(0),
-                             s.slice_thickness.value_or(0)}});
+    model.series.push_back(
+        {study ? study->date : "",
+         s.modality,
+         describe_series(study, s),
+         int(s.instance_count),
+         {s.pixel_spacing_column.value_or(0), s.pixel_spacing_row.value_or(0), s.slice_thickness.value_or(0)}});
   }
   model.generated_at = utc_now();
   model.program_version = kVersion;
@@ -112,7 +118,10 @@ report::Section views_section(const std::vector<CaseView>& views) {
 // was made (program version, derivation key).
 report::Section contents_section(const Archive& archive, const CaseContents& contents) {
   report::Table series;
-  series.columns = {{"series", 0.4}, {"role", 0.15}, {"modality", 0.15}, {"instances", 0.15, report::Align::Right},
+  series.columns = {{"series", 0.4},
+                    {"role", 0.15},
+                    {"modality", 0.15},
+                    {"instances", 0.15, report::Align::Right},
                     {"archive id", 0.15, report::Align::Right}};
   for (const auto& entry : contents.series)
     series.rows.push_back({entry.series.description, entry.role, entry.series.modality,

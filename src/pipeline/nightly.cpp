@@ -144,14 +144,10 @@ int shard_of(const std::string& patient_id, const std::string& case_label, int c
 
 std::string_view to_string(NightlyOutcome outcome) {
   switch (outcome) {
-    case NightlyOutcome::kValidated:
-      return "validated";
-    case NightlyOutcome::kUpToDate:
-      return "up to date";
-    case NightlyOutcome::kFailed:
-      return "failed";
-    case NightlyOutcome::kNotValidated:
-      return "not validated";
+    case NightlyOutcome::kValidated: return "validated";
+    case NightlyOutcome::kUpToDate: return "up to date";
+    case NightlyOutcome::kFailed: return "failed";
+    case NightlyOutcome::kNotValidated: return "not validated";
   }
   return "?";
 }

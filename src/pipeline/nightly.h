@@ -38,8 +38,8 @@ struct NightlyOptions {
   ValidationOptions validation;
   // Claim cases from the archive's work queue instead of a static shard (nightly_worker.h).
   bool claim = false;
-  std::string worker;            // the lease holder's name; default host:pid
-  int64_t lease_seconds = 600;   // a dead worker's case is taken over after this long
+  std::string worker;                    // the lease holder's name; default host:pid
+  int64_t lease_seconds = 600;           // a dead worker's case is taken over after this long
   std::chrono::milliseconds poll{1000};  // how often a worker with nothing to claim looks again
 };
 

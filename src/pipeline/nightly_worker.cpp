@@ -75,7 +75,8 @@ std::vector<std::string> work_to_offer(const Archive& archive, const ValidationO
 }
 
 // Validates one claimed item and finishes it; returns what became of the case.
-NightlyCase work_on(Archive& archive, const std::string& item, const NightlyOptions& options, const std::string& holder) {
+NightlyCase work_on(Archive& archive, const std::string& item, const NightlyOptions& options,
+                    const std::string& holder) {
   const auto parsed = parse_nightly_work_item(item);
   NightlyCase result;
   auto finish = [&](const char* state, const std::string& reason) {

@@ -29,7 +29,7 @@ struct OcclusionRunOptions {
 };
 
 struct OcclusionRun {
-  TriangleMesh upper, lower;  // as repaired, in their files' coordinates
+  TriangleMesh upper, lower;                                // as repaired, in their files' coordinates
   Eigen::Isometry3d start = Eigen::Isometry3d::Identity();  // the upper arch's start pose
   occlusion::ArchRepairReport upper_repair, lower_repair;
   occlusion::AlignmentResult aligned;

@@ -18,8 +18,13 @@ using namespace maxillo::occlusion;
 using report::fixed;
 
 std::vector<std::string> motion_row(const std::string& label, const AnatomicalMotion& m) {
-  return {label,          fixed(m.anterior_mm, 2), fixed(m.superior_mm, 2), fixed(m.left_mm, 2),
-          fixed(m.pitch_deg, 2), fixed(m.roll_deg, 2), fixed(m.yaw_deg, 2)};
+  return {label,
+          fixed(m.anterior_mm, 2),
+          fixed(m.superior_mm, 2),
+          fixed(m.left_mm, 2),
+          fixed(m.pitch_deg, 2),
+          fixed(m.roll_deg, 2),
+          fixed(m.yaw_deg, 2)};
 }
 
 report::Table transform_table(const OcclusionRun& run, const AnatomicalFrame& frame) {
@@ -32,10 +37,11 @@ report::Table transform_table(const OcclusionRun& run, const AnatomicalFrame& fr
                    {"roll °", 0.115, report::Align::Right},
                    {"yaw °", 0.115, report::Align::Right}};
   const Eigen::Vector3d centroid = run.upper.vertices.colwise().mean().transpose();
-  table.rows.push_back(motion_row("final occlusion (from the scanned position)",
-                                  anatomical_motion(run.aligned.pose, frame, centroid)));
-  table.rows.push_back(motion_row("guided alignment (from the start position)",
-                                  anatomical_motion(run.aligned.pose * run.start.inverse(), frame, run.start * centroid)));
+  table.rows.push_back(
+      motion_row("final occlusion (from the scanned position)", anatomical_motion(run.aligned.pose, frame, centroid)));
+  table.rows.push_back(
+      motion_row("guided alignment (from the start position)",
+                 anatomical_motion(run.aligned.pose * run.start.inverse(), frame, run.start * centroid)));
   return table;
 }
 
@@ -62,8 +68,8 @@ report::KeyValueBlock alignment_facts(const OcclusionRun& run) {
   return {{{"Guided alignment", std::string(converged ? "converged" : "iteration_limit") + " after " +
                                     std::to_string(run.aligned.iterations) + " iterations"},
            {"Residual springs", springs + " mm"},
-           {"Deepest penetration", fixed(run.aligned.penetration_mm, 2) + " mm (allowed " +
-                                       fixed(run.allowed_penetration_mm, 2) + " mm)"},
+           {"Deepest penetration",
+            fixed(run.aligned.penetration_mm, 2) + " mm (allowed " + fixed(run.allowed_penetration_mm, 2) + " mm)"},
            {"Contacts below " + fixed(run.contact_threshold_mm, 1) + " mm",
             std::to_string(run.gram.upper.contact_vertices) + " upper and " +
                 std::to_string(run.gram.lower.contact_vertices) + " lower vertices, " +
@@ -73,13 +79,13 @@ report::KeyValueBlock alignment_facts(const OcclusionRun& run) {
 report::KeyValueBlock splint_facts(const OcclusionRun& run) {
   if (!run.splint) return {{{"Splint", run.splint_error.empty() ? "not made" : "not made: " + run.splint_error}}};
   const SplintReport& r = run.splint->report;
-  return {{{"Splint", "splint.stl, " + std::to_string(r.triangles) + " triangles, " + fixed(r.volume_mm3 / 1000, 2) +
-                          " cm³"},
+  return {{{"Splint",
+            "splint.stl, " + std::to_string(r.triangles) + " triangles, " + fixed(r.volume_mm3 / 1000, 2) + " cm³"},
            {"Watertight", r.watertight && r.components == 1 ? "yes (one closed piece)" : "no"},
            {"Thickness where no tooth is",
-            r.thickness_columns == 0 ? "not measured (no tooth-free column)"
-                                     : fixed(r.thickness_mm, 2) + " mm (thinnest of " +
-                                           std::to_string(r.thickness_columns) + " columns)"},
+            r.thickness_columns == 0
+                ? "not measured (no tooth-free column)"
+                : fixed(r.thickness_mm, 2) + " mm (thinnest of " + std::to_string(r.thickness_columns) + " columns)"},
            {"Fit", "closest " + fixed(r.min_distance_upper_mm, 2) + " mm to the upper arch, " +
                        fixed(r.min_distance_lower_mm, 2) + " mm to the lower; " +
                        std::to_string(r.intersecting_pairs_upper + r.intersecting_pairs_lower) +
@@ -112,7 +118,8 @@ report::Section occlusion_section(const OcclusionRun& run, const AnatomicalFrame
       "each arch from its occlusal side, coloured by the distance to the opposing arch."});
   report::ImageGrid images;
   images.per_row = splint_png.empty() ? 1 : 2;
-  images.figures.push_back({run.folder / "occlusionogram.png", "Occlusionogram: upper arch (left), lower arch (right)"});
+  images.figures.push_back(
+      {run.folder / "occlusionogram.png", "Occlusionogram: upper arch (left), lower arch (right)"});
   if (!splint_png.empty()) images.figures.push_back({splint_png, "Surgical splint on the lower arch"});
   section.blocks.push_back(images);
   section.blocks.push_back(alignment_facts(run));

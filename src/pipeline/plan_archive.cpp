@@ -42,9 +42,11 @@ StoredPlan store_plan(Archive& archive, int64_t case_id, const planning::Plan& p
   const std::string text = planning::serialise_plan(plan);
   const int version = static_cast<int>(artefacts_of_kind(archive, case_id, kPlanKind).size()) + 1;
   const std::string sha = archive.store_object(text);
-  const Json parameters{{"version", version}, {"format_version", plan.format_version}, {"description", plan.description}};
+  const Json parameters{
+      {"version", version}, {"format_version", plan.format_version}, {"description", plan.description}};
   const std::string inputs = sha256_hex(text + "\nversion " + std::to_string(version));
-  const int64_t id = archive.add_artefact(NewArtefact{case_id, kPlanKind, sha, "application/json", inputs, parameters.dump()});
+  const int64_t id =
+      archive.add_artefact(NewArtefact{case_id, kPlanKind, sha, "application/json", inputs, parameters.dump()});
   for (StoredPlan& stored : plan_history(archive, case_id))
     if (stored.artefact_id == id) return stored;
   return StoredPlan{id, version, "", "", sha, plan};
@@ -60,8 +62,8 @@ std::vector<StoredPlan> plan_history(const Archive& archive, int64_t case_id) {
     stored.created_at = record.created_at;
     stored.program_version = record.program_version;
     stored.sha256 = record.object_sha256;
-    stored.plan = planning::parse_plan(object_text(archive, record.object_sha256),
-                                       "plan artefact " + std::to_string(record.id));
+    stored.plan =
+        planning::parse_plan(object_text(archive, record.object_sha256), "plan artefact " + std::to_string(record.id));
     history.push_back(std::move(stored));
   }
   return history;
@@ -96,16 +98,16 @@ void store_plan_result(Archive& archive, int64_t case_id, const StoredPlan& plan
 }
 
 std::optional<std::vector<planning::PlannedMove>> stored_plan_moves(const Archive& archive, int64_t case_id,
-                                                                     const std::string& plan_sha256,
-                                                                     const LandmarkSet& landmarks) {
+                                                                    const std::string& plan_sha256,
+                                                                    const LandmarkSet& landmarks) {
   const std::string key = plan_application_key(plan_sha256, landmarks);
   const auto results = artefacts_of_kind(archive, case_id, kPlanResultKind);
-  const auto newest = std::find_if(results.rbegin(), results.rend(), [&](const auto& a) { return a.inputs_hash == key; });
+  const auto newest =
+      std::find_if(results.rbegin(), results.rend(), [&](const auto& a) { return a.inputs_hash == key; });
   if (newest == results.rend()) return std::nullopt;
   const std::string source = plan_result_source(*newest);
   return planning::planned_moves_from_json(stored_json(archive, *newest, source), source);
 }
-
 
 std::optional<PlanResultRecord> latest_plan_result(const Archive& archive, int64_t case_id) {
   const auto results = artefacts_of_kind(archive, case_id, kPlanResultKind);

@@ -49,8 +49,8 @@ void store_plan_result(Archive& archive, int64_t case_id, const StoredPlan& plan
 // plan again; none when it was not applied with them. A stored result whose moves do not read
 // back is Error(kArchiveCorrupt) naming the artefact and the key, never a re-application.
 std::optional<std::vector<planning::PlannedMove>> stored_plan_moves(const Archive& archive, int64_t case_id,
-                                                                     const std::string& plan_sha256,
-                                                                     const LandmarkSet& landmarks);
+                                                                    const std::string& plan_sha256,
+                                                                    const LandmarkSet& landmarks);
 // The newest stored plan result of the case, if any. One that does not read back (not JSON, a
 // key missing or mistyped, a newer format) is Error(kArchiveCorrupt) naming the artefact.
 std::optional<PlanResultRecord> latest_plan_result(const Archive& archive, int64_t case_id);

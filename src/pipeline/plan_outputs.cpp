@@ -68,8 +68,8 @@ PlanOutputs write_plan_outputs(const LabelVolume& labels, const LandmarkSet& lan
   const std::array views{render::StandardView::Frontal, render::StandardView::Lateral, render::StandardView::Oblique};
   render::RenderSettings settings;
   settings.size = {640, 640};
-  for (const auto& view : render_planned_skeleton(surfaces, moves, screws, anatomical_frame(landmarks),
-                                                            views, out_dir, "plan-", settings))
+  for (const auto& view :
+       render_planned_skeleton(surfaces, moves, screws, anatomical_frame(landmarks), views, out_dir, "plan-", settings))
     outputs.renders.push_back(view.png);
   return outputs;
 }
@@ -77,7 +77,8 @@ PlanOutputs write_plan_outputs(const LabelVolume& labels, const LandmarkSet& lan
 Json plan_outputs_json(const PlanOutputs& outputs) {
   Json segments = Json::array();
   for (const auto& s : outputs.segments)
-    segments.push_back({{"segment", planning::segment_name(s.segment)}, {"voxels", s.voxels}, {"volume_ml", s.volume_ml}});
+    segments.push_back(
+        {{"segment", planning::segment_name(s.segment)}, {"voxels", s.voxels}, {"volume_ml", s.volume_ml}});
   Json json{{"segments", segments}, {"bone_voxels", outputs.bone_voxels}};
   if (outputs.transfer_model)
     json["transfer_model"] = {{"watertight", outputs.transfer_model->watertight},
@@ -89,8 +90,8 @@ Json plan_outputs_json(const PlanOutputs& outputs) {
 std::vector<report::Block> plan_output_blocks(const PlanResultRecord::Osteotomy& osteotomy) {
   std::vector<report::Block> blocks;
   report::Table segments;
-  segments.columns = {{"bone segment", 0.5}, {"volume (ml)", 0.25, report::Align::Right},
-                      {"voxels", 0.25, report::Align::Right}};
+  segments.columns = {
+      {"bone segment", 0.5}, {"volume (ml)", 0.25, report::Align::Right}, {"voxels", 0.25, report::Align::Right}};
   int64_t total = 0;
   for (const PlanResultRecord::Segment& s : osteotomy.segments) {
     segments.rows.push_back({s.segment, fixed(s.volume_ml, 1), std::to_string(s.voxels)});

@@ -21,11 +21,11 @@
 namespace maxillo::pipeline {
 
 struct PlanOutputs {
-  std::vector<planning::SegmentStats> segments;  // volumes of the cut segments
-  int64_t bone_voxels = 0;                       // input bone and teeth (== the segments' sum)
-  std::optional<TransferModel> transfer_model;  // with a distraction only
+  std::vector<planning::SegmentStats> segments;                      // volumes of the cut segments
+  int64_t bone_voxels = 0;                                           // input bone and teeth (== the segments' sum)
+  std::optional<TransferModel> transfer_model;                       // with a distraction only
   std::vector<std::pair<std::string, std::filesystem::path>> files;  // label -> file
-  std::vector<std::filesystem::path> renders;    // frontal, lateral, oblique
+  std::vector<std::filesystem::path> renders;                        // frontal, lateral, oblique
 };
 
 // `labels` in the phantom tissue convention (sample/phantom.h; planning/jaw_separation.h makes

@@ -59,8 +59,8 @@ Record::Distraction read_distraction(JsonReader r) {
   const Json& points = simulation.required_array("points");
   for (size_t i = 0; i < points.size(); ++i) {
     JsonReader p = simulation.element(points, "points", i);
-    d.simulation.push_back(
-        {p.required_text("label"), p.required_point("target"), p.required_point("simulated"), p.required_number("error_mm")});
+    d.simulation.push_back({p.required_text("label"), p.required_point("target"), p.required_point("simulated"),
+                            p.required_number("error_mm")});
   }
   d.max_error_mm = simulation.required_number("max_error_mm");
   return d;

@@ -24,7 +24,7 @@ namespace maxillo::pipeline {
 struct PlanResultRecord {
   static constexpr int kFormatVersion = 1;
 
-  struct Vector {  // one distractor's vector
+  struct Vector {                                     // one distractor's vector
     Eigen::Vector3d entry = Eigen::Vector3d::Zero();  // LPS mm
     double outward_deg = 0, elevation_deg = 0, activation_mm = 0;
   };

@@ -18,7 +18,8 @@ constexpr double kFixedBoneOpacity = 0.45;
 constexpr double kMovedBoneOpacity = 0.6;
 constexpr double kScrewRadiusMm = 1.0;
 constexpr double kRodInFrontMm = 12;
-constexpr double kFocusMarginMm = 25;  // around the moved segments and screws  // the activation rod's part in front of the entry point
+constexpr double kFocusMarginMm =
+    25;  // around the moved segments and screws  // the activation rod's part in front of the entry point
 
 const SegmentTransform* move_of(const std::vector<SegmentTransform>& moves, planning::Segment segment) {
   for (const auto& m : moves)
@@ -36,27 +37,23 @@ std::vector<SegmentSurface> segment_surfaces(const planning::OsteotomyResult& cu
   options.target_triangles = target_triangles;
   // One segment per thread, each into its own slot: the same surfaces as one after the other.
   std::vector<SegmentSurface> surfaces(cut.stats.size());
-  for_each_slab(
-      0, int(cut.stats.size()),
-      [&](int first, int last) {
-        for (int s = first; s < last; ++s) {
-          const planning::Segment segment = cut.stats[size_t(s)].segment;
-          surfaces[size_t(s)] = {segment, extract_surface(cut.segments, uint8_t(segment), options)};
-        }
-      },
-      {.min_slab_size = 1});
+  for_each_slab(0, int(cut.stats.size()),
+                [&](int first, int last) {
+                  for (int s = first; s < last; ++s) {
+                    const planning::Segment segment = cut.stats[size_t(s)].segment;
+                    surfaces[size_t(s)] = {segment, extract_surface(cut.segments, uint8_t(segment), options)};
+                  }
+                },
+                {.min_slab_size = 1});
   return surfaces;
 }
 
-std::vector<render::ViewFile> render_planned_skeleton(const std::vector<SegmentSurface>& surfaces,
-                                                      const std::vector<SegmentTransform>& moves_by_segment,
-                                                      const std::vector<ScrewAxis>& screws,
-                                                      const AnatomicalFrame& frame,
-                                                      std::span<const render::StandardView> views,
-                                                      const std::filesystem::path& folder, std::string_view prefix,
-                                                      const render::RenderSettings& settings) {
+std::vector<render::ViewFile> render_planned_skeleton(
+    const std::vector<SegmentSurface>& surfaces, const std::vector<SegmentTransform>& moves_by_segment,
+    const std::vector<ScrewAxis>& screws, const AnatomicalFrame& frame, std::span<const render::StandardView> views,
+    const std::filesystem::path& folder, std::string_view prefix, const render::RenderSettings& settings) {
   std::deque<TriangleMesh> owned;  // the scene points into these; a deque never moves its elements
-  render::Scene scene, focus;  // focus: what moves, and the screws
+  render::Scene scene, focus;      // focus: what moves, and the screws
   for (const auto& surface : surfaces) {
     const SegmentTransform* move = move_of(moves_by_segment, surface.segment);
     if (!moves(move)) {

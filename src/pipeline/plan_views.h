@@ -30,13 +30,10 @@ struct SegmentTransform {
 // planned position (light blue) over a fainter ghost of where it was, and the screws as red
 // rods along their axes (from 12 mm in front of the entry point, where the activation rod
 // leaves the bone, to the screw's end), visible through the bone. Writes <prefix><view>.png into `folder` for each view.
-std::vector<render::ViewFile> render_planned_skeleton(const std::vector<SegmentSurface>& surfaces,
-                                                      const std::vector<SegmentTransform>& moves,
-                                                      const std::vector<ScrewAxis>& screws,
-                                                      const AnatomicalFrame& frame,
-                                                      std::span<const render::StandardView> views,
-                                                      const std::filesystem::path& folder,
-                                                      std::string_view prefix = "plan-",
-                                                      const render::RenderSettings& settings = {});
+std::vector<render::ViewFile> render_planned_skeleton(
+    const std::vector<SegmentSurface>& surfaces, const std::vector<SegmentTransform>& moves,
+    const std::vector<ScrewAxis>& screws, const AnatomicalFrame& frame, std::span<const render::StandardView> views,
+    const std::filesystem::path& folder, std::string_view prefix = "plan-",
+    const render::RenderSettings& settings = {});
 
 }  // namespace maxillo::pipeline

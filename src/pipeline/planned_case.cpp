@@ -19,7 +19,6 @@ struct PlannedCase::FaceModels {
   std::map<std::string, std::shared_ptr<const FaceModel>> by_key;
 };
 
-
 SegmentMoves moves_by_segment(const std::vector<planning::PlannedMove>& moves) {
   SegmentMoves by_segment;
   for (const auto& m : moves) by_segment[uint8_t(m.segment)] = m.transform;

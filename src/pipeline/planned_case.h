@@ -28,7 +28,7 @@ struct PlannedCase {
   Volume preop_ct;
   LandmarkSet landmarks;  // the newest landmark set
   CaseTissues tissues;
-  StoredPlan plan;  // the newest plan
+  StoredPlan plan;                // the newest plan
   planning::OsteotomyResult cut;  // bone segments of tissues.jaws
   SegmentMoves planned_moves;     // the segments the plan moves: stored by `plan apply`, or applied here
   TriangleMesh skin;              // pre-operative skin (case_surfaces.h)

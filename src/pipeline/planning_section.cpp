@@ -29,8 +29,12 @@ std::string point(const Eigen::Vector3d& p) {
 // The planned moves in the planning frame, one row per segment.
 report::Table moves_table(const std::vector<planning::PlannedMove>& moves) {
   report::Table table;
-  table.columns = {{"Segment", 1.2}, {"Advance", 1, Align::Right}, {"Vertical (+down)", 1, Align::Right},
-                   {"Lateral (+left)", 1, Align::Right}, {"Pitch", 0.8, Align::Right}, {"Roll", 0.8, Align::Right},
+  table.columns = {{"Segment", 1.2},
+                   {"Advance", 1, Align::Right},
+                   {"Vertical (+down)", 1, Align::Right},
+                   {"Lateral (+left)", 1, Align::Right},
+                   {"Pitch", 0.8, Align::Right},
+                   {"Roll", 0.8, Align::Right},
                    {"Yaw", 0.8, Align::Right}};
   for (const planning::PlannedMove& m : moves)
     table.rows.push_back({std::string(planning::segment_name(m.segment)), millimetres(m.move.advancement_mm),
@@ -41,8 +45,12 @@ report::Table moves_table(const std::vector<planning::PlannedMove>& moves) {
 
 report::Table vectors_table(const Record::Distraction& d) {
   report::Table table;
-  table.columns = {{"Side", 0.8}, {"Entry point (LPS mm)", 2.2}, {"Outward", 1, Align::Right},
-                   {"Elevation", 1, Align::Right}, {"Activation", 1.1, Align::Right}, {"Turns", 0.8, Align::Right},
+  table.columns = {{"Side", 0.8},
+                   {"Entry point (LPS mm)", 2.2},
+                   {"Outward", 1, Align::Right},
+                   {"Elevation", 1, Align::Right},
+                   {"Activation", 1.1, Align::Right},
+                   {"Turns", 0.8, Align::Right},
                    {"Days", 0.7, Align::Right}};
   const std::pair<const char*, std::pair<const Record::Vector*, const Record::ScheduleSide*>> sides[] = {
       {"right", {&d.right, &d.schedule.right}}, {"left", {&d.left, &d.schedule.left}}};
@@ -56,8 +64,9 @@ report::Table vectors_table(const Record::Distraction& d) {
 
 report::Table checks_table(const std::vector<Record::Check>& checks) {
   report::Table table;
-  table.columns = {{"Side", 0.7}, {"Check", 1.5}, {"Result", 0.9}, {"Value", 0.9, Align::Right},
-                   {"Limit", 0.9, Align::Right}, {"Reason", 3}};
+  table.columns = {
+      {"Side", 0.7}, {"Check", 1.5}, {"Result", 0.9}, {"Value", 0.9, Align::Right}, {"Limit", 0.9, Align::Right},
+      {"Reason", 3}};
   for (const Record::Check& c : checks)
     table.rows.push_back({c.side, c.name, c.status, millimetres(c.value_mm), millimetres(c.limit_mm), c.reason});
   return table;
@@ -65,12 +74,17 @@ report::Table checks_table(const std::vector<Record::Check>& checks) {
 
 report::Table schedule_table(const Record::Schedule& schedule) {
   report::Table table;
-  table.columns = {{"Side", 0.8}, {"Planned", 1, Align::Right}, {"Turns (360\u00b0)", 1.1, Align::Right},
-                   {"Delivered", 1, Align::Right}, {"First day", 1, Align::Right}, {"Last day", 1, Align::Right},
+  table.columns = {{"Side", 0.8},
+                   {"Planned", 1, Align::Right},
+                   {"Turns (360\u00b0)", 1.1, Align::Right},
+                   {"Delivered", 1, Align::Right},
+                   {"First day", 1, Align::Right},
+                   {"Last day", 1, Align::Right},
                    {"Days", 0.8, Align::Right}};
   for (const auto& [side, s] : {std::pair{"right", &schedule.right}, std::pair{"left", &schedule.left}})
     table.rows.push_back({side, millimetres(s->activation_mm, 2), fixed(s->turns, 2), millimetres(s->delivered_mm, 2),
-                          std::to_string(s->first_day), std::to_string(s->last_day), std::to_string(s->distraction_days)});
+                          std::to_string(s->first_day), std::to_string(s->last_day),
+                          std::to_string(s->distraction_days)});
   return table;
 }
 

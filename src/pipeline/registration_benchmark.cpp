@@ -99,7 +99,8 @@ std::vector<std::string> parameter_values(const std::string& text, const std::st
   return values;
 }
 
-std::vector<double> numbers(const std::vector<std::string>& values, size_t expected, const std::filesystem::path& file) {
+std::vector<double> numbers(const std::vector<std::string>& values, size_t expected,
+                            const std::filesystem::path& file) {
   if (values.size() != expected)
     throw Error(ErrorCode::kBadValue, file.string(), "expected " + std::to_string(expected) + " values");
   std::vector<double> out;
@@ -116,7 +117,8 @@ Volume read_cadaver_head(const std::filesystem::path& slices) {
   std::ofstream(folder / "cthead.mhd")
       << "ObjectType = Image\nNDims = 3\nDimSize = 256 256 113\nElementType = MET_USHORT\n"
          "ElementSpacing = 1.0 1.0 2.0\nElementByteOrderMSB = True\nOffset = 0 0 0\n"
-         "ElementDataFile = " << std::filesystem::absolute(slices).string() << "/CThead.%d 1 113 1\n";
+         "ElementDataFile = "
+      << std::filesystem::absolute(slices).string() << "/CThead.%d 1 113 1\n";
   const Volume raw = read_volume_file(folder / "cthead.mhd", {.hu_offset = -1024});
   // Slice 1 is the vertex and slices go down: reverse them so k runs superiorly (z = 0 at the
   // lowest slice, 224 mm at the vertex), as the DICOM series reads back.

@@ -34,7 +34,8 @@ ReportDicom write_report_dicom(Archive& archive, int64_t case_id, const std::fil
     quiet.progress = ProgressDisplay::Never;
     auto imported = archive.import_paths({dicom_out}, quiet);
     if (!imported.all_ok())
-      throw Error(ErrorCode::kProcessing, dicom_out.string(), "the report did not import: " + imported.problems[0].reason);
+      throw Error(ErrorCode::kProcessing, dicom_out.string(),
+                  "the report did not import: " + imported.problems[0].reason);
     archive.set_series_role(case_id, archive.resolve_series(result.series_instance_uid), "report");
   }
   return result;

@@ -10,9 +10,9 @@
 namespace maxillo::pipeline {
 
 struct SampleCase {
-  std::filesystem::path ct_folder;       // out/ct/slice0000.dcm ...
-  std::filesystem::path markups_file;    // out/landmarks.mrk.json (3D Slicer markups, LPS)
-  std::filesystem::path csv_file;        // out/landmarks.csv (label,x,y,z; LPS)
+  std::filesystem::path ct_folder;     // out/ct/slice0000.dcm ...
+  std::filesystem::path markups_file;  // out/landmarks.mrk.json (3D Slicer markups, LPS)
+  std::filesystem::path csv_file;      // out/landmarks.csv (label,x,y,z; LPS)
   WrittenSeries series;
   LandmarkSet landmarks;
   VolumeGeometry geometry;

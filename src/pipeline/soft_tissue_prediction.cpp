@@ -60,8 +60,7 @@ Solved solve(const softtissue::TetMesh& mesh, const softtissue::BoundaryConditio
     softtissue::NewtonOptions newton;
     newton.load_steps = 2;
     auto result = softtissue::solve_nonlinear_static(mesh, material, bc, newton);
-    if (!result.converged)
-      throw Error(ErrorCode::kProcessing, "non-linear FEM", "Newton's method did not converge");
+    if (!result.converged) throw Error(ErrorCode::kProcessing, "non-linear FEM", "Newton's method did not converge");
     return {result.displacement, result.newton_iterations};
   }
   if (o.model == SoftTissueModel::kMassSpring) {
@@ -119,11 +118,12 @@ std::optional<SoftTissueModel> parse_model(std::string_view name) {
 std::vector<softtissue::RegionPlane> default_face_region_planes(const LandmarkSet& landmarks) {
   const auto frame = anatomical_frame(landmarks);
   const auto orbitale = bilateral_mean(landmarks, "Or"), porion = bilateral_mean(landmarks, "Po");
-  if (!orbitale || !porion) throw Error(ErrorCode::kBadValue, "face region", "needs the landmarks Or and Po (or their R/L)");
+  if (!orbitale || !porion)
+    throw Error(ErrorCode::kBadValue, "face region", "needs the landmarks Or and Po (or their R/L)");
   const Eigen::Vector3d menton = require_landmark(landmarks, "Me", "face region");
-  return {{*orbitale, -frame.superior},                              // below the orbits
+  return {{*orbitale, -frame.superior},                                // below the orbits
           {menton - kBelowMentonMm * frame.superior, frame.superior},  // above a plane under the chin
-          {*porion, frame.anterior}};                                // in front of the ears
+          {*porion, frame.anterior}};                                  // in front of the ears
 }
 
 std::string face_model_key(const LabelVolume& tissues, const LandmarkSet& landmarks, const SoftTissueOptions& options) {
@@ -182,11 +182,13 @@ SoftTissuePrediction predict_soft_tissue(const SoftTissueInput& input, const Sof
   prediction.seconds.meshing = given ? 0 : model.meshing_seconds;
 
   auto start = Clock::now();
-  auto attachment = softtissue::attach_to_bone(prediction.mesh, *input.segments, input.moves, model.planes, options.attachment);
+  auto attachment =
+      softtissue::attach_to_bone(prediction.mesh, *input.segments, input.moves, model.planes, options.attachment);
   prediction.bc = std::move(attachment.bc);
   prediction.seconds.attachment = seconds_since(start);
   if (softtissue::count_nodes(prediction.bc, softtissue::NodeConstraint::kFixed) == 0)
-    throw Error(ErrorCode::kProcessing, "soft tissue model", "no node touches unmoved bone or a cut: the model would float");
+    throw Error(ErrorCode::kProcessing, "soft tissue model",
+                "no node touches unmoved bone or a cut: the model would float");
 
   start = Clock::now();
   auto solved = solve(prediction.mesh, prediction.bc, options, prediction.seconds.assembly);

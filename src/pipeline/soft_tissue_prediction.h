@@ -33,20 +33,20 @@ std::string_view model_title(SoftTissueModel model);  // "mass tensor model", ..
 struct SoftTissueOptions {
   SoftTissueModel model = SoftTissueModel::kMassTensor;
   double poisson_ratio = 0.46;
-  double young_modulus_mpa = 0.003;  // scales forces only: the static answer does not depend on it
+  double young_modulus_mpa = 0.003;     // scales forces only: the static answer does not depend on it
   double gradient_threshold_mm = 1e-3;  // local dynamic stop criterion (mass tensor, mass-spring)
-  int max_sweeps = 100000;  // their sweep limit: a model still moving after it is an error, not an answer
+  int max_sweeps = 100000;              // their sweep limit: a model still moving after it is an error, not an answer
   tetmesh::TetMeshingOptions meshing;
   softtissue::AttachmentOptions attachment;
-  double skin_binding_mm = 4.0;     // skin farther from the model keeps its place
+  double skin_binding_mm = 4.0;         // skin farther from the model keeps its place
   std::vector<uint8_t> soft_labels{1};  // phantom and CT segmentation both use 1 for soft tissue
 };
 
 struct SoftTissueInput {
-  const LabelVolume* tissues = nullptr;   // tissue labels (soft tissue = options.soft_labels)
-  const LabelVolume* segments = nullptr;  // bone segments (planning/osteotomy.h), same geometry
-  const TriangleMesh* skin = nullptr;     // dense pre-operative skin surface
-  LandmarkSet landmarks;                  // for the region's planes
+  const LabelVolume* tissues = nullptr;        // tissue labels (soft tissue = options.soft_labels)
+  const LabelVolume* segments = nullptr;       // bone segments (planning/osteotomy.h), same geometry
+  const TriangleMesh* skin = nullptr;          // dense pre-operative skin surface
+  LandmarkSet landmarks;                       // for the region's planes
   std::map<uint8_t, Eigen::Isometry3d> moves;  // segment label -> planned rigid move
 };
 
@@ -68,10 +68,10 @@ struct SoftTissuePrediction {
   softtissue::TetMesh mesh;
   softtissue::MeshQuality quality;
   softtissue::BoundaryConditions bc;
-  Eigen::MatrixX3d node_displacement;   // n x 3, mm
-  int iterations = 0;                   // sweeps (MTM, MSM) or Krylov iterations (FEM)
-  TriangleMesh skin_after;              // the skin's vertices moved, same faces
-  Eigen::MatrixX3d skin_displacement;   // per skin vertex, mm
+  Eigen::MatrixX3d node_displacement;  // n x 3, mm
+  int iterations = 0;                  // sweeps (MTM, MSM) or Krylov iterations (FEM)
+  TriangleMesh skin_after;             // the skin's vertices moved, same faces
+  Eigen::MatrixX3d skin_displacement;  // per skin vertex, mm
   int skin_vertices_bound = 0;
   MeshingOutcome meshing;
   SoftTissueTimings seconds;

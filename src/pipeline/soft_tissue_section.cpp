@@ -93,10 +93,11 @@ SoftTissueViewFiles render_soft_tissue_views(const TriangleMesh& skin_before, co
   before.meshes.push_back({&skin_before, render::kSkinTone, 1.0, {}});
   after.meshes.push_back({&prediction.skin_after, render::kSkinTone, 1.0, {}});
   displacement.meshes.push_back({&prediction.skin_after, render::kSkinTone, 1.0, magnitude});
-  files.before = pngs(render::render_view_files(before, frame, kViews, folder, "soft-tissue-before-", settings, bounds));
+  files.before =
+      pngs(render::render_view_files(before, frame, kViews, folder, "soft-tissue-before-", settings, bounds));
   files.after = pngs(render::render_view_files(after, frame, kViews, folder, "soft-tissue-after-", settings, bounds));
-  files.displacement =
-      pngs(render::render_view_files(displacement, frame, kViews, folder, "soft-tissue-displacement-", settings, bounds));
+  files.displacement = pngs(
+      render::render_view_files(displacement, frame, kViews, folder, "soft-tissue-displacement-", settings, bounds));
   return files;
 }
 
@@ -126,11 +127,13 @@ report::Section soft_tissue_section(const SoftTissuePrediction& prediction, cons
   report::Section section{"soft_tissue", {}};
   section.blocks.push_back(report::Paragraph{
       "Predicted face for the planned bone moves (" + summary.plan_text + "), computed with the " +
-      std::string(model_title(summary.options.model)) + " on a tetrahedral model of the facial soft tissue. "
+      std::string(model_title(summary.options.model)) +
+      " on a tetrahedral model of the facial soft tissue. "
       "Tissue touching a moved bone segment follows it; tissue on unmoved bone and on the model's cut planes "
       "(below the orbits, under the chin, in front of the ears) stays in place."});
   report::KeyValueBlock facts{{
-      {"Model", std::string(model_title(summary.options.model)) + ", Poisson ratio " + fixed(summary.options.poisson_ratio, 2)},
+      {"Model",
+       std::string(model_title(summary.options.model)) + ", Poisson ratio " + fixed(summary.options.poisson_ratio, 2)},
       {"Tetrahedral mesh", std::to_string(prediction.mesh.tet_count()) + " tetrahedra, " +
                                std::to_string(prediction.mesh.node_count()) + " nodes (cell size " +
                                fixed(prediction.meshing.cell_size_mm, 1) + " mm)"},
@@ -145,11 +148,12 @@ report::Section soft_tissue_section(const SoftTissuePrediction& prediction, cons
   }};
   section.blocks.push_back(facts);
   if (prediction.meshing.over_budget(prediction.mesh))
-    section.blocks.push_back(report::Note{
-        "The tetrahedral mesh is over its budget: " + std::to_string(prediction.mesh.tet_count()) +
-        " tetrahedra against at most " + std::to_string(prediction.meshing.tet_budget) + " asked for, after " +
-        std::to_string(prediction.meshing.attempts) + " meshings up to a cell size of " +
-        fixed(prediction.meshing.cell_size_mm, 1) + " mm. The prediction used it as it is; it took longer than planned."});
+    section.blocks.push_back(
+        report::Note{"The tetrahedral mesh is over its budget: " + std::to_string(prediction.mesh.tet_count()) +
+                     " tetrahedra against at most " + std::to_string(prediction.meshing.tet_budget) +
+                     " asked for, after " + std::to_string(prediction.meshing.attempts) +
+                     " meshings up to a cell size of " + fixed(prediction.meshing.cell_size_mm, 1) +
+                     " mm. The prediction used it as it is; it took longer than planned."});
   auto grid = [](const std::vector<std::filesystem::path>& files, const std::string& what) {
     report::ImageGrid g;
     g.per_row = 3;
@@ -161,8 +165,9 @@ report::Section soft_tissue_section(const SoftTissuePrediction& prediction, cons
   section.blocks.push_back(grid(views.after, "Predicted"));
   section.blocks.push_back(grid(views.displacement, "Displacement"));
   if (!summary.soft_landmarks.empty()) {
-    section.blocks.push_back(report::Paragraph{"Predicted displacement of the soft tissue landmarks "
-                                               "(forward, up and to the patient's left in the anatomical frame):"});
+    section.blocks.push_back(
+        report::Paragraph{"Predicted displacement of the soft tissue landmarks "
+                          "(forward, up and to the patient's left in the anatomical frame):"});
     section.blocks.push_back(landmark_table(prediction, frame, summary.soft_landmarks));
   }
   return section;

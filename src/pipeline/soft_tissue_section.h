@@ -29,9 +29,9 @@ report::ImageGrid render_uncertainty_views(const TriangleMesh& skin_after, const
                                            const AnatomicalFrame& frame, const std::filesystem::path& folder);
 
 struct SoftTissueSummary {
-  std::string plan_text;          // e.g. "Le Fort I, maxilla 6.0 mm advancement"
+  std::string plan_text;  // e.g. "Le Fort I, maxilla 6.0 mm advancement"
   SoftTissueOptions options;
-  LandmarkSet soft_landmarks;     // pre-operative soft tissue landmarks to report (may be empty)
+  LandmarkSet soft_landmarks;  // pre-operative soft tissue landmarks to report (may be empty)
 };
 
 report::Section soft_tissue_section(const SoftTissuePrediction& prediction, const SoftTissueViewFiles& views,

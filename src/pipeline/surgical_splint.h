@@ -12,12 +12,12 @@
 namespace maxillo::pipeline {
 
 struct SplintReport {
-  bool watertight = false;   // every edge shared by two faces, consistently oriented
+  bool watertight = false;  // every edge shared by two faces, consistently oriented
   int components = 0;
   double volume_mm3 = 0;
   int64_t triangles = 0;
-  double thickness_mm = 0;   // thinnest of the sampled tooth-free columns (ray through the wafer)
-  int thickness_columns = 0; // how many columns were sampled
+  double thickness_mm = 0;    // thinnest of the sampled tooth-free columns (ray through the wafer)
+  int thickness_columns = 0;  // how many columns were sampled
   // Smallest distance from a splint vertex to each arch's surface (mm): at most
   // clearance + one voxel where the imprint fits the tooth.
   double min_distance_upper_mm = 0, min_distance_lower_mm = 0;
@@ -34,8 +34,8 @@ struct Splint {
 
 // The splint between the arches at their final occlusion (upper placed by upper_pose).
 // Throws Error(kProcessing) when the arches are not in occlusion or no closed surface results.
-Splint make_splint(const DistanceField& upper, const DistanceField& lower,
-                   const Eigen::Isometry3d& upper_pose, const occlusion::SplintOptions& options = {});
+Splint make_splint(const DistanceField& upper, const DistanceField& lower, const Eigen::Isometry3d& upper_pose,
+                   const occlusion::SplintOptions& options = {});
 
 // Total length of `mesh`'s interior along the line through `point` with unit `direction` (the
 // ray is cast both ways; the mesh must be closed). Brute force: for a few columns.

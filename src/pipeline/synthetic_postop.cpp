@@ -25,10 +25,9 @@ constexpr double kMovedSkinMm = 0.02;  // skin that moves less than this keeps i
 // volume around a structure, whose HU belongs to it.
 bool touches_label(const LabelVolume& labels, const Eigen::Vector3d& lps, uint8_t label) {
   const Eigen::Vector3i ijk = labels.geometry.continuous_index(lps).array().round().cast<int>();
-  static const std::array<Eigen::Vector3i, 7> offsets{Eigen::Vector3i(0, 0, 0),  Eigen::Vector3i(1, 0, 0),
-                                                      Eigen::Vector3i(-1, 0, 0), Eigen::Vector3i(0, 1, 0),
-                                                      Eigen::Vector3i(0, -1, 0), Eigen::Vector3i(0, 0, 1),
-                                                      Eigen::Vector3i(0, 0, -1)};
+  static const std::array<Eigen::Vector3i, 7> offsets{
+      Eigen::Vector3i(0, 0, 0),  Eigen::Vector3i(1, 0, 0), Eigen::Vector3i(-1, 0, 0), Eigen::Vector3i(0, 1, 0),
+      Eigen::Vector3i(0, -1, 0), Eigen::Vector3i(0, 0, 1), Eigen::Vector3i(0, 0, -1)};
   for (const auto& o : offsets) {
     const Eigen::Vector3i n = ijk + o;
     if (labels.geometry.contains(n.x(), n.y(), n.z()) &&
@@ -272,21 +271,24 @@ SyntheticPostop make_synthetic_postop(const PlannedCase& planned, const Syntheti
   // in parallel.
   const int n = options.skin_block_voxels;
   const Eigen::Vector3i last = g.size - Eigen::Vector3i::Ones();
-  for_each_slab(0, (g.size.z() + n - 1) / n, [&](int layer0, int layer1) {
-    for (int layer = layer0; layer < layer1; ++layer)
-      for (int j0 = 0; j0 < g.size.y(); j0 += n)
-        for (int i0 = 0; i0 < g.size.x(); i0 += n) {
-          const Eigen::Vector3i lo(i0, j0, layer * n);
-          const Eigen::Vector3i hi = (lo + Eigen::Vector3i::Constant(n - 1)).cwiseMin(last);
-          VoxelCube cube = voxel_cube(g, result.postop_to_preop, lo, hi);
-          for (int k = lo.z(); k <= hi.z(); ++k)
-            for (int j = lo.y(); j <= hi.y(); ++j)
-              for (int i = lo.x(); i <= hi.x(); ++i) {
-                const Eigen::Vector3d y = result.postop_to_preop * g.world(Eigen::Vector3d(i, j, k));
-                result.ct.at(i, j, k) = int16_t(std::lround(std::clamp(voxels.hu(y, cube), -1024.0, 3071.0)));
-              }
-        }
-  }, {.min_slab_size = 1});
+  for_each_slab(0, (g.size.z() + n - 1) / n,
+                [&](int layer0, int layer1) {
+                  for (int layer = layer0; layer < layer1; ++layer)
+                    for (int j0 = 0; j0 < g.size.y(); j0 += n)
+                      for (int i0 = 0; i0 < g.size.x(); i0 += n) {
+                        const Eigen::Vector3i lo(i0, j0, layer * n);
+                        const Eigen::Vector3i hi = (lo + Eigen::Vector3i::Constant(n - 1)).cwiseMin(last);
+                        VoxelCube cube = voxel_cube(g, result.postop_to_preop, lo, hi);
+                        for (int k = lo.z(); k <= hi.z(); ++k)
+                          for (int j = lo.y(); j <= hi.y(); ++j)
+                            for (int i = lo.x(); i <= hi.x(); ++i) {
+                              const Eigen::Vector3d y = result.postop_to_preop * g.world(Eigen::Vector3d(i, j, k));
+                              result.ct.at(i, j, k) =
+                                  int16_t(std::lround(std::clamp(voxels.hu(y, cube), -1024.0, 3071.0)));
+                            }
+                      }
+                },
+                {.min_slab_size = 1});
   return result;
 }
 

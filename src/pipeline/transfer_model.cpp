@@ -32,8 +32,8 @@ Box model_box(const LabelVolume& segments, const std::vector<ScrewAxis>& screws,
       box.extend(Eigen::Vector3d(double(v % nx), double((v / nx) % ny), double(v / (nx * ny))).cwiseProduct(g.spacing));
   if (box.empty()) throw Error(ErrorCode::kEmptyResult, "transfer model", "the plan has no Le Fort I maxilla segment");
   for (const auto& s : screws) {
-    for (const Eigen::Vector3d& end : {Eigen::Vector3d(s.entry - o.outside_mm * s.direction),
-                                       Eigen::Vector3d(s.entry + s.length_mm * s.direction)})
+    for (const Eigen::Vector3d& end :
+         {Eigen::Vector3d(s.entry - o.outside_mm * s.direction), Eigen::Vector3d(s.entry + s.length_mm * s.direction)})
       box.extend(g.continuous_index(end).cwiseProduct(g.spacing));
   }
   box.lo.array() -= o.margin_mm;

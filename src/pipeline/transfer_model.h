@@ -26,11 +26,11 @@ struct ScrewAxis {
 };
 
 struct TransferModelOptions {
-  double voxel_mm = 0.5;          // model resolution
-  double bore_radius_mm = 1.1;    // screw (M2) + printing clearance
-  double wall_mm = 1.5;           // tube wall thickness
-  double outside_mm = 6;          // the tube stands this far in front of the entry point
-  double margin_mm = 12;          // box around the maxilla and the tubes
+  double voxel_mm = 0.5;        // model resolution
+  double bore_radius_mm = 1.1;  // screw (M2) + printing clearance
+  double wall_mm = 1.5;         // tube wall thickness
+  double outside_mm = 6;        // the tube stands this far in front of the entry point
+  double margin_mm = 12;        // box around the maxilla and the tubes
   int64_t target_triangles = 400000;
 };
 

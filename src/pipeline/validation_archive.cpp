@@ -83,7 +83,8 @@ std::optional<StoredValidation> find_validation(const Archive& archive, int64_t 
   return find_validation(archive, archive.artefacts(case_id), inputs_hash);  // one query: load needs them all
 }
 
-std::optional<StoredValidation> find_validation(const Archive& archive, const std::vector<ArtefactRecord>& case_artefacts,
+std::optional<StoredValidation> find_validation(const Archive& archive,
+                                                const std::vector<ArtefactRecord>& case_artefacts,
                                                 const std::string& inputs_hash) {
   const auto summary = newest(case_artefacts, kSummaryKind, inputs_hash);
   if (!summary) return std::nullopt;

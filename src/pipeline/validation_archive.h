@@ -33,7 +33,8 @@ void store_validation(Archive& archive, const CaseValidation& validation);
 std::optional<StoredValidation> find_validation(const Archive& archive, int64_t case_id,
                                                 const std::string& inputs_hash);
 // The same found among the case's artefacts, read already (the nightly scan's): no query.
-std::optional<StoredValidation> find_validation(const Archive& archive, const std::vector<ArtefactRecord>& case_artefacts,
+std::optional<StoredValidation> find_validation(const Archive& archive,
+                                                const std::vector<ArtefactRecord>& case_artefacts,
                                                 const std::string& inputs_hash);
 // The case's newest stored validation, if any (for the consultation report).
 std::optional<StoredValidation> latest_validation(const Archive& archive, int64_t case_id);

@@ -27,8 +27,8 @@ report::Table regions_table(const std::vector<ValidationRecord::Region>& regions
   report::Table table;
   table.columns = statistics_columns("Region");
   for (const auto& r : regions)
-    table.rows.push_back(statistics_row(r.region, corresponding ? r.corresponding.value_or(validation::DistanceStatistics{})
-                                                                : r.closest));
+    table.rows.push_back(statistics_row(
+        r.region, corresponding ? r.corresponding.value_or(validation::DistanceStatistics{}) : r.closest));
   return table;
 }
 
@@ -59,13 +59,14 @@ std::vector<report::Block> validation_blocks(const StoredValidation& stored) {
   const ValidationRecord& record = stored.record;
   const ValidationRecord::Registration& registration = record.registration;
   std::vector<report::Block> blocks;
-  blocks.push_back(report::Paragraph{"The post-operative CT (" + date_text(record.postop_date) +
-                                     ") was registered onto the pre-operative CT (" + date_text(record.preop_date) +
-                                     ") by mutual information on the cranium above the infraorbital rim. Each bone "
-                                     "segment the plan moves was then fitted to the post-operative bone (ICP from its "
-                                     "planned move), and the face was predicted again for the moves actually made. "
-                                     "Distances run from the predicted to the post-operative skin, on the outer face "
-                                     "without eyes and neck; negative means the prediction lies behind the real face."});
+  blocks.push_back(
+      report::Paragraph{"The post-operative CT (" + date_text(record.postop_date) +
+                        ") was registered onto the pre-operative CT (" + date_text(record.preop_date) +
+                        ") by mutual information on the cranium above the infraorbital rim. Each bone "
+                        "segment the plan moves was then fitted to the post-operative bone (ICP from its "
+                        "planned move), and the face was predicted again for the moves actually made. "
+                        "Distances run from the predicted to the post-operative skin, on the outer face "
+                        "without eyes and neck; negative means the prediction lies behind the real face."});
   blocks.push_back(report::KeyValueBlock{{
       {"Registration", "mutual information " + fixed(registration.metric, 3) + ", " +
                            std::to_string(registration.iterations) + " iterations, " + fixed(registration.seconds, 1) +
@@ -90,7 +91,8 @@ std::vector<report::Block> validation_blocks(const StoredValidation& stored) {
   blocks.push_back(maps);
   blocks.push_back(report::Note{
       "Error map: blue where the prediction lies behind the real face, red where it lies in front, white where they "
-      "agree; the scale runs from -3 to +3 mm (beyond it the end colours). Skin outside the compared region is plain."});
+      "agree; the scale runs from -3 to +3 mm (beyond it the end colours). Skin outside the compared region is "
+      "plain."});
   blocks.push_back(report::ImageGrid{{{stored.profile,
                                        "Mid-sagittal profiles: pre-operative (grey), predicted (blue) "
                                        "and post-operative (red), millimetres from subnasale"}},

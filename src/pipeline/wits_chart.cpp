@@ -68,7 +68,8 @@ std::optional<std::filesystem::path> case_wits_chart(Archive& archive, int64_t c
   if (!has_wits_chart(follow_up)) return std::nullopt;
   const Json parameters = chart_parameters(follow_up);
   const std::string key = derivation_key({}, parameters);
-  if (auto stored = archive.find_artefact(case_id, kArtefactKind, key)) return archive.object_path(stored->object_sha256);
+  if (auto stored = archive.find_artefact(case_id, kArtefactKind, key))
+    return archive.object_path(stored->object_sha256);
 
   TemporaryFolder scratch("maxillo-chart");
   const auto png = scratch / "wits.png";

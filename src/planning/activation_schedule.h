@@ -28,16 +28,16 @@ struct SideSchedule {
   double turns = 0;          // quarter-turn resolution
   double delivered_mm = 0;   // turns x mm_per_turn
   int distraction_days = 0;
-  int first_day = 0;         // first activation day (0 when there is nothing to activate)
-  int last_day = 0;          // last activation day
+  int first_day = 0;  // first activation day (0 when there is nothing to activate)
+  int last_day = 0;   // last activation day
 };
 
 struct ActivationSchedule {
   ScheduleSettings settings;
   double turns_per_activation = 0;  // rate / activations_per_day / mm_per_turn
   SideSchedule right, left;
-  int distraction_end_day = 0;      // last activation day of either side
-  int consolidation_end_day = 0;    // distractor removal at the earliest
+  int distraction_end_day = 0;    // last activation day of either side
+  int consolidation_end_day = 0;  // distractor removal at the earliest
 };
 
 // Error(kBadValue, "schedule", reason) for a non-positive rate, turn pitch or activation count,

@@ -53,8 +53,7 @@ PlanningFrame planning_frame(const LandmarkSet& landmarks) {
   if (sn.norm() < 10) return frame;  // S and N (nearly) coincide: keep Frankfort
   sn.normalize();
   // Rotating about +left by +angle turns anterior towards inferior (anterior end down).
-  const Vector3d anterior =
-      Eigen::AngleAxisd(radians(ceph::kNasionFrameRotationDeg), frame.left) * sn;
+  const Vector3d anterior = Eigen::AngleAxisd(radians(ceph::kNasionFrameRotationDeg), frame.left) * sn;
   frame.anterior = anterior.normalized();
   frame.superior = frame.anterior.cross(frame.left).normalized();
   frame.origin = *n;
@@ -65,8 +64,8 @@ PlanningFrame planning_frame(const LandmarkSet& landmarks) {
 Eigen::Isometry3d to_transform(const PlanningFrame& frame, const FrameMove& move, const Vector3d& pivot) {
   const Matrix3d basis = frame.basis();
   const Matrix3d rotation = basis * frame_rotation(move) * basis.transpose();
-  const Vector3d translation = move.advancement_mm * frame.anterior - move.vertical_mm * frame.superior +
-                               move.lateral_mm * frame.left;
+  const Vector3d translation =
+      move.advancement_mm * frame.anterior - move.vertical_mm * frame.superior + move.lateral_mm * frame.left;
   Eigen::Isometry3d transform = Eigen::Isometry3d::Identity();
   transform.linear() = rotation;
   transform.translation() = pivot + translation - rotation * pivot;

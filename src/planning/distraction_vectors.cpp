@@ -17,8 +17,8 @@ double radians(double degrees) { return degrees * std::numbers::pi / 180; }
 // +1 for the patient's left half, -1 for the right (the frame's transverse axis points left).
 double outward_sign(Side side) { return side == Side::Left ? 1.0 : -1.0; }
 
-DistractionVector vector_of(const PlanningFrame& frame, const MaxillaryTarget& target,
-                            const MaxillaryReference& ref, Side side, const Vector3d& entry) {
+DistractionVector vector_of(const PlanningFrame& frame, const MaxillaryTarget& target, const MaxillaryReference& ref,
+                            Side side, const Vector3d& entry) {
   DistractionVector v;
   v.side = side;
   v.entry = entry;
@@ -52,7 +52,8 @@ double midline_yaw_deg(const PlanningFrame& frame, const MaxillaryTarget& target
   return degrees(std::asin(target.midline_shift_mm / lever));
 }
 
-Eigen::Isometry3d common_move(const PlanningFrame& frame, const MaxillaryTarget& target, const MaxillaryReference& ref) {
+Eigen::Isometry3d common_move(const PlanningFrame& frame, const MaxillaryTarget& target,
+                              const MaxillaryReference& ref) {
   FrameMove move;
   move.advancement_mm = target.advancement_mm;
   move.vertical_mm = target.vertical_mm;

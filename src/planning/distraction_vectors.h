@@ -80,7 +80,7 @@ struct DistractionVectors {
   // Sum of the two outward angles: the angle between the axes in the horizontal plane,
   // + divergent (widening), - convergent.
   double divergence_deg = 0;
-  double angle_deg = 0;       // 3D angle between the axes
+  double angle_deg = 0;  // 3D angle between the axes
 };
 
 // The common rigid move of the maxilla (both halves before widening) as an LPS transform.

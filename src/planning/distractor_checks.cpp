@@ -14,8 +14,8 @@ namespace {
 
 using Eigen::Vector3d;
 
-constexpr double kStepMm = 0.5;          // sampling step along the screw
-constexpr double kMaxWallMm = 10;        // the axis must reach sinus air this close to the entry
+constexpr double kStepMm = 0.5;    // sampling step along the screw
+constexpr double kMaxWallMm = 10;  // the axis must reach sinus air this close to the entry
 constexpr int kRingSamples = 12;
 // The first millimetres behind the anterior wall are the entry hole's rim, where the screw
 // crosses the curved front of the sinus: the clearance ring is checked from there on.
@@ -50,8 +50,8 @@ std::pair<double, double> sinus_band(const PlanningFrame& frame, const LandmarkS
   const auto ans = find_landmark(landmarks, "ANS"), pns = find_landmark(landmarks, "PNS");
   if (ans && pns) low = std::min(ans->dot(frame.superior), pns->dot(frame.superior)) - 5;
   for (const char* label : {"OrR", "OrL", "Or"})
-    if (auto o = find_landmark(landmarks, label)) high = std::isinf(high) ? o->dot(frame.superior)
-                                                                          : std::max(high, o->dot(frame.superior));
+    if (auto o = find_landmark(landmarks, label))
+      high = std::isinf(high) ? o->dot(frame.superior) : std::max(high, o->dot(frame.superior));
   return {low, high};
 }
 
@@ -206,8 +206,8 @@ DistractorCheck check_teeth(const LabelVolume& volume, const AnatomyLabels& anat
   const double clearance = nearest - device.screw_diameter_mm / 2;
   DistractorCheck check = make_check("tooth distance", v.side, clearance, limits.tooth_distance_mm);
   if (clearance < limits.tooth_distance_mm)
-    return fail(check, "the screw passes " + mm(std::max(clearance, 0.0)) +
-                           " from a tooth root or bud; at least " + mm(limits.tooth_distance_mm) + " needed");
+    return fail(check, "the screw passes " + mm(std::max(clearance, 0.0)) + " from a tooth root or bud; at least " +
+                           mm(limits.tooth_distance_mm) + " needed");
   return check;
 }
 
@@ -231,8 +231,8 @@ DistractorCheck check_nerve(const DistractionVector& v, const LandmarkSet& landm
     return check;
   }
   const Vector3d foramen = *orbitale - limits.foramen_below_orbitale_mm * frame.superior;
-  const double distance =
-      point_segment_distance(foramen, v.entry, v.entry - device.screw_length_mm * v.axis) - device.screw_diameter_mm / 2;
+  const double distance = point_segment_distance(foramen, v.entry, v.entry - device.screw_length_mm * v.axis) -
+                          device.screw_diameter_mm / 2;
   check.value = distance;
   if (distance < limits.nerve_distance_mm)
     return fail(check, "the screw passes " + mm(std::max(distance, 0.0)) + " from the infraorbital foramen; at least " +
@@ -278,8 +278,8 @@ std::vector<DistractorCheck> check_distractors(const LabelVolume& labels, const 
     if (!profile) {
       checks.push_back(fail(make_check("screw in sinus", v->side, 0, kMaxWallMm),
                             "the screw axis meets no sinus air within " + mm(kMaxWallMm) + " of the entry point"));
-      checks.push_back(fail(make_check("sinus depth", v->side, 0, device.screw_length_mm),
-                            "no sinus along the screw axis"));
+      checks.push_back(
+          fail(make_check("sinus depth", v->side, 0, device.screw_length_mm), "no sinus along the screw axis"));
     } else {
       checks.push_back(check_in_sinus(labels, anatomy, *v, *profile, device, limits));
       checks.push_back(check_depth(*v, *profile, device, limits));

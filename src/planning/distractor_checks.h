@@ -57,12 +57,12 @@ enum class CheckStatus { Pass, Fail, NotChecked };
 std::string_view status_name(CheckStatus status);  // "pass", "FAIL", "not checked"
 
 struct DistractorCheck {
-  std::string name;   // "screw in sinus", "sinus depth", "screw travel", "tooth distance", "infraorbital nerve"
+  std::string name;  // "screw in sinus", "sinus depth", "screw travel", "tooth distance", "infraorbital nerve"
   Side side = Side::Right;
   CheckStatus status = CheckStatus::Pass;
-  double value = 0;   // the measured quantity (mm)
-  double limit = 0;   // what it is compared with (mm)
-  std::string reason; // why it failed or was not checked; empty when passed
+  double value = 0;    // the measured quantity (mm)
+  double limit = 0;    // what it is compared with (mm)
+  std::string reason;  // why it failed or was not checked; empty when passed
 };
 
 struct EntryPoints {

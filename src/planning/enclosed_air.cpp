@@ -17,7 +17,8 @@ LabelVolume with_enclosed_air(const LabelVolume& tissues, const Volume& ct, doub
   for (int k = 0; k < g.size.z(); ++k)
     for (int j = 0; j < g.size.y(); ++j)
       for (int i = 0; i < g.size.x(); ++i) {
-        const bool on_face = i == 0 || j == 0 || k == 0 || i == g.size.x() - 1 || j == g.size.y() - 1 || k == g.size.z() - 1;
+        const bool on_face =
+            i == 0 || j == 0 || k == 0 || i == g.size.x() - 1 || j == g.size.y() - 1 || k == g.size.z() - 1;
         if (on_face) outside[components.id[g.index(i, j, k)]] = true;
       }
   LabelVolume result = tissues;

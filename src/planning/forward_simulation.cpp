@@ -77,8 +77,9 @@ Vector6d solve_pose(const PlanningFrame& frame, double pitch_deg, const Vector3d
   }
   const double left_over = residual(frame, q, pitch_deg, pivot, vectors).norm();
   if (left_over > 1e-6)
-    throw Error(ErrorCode::kProcessing, "forward simulation",
-                "no rigid move of the maxilla matches both distractors (residual " + std::to_string(left_over) + " mm)");
+    throw Error(
+        ErrorCode::kProcessing, "forward simulation",
+        "no rigid move of the maxilla matches both distractors (residual " + std::to_string(left_over) + " mm)");
   return q;
 }
 

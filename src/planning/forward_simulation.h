@@ -31,7 +31,7 @@ struct SimulatedPoint {
 };
 
 struct ForwardSimulation {
-  FrameMove achieved;         // the common move the distractors make (frame values about the pivot)
+  FrameMove achieved;  // the common move the distractors make (frame values about the pivot)
   double achieved_widening_mm = 0;
   std::vector<SimulatedPoint> points;
   double max_error_mm = 0;

@@ -14,7 +14,15 @@ namespace {
 
 // Segmentation labels in (imaging/segmentation.h) and phantom labels out (sample/phantom.h).
 enum InLabel : uint8_t { kInBackground = 0, kInSoft = 1, kInAir = 2, kInBone = 3, kInTeeth = 4 };
-enum OutLabel : uint8_t { kAir = 0, kSoft = 1, kBone = 2, kUpperTooth = 3, kInnerAir = 4, kLowerTooth = 6, kMandible = 7 };
+enum OutLabel : uint8_t {
+  kAir = 0,
+  kSoft = 1,
+  kBone = 2,
+  kUpperTooth = 3,
+  kInnerAir = 4,
+  kLowerTooth = 6,
+  kMandible = 7
+};
 
 Eigen::Vector3d contact(const LandmarkSet& landmarks, const std::string& upper, const std::string& lower) {
   auto u = find_landmark(landmarks, upper), l = find_landmark(landmarks, lower);
@@ -88,7 +96,8 @@ LabelVolume separate_jaws(const LabelVolume& ct_tissues, const LandmarkSet& land
         const auto v = size_t(g.index(i, j, k));
         if (!components.id[v]) continue;
         const Eigen::Vector3d p = g.world(Eigen::Vector3d(i, j, k));
-        if (behind_arches.side(p) <= 0 && occlusal.side(p) > o.below_occlusal_mm) mandibular[size_t(components.id[v])] = 1;
+        if (behind_arches.side(p) <= 0 && occlusal.side(p) > o.below_occlusal_mm)
+          mandibular[size_t(components.id[v])] = 1;
         const double d = (p - *menton).squaredNorm();
         if (d < best) best = d, nearest = components.id[v];
       }

@@ -16,10 +16,11 @@
 namespace maxillo::planning {
 
 struct JawSeparationOptions {
-  double ramus_height_mm = 25;  // how far above the occlusal plane the rami may reach (more: the coronoid and the condyle touch the skull on a CT)
-  double arch_behind_first_molar_mm = 18;  // where the dental arches end (behind the second molars)
+  double ramus_height_mm =
+      25;  // how far above the occlusal plane the rami may reach (more: the coronoid and the condyle touch the skull on a CT)
+  double arch_behind_first_molar_mm = 18;    // where the dental arches end (behind the second molars)
   double condyle_in_front_of_porion_mm = 3;  // the mandible lies in front of this (with PoR, PoL)
-  double below_occlusal_mm = 3;  // bone this far below the occlusal plane, along the arches, is mandible
+  double below_occlusal_mm = 3;              // bone this far below the occlusal plane, along the arches, is mandible
 };
 
 // Input labels: 0 background, 1 soft tissue, 2 enclosed air, 3 bone, 4 teeth. Output: phantom

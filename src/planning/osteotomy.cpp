@@ -20,11 +20,11 @@ constexpr std::array<std::string_view, kSegmentCount> kSegmentNames = {
 // variant takes more of the anterior maxillary wall (more advancement of the paranasal region).
 constexpr double kLeFortLowAboveAns = 5;
 constexpr double kLeFortHighAboveAns = 10;
-constexpr double kLeFortBelowOrbitale = 10;       // the cut must stay below the infraorbital foramen
+constexpr double kLeFortBelowOrbitale = 10;  // the cut must stay below the infraorbital foramen
 constexpr double kPterygomaxillaryBehindPns = 3;
-constexpr double kBssoBehindFirstMolar = 22;      // behind the second/third molar region
+constexpr double kBssoBehindFirstMolar = 22;          // behind the second/third molar region
 constexpr double kGenioplastyFractionAboveMe = 0.35;  // of the Me-B height, at the midline
-constexpr double kGenioplastyTiltDeg = 15;        // the cut descends posteriorly
+constexpr double kGenioplastyTiltDeg = 15;            // the cut descends posteriorly
 
 bool has_label(const std::vector<uint8_t>& set, uint8_t label) {
   return std::find(set.begin(), set.end(), label) != set.end();
@@ -141,7 +141,8 @@ std::optional<Segment> parse_segment(std::string_view name) {
 }
 
 CutPlane default_le_fort_i(const LandmarkSet& landmarks, LeFortVariant variant) {
-  const auto ans = require_landmark(landmarks, "ANS", "Le Fort I"), pns = require_landmark(landmarks, "PNS", "Le Fort I");
+  const auto ans = require_landmark(landmarks, "ANS", "Le Fort I"),
+             pns = require_landmark(landmarks, "PNS", "Le Fort I");
   const auto frame = anatomical_frame(landmarks);
   // Parallel to the palatal plane: its anterior direction, tilted about the transverse axis only.
   Eigen::Vector3d palatal = ans - pns;
@@ -168,7 +169,8 @@ std::pair<CutPlane, CutPlane> default_bsso(const LandmarkSet& landmarks) {
   const auto frame = anatomical_frame(landmarks);
   auto side_cut = [&](const char* side) {
     const std::string molar = std::string("L6") + side;
-    return CutPlane{require_landmark(landmarks, molar, "BSSO") - kBssoBehindFirstMolar * frame.anterior, frame.anterior};
+    return CutPlane{require_landmark(landmarks, molar, "BSSO") - kBssoBehindFirstMolar * frame.anterior,
+                    frame.anterior};
   };
   return {side_cut("R"), side_cut("L")};
 }

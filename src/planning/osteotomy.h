@@ -33,7 +33,7 @@ enum class Segment : uint8_t {
   kMandible = 3,    // distal mandible with the lower teeth (whole mandible without BSSO)
   kRamusRight = 4,  // proximal segments of a BSSO
   kRamusLeft = 5,
-  kChin = 6,        // genioplasty segment
+  kChin = 6,  // genioplasty segment
 };
 inline constexpr int kSegmentCount = 7;
 std::string_view segment_name(Segment segment);  // "cranium", "maxilla", ...
@@ -95,14 +95,13 @@ struct SegmentStats {
 };
 
 struct OsteotomyResult {
-  LabelVolume segments;               // Segment values, same geometry as the input
-  std::vector<SegmentStats> stats;    // one per segment present, in Segment order
-  int64_t input_bone_voxels = 0;      // bone + teeth voxels of the input (== sum of stats)
+  LabelVolume segments;             // Segment values, same geometry as the input
+  std::vector<SegmentStats> stats;  // one per segment present, in Segment order
+  int64_t input_bone_voxels = 0;    // bone + teeth voxels of the input (== sum of stats)
 };
 
 // Splits the bone and teeth of `tissues` by the osteotomies. Throws Error when a cut yields an
 // empty segment (e.g. a Le Fort I plane above the skull) naming the cut.
-OsteotomyResult cut_skeleton(const LabelVolume& tissues, const Osteotomies& cuts,
-                             const SkeletonLabels& labels = {});
+OsteotomyResult cut_skeleton(const LabelVolume& tissues, const Osteotomies& cuts, const SkeletonLabels& labels = {});
 
 }  // namespace maxillo::planning

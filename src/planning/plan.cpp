@@ -64,9 +64,11 @@ CutSpec read_cut(JsonReader& parent, const std::string& key, const std::string& 
 PlanOsteotomies read_osteotomies(const Json& json, const std::string& source) {
   JsonReader r = reader(json, "osteotomies", source);
   PlanOsteotomies o;
-  const std::vector<std::pair<const char*, std::optional<CutSpec>*>> cuts{
-      {"le_fort_i", &o.le_fort_i}, {"pterygomaxillary", &o.pterygomaxillary}, {"bsso_right", &o.bsso_right},
-      {"bsso_left", &o.bsso_left}, {"genioplasty", &o.genioplasty}};
+  const std::vector<std::pair<const char*, std::optional<CutSpec>*>> cuts{{"le_fort_i", &o.le_fort_i},
+                                                                          {"pterygomaxillary", &o.pterygomaxillary},
+                                                                          {"bsso_right", &o.bsso_right},
+                                                                          {"bsso_left", &o.bsso_left},
+                                                                          {"genioplasty", &o.genioplasty}};
   for (const auto& [key, slot] : cuts)
     if (r.has(key)) *slot = read_cut(r, key, source);
   r.refuse_unknown_keys();
@@ -89,7 +91,8 @@ FrameMove read_frame_move(JsonReader& r) {
 SegmentMove read_move(const Json& json, const std::string& path, const std::string& source) {
   JsonReader r = reader(json, path, source);
   SegmentMove move;
-  if (!r.has("segment") || !r.at("segment").is_string()) r.fail(r.field("segment"), "missing (a segment name such as \"maxilla\")");
+  if (!r.has("segment") || !r.at("segment").is_string())
+    r.fail(r.field("segment"), "missing (a segment name such as \"maxilla\")");
   const std::string name = r.at("segment").get<std::string>();
   const auto segment = parse_segment(name);
   if (!segment || *segment == Segment::kNone) r.fail(r.field("segment"), "unknown segment \"" + name + "\"");
@@ -170,7 +173,8 @@ Json point_json(const Vector3d& p) { return Json::array({p.x(), p.y(), p.z()}); 
 
 Json cut_json(const CutSpec& cut, bool le_fort) {
   if (cut.kind == CutSpec::Kind::Points)
-    return Json{{"points", Json::array({point_json(cut.points[0]), point_json(cut.points[1]), point_json(cut.points[2])})}};
+    return Json{
+        {"points", Json::array({point_json(cut.points[0]), point_json(cut.points[1]), point_json(cut.points[2])})}};
   if (cut.kind == CutSpec::Kind::Default) {
     if (!le_fort) return "default";
     return cut.variant == LeFortVariant::Low ? "default-low" : "default-high";
@@ -242,8 +246,9 @@ void check_consistency(const Plan& plan, const std::string& source) {
       const MaxillaryTarget& t = plan.distraction->target;
       if (differ(m.move.advancement_mm, t.advancement_mm) || differ(m.move.vertical_mm, t.vertical_mm) ||
           differ(m.move.pitch_deg, t.rotation_deg))
-        fail(field, "the maxilla's advancement, vertical change and pitch must equal distraction.target's "
-                    "(the distraction makes this move)");
+        fail(field,
+             "the maxilla's advancement, vertical change and pitch must equal distraction.target's "
+             "(the distraction makes this move)");
     }
   }
   if (plan.distraction) validate(plan.distraction->schedule);

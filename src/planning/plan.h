@@ -66,8 +66,8 @@ struct PlanOsteotomies {
 };
 
 struct Pivot {
-  std::string landmark = "PNS";            // used when point is empty
-  std::optional<Eigen::Vector3d> point;    // LPS mm
+  std::string landmark = "PNS";          // used when point is empty
+  std::optional<Eigen::Vector3d> point;  // LPS mm
 };
 
 struct SegmentMove {

@@ -43,15 +43,14 @@ Json move_json(const FrameMove& m) {
 }
 
 Json vector_json(const DistractionVector& v) {
-  return {{"side", side_name(v.side)},         {"entry", point_json(v.entry)},
-          {"axis", point_json(v.axis)},        {"activation_mm", v.activation_mm},
-          {"outward_deg", v.outward_deg},      {"elevation_deg", v.elevation_deg}};
+  return {{"side", side_name(v.side)},        {"entry", point_json(v.entry)}, {"axis", point_json(v.axis)},
+          {"activation_mm", v.activation_mm}, {"outward_deg", v.outward_deg}, {"elevation_deg", v.elevation_deg}};
 }
 
 Json schedule_side_json(const SideSchedule& s) {
-  return {{"side", side_name(s.side)}, {"activation_mm", s.activation_mm}, {"turns", s.turns},
-          {"delivered_mm", s.delivered_mm}, {"distraction_days", s.distraction_days},
-          {"first_day", s.first_day}, {"last_day", s.last_day}};
+  return {{"side", side_name(s.side)},      {"activation_mm", s.activation_mm},       {"turns", s.turns},
+          {"delivered_mm", s.delivered_mm}, {"distraction_days", s.distraction_days}, {"first_day", s.first_day},
+          {"last_day", s.last_day}};
 }
 
 }  // namespace
@@ -94,8 +93,8 @@ Json plan_result_json(const PlanResult& r) {
   for (const PlannedMove& m : r.moves) {
     Json t = Json::array();
     for (int i = 0; i < 4; ++i)
-      t.push_back(Json::array({m.transform.matrix()(i, 0), m.transform.matrix()(i, 1),
-                               m.transform.matrix()(i, 2), m.transform.matrix()(i, 3)}));
+      t.push_back(Json::array({m.transform.matrix()(i, 0), m.transform.matrix()(i, 1), m.transform.matrix()(i, 2),
+                               m.transform.matrix()(i, 3)}));
     moves.push_back({{"segment", std::string(segment_name(m.segment))},
                      {"pivot", point_json(m.pivot)},
                      {"move", move_json(m.move)},
@@ -106,34 +105,40 @@ Json plan_result_json(const PlanResult& r) {
     const DistractionResult& d = *r.distraction;
     Json checks = Json::array();
     for (const DistractorCheck& c : d.checks)
-      checks.push_back({{"name", c.name}, {"side", side_name(c.side)}, {"status", status_name(c.status)},
-                        {"value_mm", c.value}, {"limit_mm", c.limit}, {"reason", c.reason}});
+      checks.push_back({{"name", c.name},
+                        {"side", side_name(c.side)},
+                        {"status", status_name(c.status)},
+                        {"value_mm", c.value},
+                        {"limit_mm", c.limit},
+                        {"reason", c.reason}});
     Json points = Json::array();
     for (const SimulatedPoint& p : d.simulation.points)
-      points.push_back({{"label", p.label}, {"before", point_json(p.before)}, {"target", point_json(p.target)},
-                        {"simulated", point_json(p.simulated)}, {"error_mm", p.error_mm}});
-    json["distraction"] = {
-        {"vectors",
-         {{"right", vector_json(d.vectors.right)},
-          {"left", vector_json(d.vectors.left)},
-          {"divergence_deg", d.vectors.divergence_deg},
-          {"angle_deg", d.vectors.angle_deg}}},
-        {"checks", checks},
-        {"schedule",
-         {{"latency_days", d.schedule.settings.latency_days},
-          {"rate_mm_per_day", d.schedule.settings.rate_mm_per_day},
-          {"activations_per_day", d.schedule.settings.activations_per_day},
-          {"mm_per_turn", d.schedule.settings.mm_per_turn},
-          {"turns_per_activation", d.schedule.turns_per_activation},
-          {"right", schedule_side_json(d.schedule.right)},
-          {"left", schedule_side_json(d.schedule.left)},
-          {"distraction_end_day", d.schedule.distraction_end_day},
-          {"consolidation_end_day", d.schedule.consolidation_end_day}}},
-        {"forward_simulation",
-         {{"achieved", move_json(d.simulation.achieved)},
-          {"achieved_widening_mm", d.simulation.achieved_widening_mm},
-          {"points", points},
-          {"max_error_mm", d.simulation.max_error_mm}}}};
+      points.push_back({{"label", p.label},
+                        {"before", point_json(p.before)},
+                        {"target", point_json(p.target)},
+                        {"simulated", point_json(p.simulated)},
+                        {"error_mm", p.error_mm}});
+    json["distraction"] = {{"vectors",
+                            {{"right", vector_json(d.vectors.right)},
+                             {"left", vector_json(d.vectors.left)},
+                             {"divergence_deg", d.vectors.divergence_deg},
+                             {"angle_deg", d.vectors.angle_deg}}},
+                           {"checks", checks},
+                           {"schedule",
+                            {{"latency_days", d.schedule.settings.latency_days},
+                             {"rate_mm_per_day", d.schedule.settings.rate_mm_per_day},
+                             {"activations_per_day", d.schedule.settings.activations_per_day},
+                             {"mm_per_turn", d.schedule.settings.mm_per_turn},
+                             {"turns_per_activation", d.schedule.turns_per_activation},
+                             {"right", schedule_side_json(d.schedule.right)},
+                             {"left", schedule_side_json(d.schedule.left)},
+                             {"distraction_end_day", d.schedule.distraction_end_day},
+                             {"consolidation_end_day", d.schedule.consolidation_end_day}}},
+                           {"forward_simulation",
+                            {{"achieved", move_json(d.simulation.achieved)},
+                             {"achieved_widening_mm", d.simulation.achieved_widening_mm},
+                             {"points", points},
+                             {"max_error_mm", d.simulation.max_error_mm}}}};
   }
   Json files = Json::object();
   for (const auto& [label, path] : r.files) files[label] = path.string();

@@ -38,8 +38,8 @@ struct PlanResult {
   PlanningFrame frame;
   std::vector<PlannedMove> moves;
   std::optional<DistractionResult> distraction;
-  bool feasible = true;                // every check passed (or was not checked)
-  std::vector<std::string> refusals;   // one line per failed check: "<side> <check>: <reason>"
+  bool feasible = true;               // every check passed (or was not checked)
+  std::vector<std::string> refusals;  // one line per failed check: "<side> <check>: <reason>"
   // Files written for this result by later steps (osteotomy segments, the STL transfer model,
   // renders): label -> path. plan_result_json lists them.
   std::vector<std::pair<std::string, std::filesystem::path>> files;

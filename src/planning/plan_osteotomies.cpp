@@ -12,7 +12,8 @@ namespace {
 CutPlane plane_through(const std::array<Eigen::Vector3d, 3>& p, const LandmarkSet& landmarks, const std::string& moving,
                        const std::string& cut) {
   auto reference = find_landmark(landmarks, moving);
-  if (!reference) throw Error(ErrorCode::kBadValue, cut, "a cut given by points needs the landmark " + moving + " to tell its sides");
+  if (!reference)
+    throw Error(ErrorCode::kBadValue, cut, "a cut given by points needs the landmark " + moving + " to tell its sides");
   CutPlane plane{(p[0] + p[1] + p[2]) / 3.0, (p[1] - p[0]).cross(p[2] - p[0]).normalized()};
   if (plane.side(*reference) < 0) plane.normal = -plane.normal;
   return plane;
@@ -36,8 +37,10 @@ Osteotomies resolve_osteotomies(const PlanOsteotomies& spec, const LandmarkSet& 
                                    [&](const CutSpec&) { return default_pterygomaxillary(landmarks); });
   cuts.genioplasty =
       plane_or(spec.genioplasty, "Me", "genioplasty", [&](const CutSpec&) { return default_genioplasty(landmarks); });
-  cuts.bsso_right = plane_or(spec.bsso_right, "L1", "BSSO right", [&](const CutSpec&) { return default_bsso(landmarks).first; });
-  cuts.bsso_left = plane_or(spec.bsso_left, "L1", "BSSO left", [&](const CutSpec&) { return default_bsso(landmarks).second; });
+  cuts.bsso_right =
+      plane_or(spec.bsso_right, "L1", "BSSO right", [&](const CutSpec&) { return default_bsso(landmarks).first; });
+  cuts.bsso_left =
+      plane_or(spec.bsso_left, "L1", "BSSO left", [&](const CutSpec&) { return default_bsso(landmarks).second; });
   return cuts;
 }
 

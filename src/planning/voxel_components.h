@@ -8,7 +8,7 @@
 namespace maxillo::planning {
 
 struct VoxelComponents {
-  std::vector<int32_t> id;     // per voxel: 0 = outside the mask, else 1..count
+  std::vector<int32_t> id;  // per voxel: 0 = outside the mask, else 1..count
   int32_t count = 0;
   std::vector<int64_t> sizes;  // sizes[c] = voxels of component c (sizes[0] = 0)
 };

@@ -39,8 +39,8 @@ std::optional<StandardView> parse_standard_view(std::string_view name) {
   return std::nullopt;
 }
 
-Camera standard_camera(StandardView view, const AnatomicalFrame& frame, const Bounds& bounds,
-                       double aspect, Projection projection) {
+Camera standard_camera(StandardView view, const AnatomicalFrame& frame, const Bounds& bounds, double aspect,
+                       Projection projection) {
   assert(!bounds.empty() && "standard_camera: the scene has no vertices");
   assert(aspect > 0 && "standard_camera: aspect must be width / height > 0");
   const Eigen::Vector3d centre = bounds.centre();
@@ -51,8 +51,7 @@ Camera standard_camera(StandardView view, const AnatomicalFrame& frame, const Bo
   // Half extents of the bounds' projection on the image axes, and its depth radius.
   double half_width = 0, half_height = 0, radius = 0;
   for (int corner = 0; corner < 8; ++corner) {
-    Eigen::Vector3d p((corner & 1) ? bounds.max.x() : bounds.min.x(),
-                      (corner & 2) ? bounds.max.y() : bounds.min.y(),
+    Eigen::Vector3d p((corner & 1) ? bounds.max.x() : bounds.min.x(), (corner & 2) ? bounds.max.y() : bounds.min.y(),
                       (corner & 4) ? bounds.max.z() : bounds.min.z());
     Eigen::Vector3d d = p - centre;
     half_width = std::max(half_width, std::abs(d.dot(image_right)));
@@ -68,9 +67,8 @@ Camera standard_camera(StandardView view, const AnatomicalFrame& frame, const Bo
   camera.parallel_scale_mm = half_view;
   camera.view_angle_deg = kPerspectiveAngleDeg;
   const double half_angle = 0.5 * kPerspectiveAngleDeg * std::numbers::pi / 180;
-  const double distance = projection == Projection::Parallel
-                              ? 2 * radius + 10
-                              : half_view / std::tan(half_angle) + radius;
+  const double distance =
+      projection == Projection::Parallel ? 2 * radius + 10 : half_view / std::tan(half_angle) + radius;
   camera.position = centre + distance * back;
   return camera;
 }

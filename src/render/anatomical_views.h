@@ -18,7 +18,7 @@ namespace maxillo::render {
 
 enum class StandardView { Frontal, Lateral, Oblique };
 
-std::string_view name_of(StandardView view);                    // "frontal", "lateral", "oblique"
+std::string_view name_of(StandardView view);                             // "frontal", "lateral", "oblique"
 std::optional<StandardView> parse_standard_view(std::string_view name);  // inverse of name_of
 
 // Fraction of the image left free around the scene's projection on each side.
@@ -27,7 +27,7 @@ inline constexpr double kViewMargin = 0.06;
 // A camera for `view` that looks at bounds.centre() with frame.superior up and fits the
 // projection of the bounds' 8 corners into an image of aspect = width / height, with
 // kViewMargin to spare. Perspective uses a 15 degree view angle. bounds must not be empty.
-Camera standard_camera(StandardView view, const AnatomicalFrame& frame, const Bounds& bounds,
-                       double aspect, Projection projection = Projection::Parallel);
+Camera standard_camera(StandardView view, const AnatomicalFrame& frame, const Bounds& bounds, double aspect,
+                       Projection projection = Projection::Parallel);
 
 }  // namespace maxillo::render

@@ -17,7 +17,7 @@
 namespace maxillo::render {
 namespace {
 
-constexpr double kBoxHalfWidth = 0.3;      // in x units: groups stand 1 apart
+constexpr double kBoxHalfWidth = 0.3;  // in x units: groups stand 1 apart
 constexpr double kWhiskerCapHalfWidth = 0.15;
 constexpr float kLineWidthPx = 2.5f;
 constexpr float kMedianWidthPx = 4.5f;

@@ -19,8 +19,8 @@
 namespace maxillo::render {
 
 struct ChartSeries {
-  std::string name;          // legend entry
-  std::vector<double> xs;    // same length as ys; at least one point
+  std::string name;        // legend entry
+  std::vector<double> xs;  // same length as ys; at least one point
   std::vector<double> ys;
   std::optional<ColourRGB> colour;  // default: chart_palette()[index % size]
 };

@@ -13,7 +13,8 @@ namespace maxillo::render {
 void check_series(const std::vector<ChartSeries>& series, const std::string& what) {
   if (series.empty()) throw Error(ErrorCode::kBadValue, what, "nothing to draw");
   for (const auto& s : series) {
-    if (s.xs.size() != s.ys.size()) throw Error(ErrorCode::kBadValue, what + " " + s.name, "xs and ys differ in length");
+    if (s.xs.size() != s.ys.size())
+      throw Error(ErrorCode::kBadValue, what + " " + s.name, "xs and ys differ in length");
     if (s.xs.empty()) throw Error(ErrorCode::kBadValue, what + " " + s.name, "no points");
   }
 }

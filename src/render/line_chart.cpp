@@ -75,10 +75,10 @@ void style_legend(vtkChartXY& chart, const ChartSettings& settings) {
 
 const std::vector<ColourRGB>& chart_palette() {
   // Tableau 10 without its grey, plus a dark blue: distinct hues, all far from white and grey.
-  static const std::vector<ColourRGB> palette = {
-      {0.122, 0.467, 0.706}, {1.000, 0.498, 0.055}, {0.173, 0.627, 0.173}, {0.839, 0.153, 0.157},
-      {0.580, 0.404, 0.741}, {0.549, 0.337, 0.294}, {0.890, 0.467, 0.761}, {0.737, 0.741, 0.133},
-      {0.090, 0.745, 0.812}, {0.100, 0.100, 0.500}};
+  static const std::vector<ColourRGB> palette = {{0.122, 0.467, 0.706}, {1.000, 0.498, 0.055}, {0.173, 0.627, 0.173},
+                                                 {0.839, 0.153, 0.157}, {0.580, 0.404, 0.741}, {0.549, 0.337, 0.294},
+                                                 {0.890, 0.467, 0.761}, {0.737, 0.741, 0.133}, {0.090, 0.745, 0.812},
+                                                 {0.100, 0.100, 0.500}};
   return palette;
 }
 

@@ -28,16 +28,21 @@ namespace maxillo::render {
 namespace {
 
 OSMesaContext create_core_context() {
-  const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA,
-                            OSMESA_DEPTH_BITS, 24,
-                            OSMESA_STENCIL_BITS, 8,
-                            OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-                            OSMESA_CONTEXT_MAJOR_VERSION, 3,
-                            OSMESA_CONTEXT_MINOR_VERSION, 2,
+  const int attributes[] = {OSMESA_FORMAT,
+                            OSMESA_RGBA,
+                            OSMESA_DEPTH_BITS,
+                            24,
+                            OSMESA_STENCIL_BITS,
+                            8,
+                            OSMESA_PROFILE,
+                            OSMESA_CORE_PROFILE,
+                            OSMESA_CONTEXT_MAJOR_VERSION,
+                            3,
+                            OSMESA_CONTEXT_MINOR_VERSION,
+                            2,
                             0};
   OSMesaContext context = OSMesaCreateContextAttribs(attributes, nullptr);
-  if (!context)
-    throw Error(ErrorCode::kRenderFailed, "OSMesa", "cannot create an OpenGL 3.2 core-profile context");
+  if (!context) throw Error(ErrorCode::kRenderFailed, "OSMesa", "cannot create an OpenGL 3.2 core-profile context");
   return context;
 }
 

@@ -12,8 +12,8 @@ namespace maxillo::render {
 
 struct OffscreenContext::Impl {
   ImageSize size;
-  void* osmesa_context = nullptr;      // OSMesaContext (kept opaque here)
-  std::vector<unsigned char> buffer;   // RGBA colour buffer OSMesa draws into
+  void* osmesa_context = nullptr;     // OSMesaContext (kept opaque here)
+  std::vector<unsigned char> buffer;  // RGBA colour buffer OSMesa draws into
   vtkSmartPointer<vtkGenericOpenGLRenderWindow> window;
 
   bool try_make_current();

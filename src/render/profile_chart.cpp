@@ -87,7 +87,8 @@ RgbImage render_profile_chart(const ProfileChart& chart, const ChartSettings& se
   return render_chart_item(xy, settings);
 }
 
-void write_profile_chart_png(const ProfileChart& chart, const std::filesystem::path& png, const ChartSettings& settings) {
+void write_profile_chart_png(const ProfileChart& chart, const std::filesystem::path& png,
+                             const ChartSettings& settings) {
   write_png(render_profile_chart(chart, settings), png);
 }
 

@@ -26,8 +26,7 @@ namespace maxillo::render {
 namespace {
 
 bool has_translucency(const Scene& scene) {
-  return std::any_of(scene.meshes.begin(), scene.meshes.end(),
-                     [](const SceneMesh& m) { return m.opacity < 1.0; });
+  return std::any_of(scene.meshes.begin(), scene.meshes.end(), [](const SceneMesh& m) { return m.opacity < 1.0; });
 }
 
 // With a colour bar, the scene keeps the left part of the image and the bar the right strip.

@@ -24,8 +24,8 @@ using Rgb = std::array<double, 3>;
 
 // Moreland's cool-warm diverging map and viridis, as a few control points.
 const std::vector<Rgb> kDivergingStops = {{0.230, 0.299, 0.754}, {0.865, 0.865, 0.865}, {0.706, 0.016, 0.150}};
-const std::vector<Rgb> kSequentialStops = {{0.267, 0.005, 0.329}, {0.229, 0.322, 0.546}, {0.128, 0.567, 0.551},
-                                           {0.369, 0.789, 0.383}, {0.993, 0.906, 0.144}};
+const std::vector<Rgb> kSequentialStops = {
+    {0.267, 0.005, 0.329}, {0.229, 0.322, 0.546}, {0.128, 0.567, 0.551}, {0.369, 0.789, 0.383}, {0.993, 0.906, 0.144}};
 
 Rgb interpolate(const std::vector<Rgb>& stops, double t) {
   const double position = t * static_cast<double>(stops.size() - 1);
@@ -37,8 +37,7 @@ Rgb interpolate(const std::vector<Rgb>& stops, double t) {
 }
 
 vtkSmartPointer<vtkFloatArray> vertex_normals(const TriangleMesh& mesh) {
-  Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> sum =
-      Eigen::MatrixXd::Zero(mesh.vertex_count(), 3);
+  Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> sum = Eigen::MatrixXd::Zero(mesh.vertex_count(), 3);
   for (Eigen::Index f = 0; f < mesh.face_count(); ++f) {
     const auto a = mesh.faces(f, 0), b = mesh.faces(f, 1), c = mesh.faces(f, 2);
     const Eigen::Vector3d pa = mesh.vertices.row(a), pb = mesh.vertices.row(b), pc = mesh.vertices.row(c);
@@ -114,12 +113,13 @@ vtkSmartPointer<vtkActor> make_actor(const SceneMesh& item) {
     const auto& scalars = *item.scalars;
     if (static_cast<Eigen::Index>(scalars.values.size()) != item.mesh->vertex_count())
       throw Error(ErrorCode::kBadValue, "vertex scalars",
-                  std::to_string(scalars.values.size()) + " values for " +
-                      std::to_string(item.mesh->vertex_count()) + " vertices");
+                  std::to_string(scalars.values.size()) + " values for " + std::to_string(item.mesh->vertex_count()) +
+                      " vertices");
     auto values = vtkSmartPointer<vtkDoubleArray>::New();
     values->SetName("scalars");
     values->SetNumberOfValues(static_cast<vtkIdType>(scalars.values.size()));
-    for (std::size_t i = 0; i < scalars.values.size(); ++i) values->SetValue(static_cast<vtkIdType>(i), scalars.values[i]);
+    for (std::size_t i = 0; i < scalars.values.size(); ++i)
+      values->SetValue(static_cast<vtkIdType>(i), scalars.values[i]);
     polydata->GetPointData()->SetScalars(values);
     mapper->SetLookupTable(make_lookup_table(scalars));
     mapper->SetScalarRange(scalars.range_min, scalars.range_max);

@@ -31,9 +31,7 @@ constexpr double kA4WidthPt = 595.276, kA4HeightPt = 841.89;
 // Baseline below the top of a line, as a fraction of the font size (DejaVu's ascent ~0.76 em).
 constexpr double kAscent = 0.78;
 
-double baseline_below(double top_y, double size) {
-  return top_y - size * (0.5 * (look::kLeading - 1) + kAscent);
-}
+double baseline_below(double top_y, double size) { return top_y - size * (0.5 * (look::kLeading - 1) + kAscent); }
 
 HPDF_Font load_font(PdfDocument::Impl& impl, const std::filesystem::path& file) {
   if (!std::filesystem::is_regular_file(file))
@@ -51,8 +49,8 @@ HPDF_Font load_font(PdfDocument::Impl& impl, const std::filesystem::path& file) 
 
 void PdfDocument::Impl::check(std::string_view what, std::string_view subject) {
   if (error_no == HPDF_OK) return;
-  const std::string reason = std::string(what) + ": libharu error " + hex(error_no) + " (detail " +
-                             std::to_string(detail_no) + ")";
+  const std::string reason =
+      std::string(what) + ": libharu error " + hex(error_no) + " (detail " + std::to_string(detail_no) + ")";
   error_no = detail_no = HPDF_OK;
   HPDF_ResetError(pdf);
   throw Error(ErrorCode::kWriteFailed, std::string(subject), reason);
@@ -190,7 +188,7 @@ double PdfDocument::text_width_mm() const { return impl_->text_width() * 25.4 / 
 
 void PdfDocument::heading(std::string_view text, HeadingLevel level) {
   auto& impl = *impl_;
-  const double size = level == HeadingLevel::Title ? impl.body() * 1.9
+  const double size = level == HeadingLevel::Title     ? impl.body() * 1.9
                       : level == HeadingLevel::Section ? impl.body() * 1.3
                                                        : impl.body() * 1.1;
   const double space_before = level == HeadingLevel::Title ? 0 : level == HeadingLevel::Section ? 12 : 7;
@@ -200,8 +198,8 @@ void PdfDocument::heading(std::string_view text, HeadingLevel level) {
   const bool at_top = impl.cursor_y >= impl.top - 0.01;
   impl.ensure_space((at_top ? 0 : space_before) + height + 3 * impl.body() * look::kLeading);
   if (impl.cursor_y < impl.top - 0.01) impl.cursor_y -= space_before;
-  impl.cursor_y -= impl.draw_lines(lines, impl.left, impl.text_width(), impl.cursor_y, Align::Left, impl.bold,
-                                   size, level == HeadingLevel::Subsection ? look::kText : look::kAccent);
+  impl.cursor_y -= impl.draw_lines(lines, impl.left, impl.text_width(), impl.cursor_y, Align::Left, impl.bold, size,
+                                   level == HeadingLevel::Subsection ? look::kText : look::kAccent);
   if (level == HeadingLevel::Section) {
     impl.stroke_line(impl.left, impl.cursor_y - 1.5, impl.right, impl.cursor_y - 1.5, 0.6, look::kAccent);
     impl.cursor_y -= 5;
@@ -214,8 +212,7 @@ void PdfDocument::paragraph(std::string_view text) {
   const double line_height = impl.body() * look::kLeading;
   for (const auto& line : impl.wrap(text, impl.regular, impl.body(), impl.text_width())) {
     impl.ensure_space(line_height);
-    impl.draw_text(line, impl.left, baseline_below(impl.cursor_y, impl.body()), impl.regular, impl.body(),
-                   look::kText);
+    impl.draw_text(line, impl.left, baseline_below(impl.cursor_y, impl.body()), impl.regular, impl.body(), look::kText);
     impl.cursor_y -= line_height;
   }
   impl.cursor_y -= look::kParagraphGap;
@@ -256,8 +253,8 @@ void PdfDocument::save(const std::filesystem::path& path) {
     impl.stroke_line(impl.left, header_baseline - 5, impl.right, header_baseline - 5, 0.5, look::kRule);
     impl.stroke_line(impl.left, footer_baseline + 11, impl.right, footer_baseline + 11, 0.5, look::kRule);
     impl.draw_text(impl.style.footer_text, impl.left, footer_baseline, impl.regular, size, look::kMuted);
-    impl.draw_aligned("page " + std::to_string(i + 1) + " of " + std::to_string(total), impl.left,
-                      impl.text_width(), footer_baseline, Align::Right, impl.regular, size, look::kMuted);
+    impl.draw_aligned("page " + std::to_string(i + 1) + " of " + std::to_string(total), impl.left, impl.text_width(),
+                      footer_baseline, Align::Right, impl.regular, size, look::kMuted);
     impl.pages.pop_back();
   }
   HPDF_SaveToStream(impl.pdf);

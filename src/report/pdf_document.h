@@ -24,9 +24,9 @@ struct PageStyle {
   std::filesystem::path regular_font;  // TrueType files (see fonts.h: resolve_font)
   std::filesystem::path bold_font;
   double body_size_pt = 10;
-  std::string header_left;   // e.g. the report title
-  std::string header_right;  // e.g. the patient's name and ID
-  std::string footer_text;   // e.g. "Not a diagnosis: planning aid, verify clinically"
+  std::string header_left;     // e.g. the report title
+  std::string header_right;    // e.g. the patient's name and ID
+  std::string footer_text;     // e.g. "Not a diagnosis: planning aid, verify clinically"
   std::string document_title;  // PDF metadata
 };
 
@@ -60,11 +60,11 @@ class PdfDocument {
   PdfDocument& operator=(const PdfDocument&) = delete;
 
   void heading(std::string_view text, HeadingLevel level);
-  void paragraph(std::string_view text);        // wrapped to the text width
-  void note(std::string_view text);             // smaller grey text (provenance, remarks)
-  void key_values(const KeyValues& pairs);      // two columns: bold keys, values
-  void table(const Table& table);               // asserts each row has one cell per column
-  void figure(const Figure& figure, double max_height_mm);  // centred, scaled to fit
+  void paragraph(std::string_view text);                              // wrapped to the text width
+  void note(std::string_view text);                                   // smaller grey text (provenance, remarks)
+  void key_values(const KeyValues& pairs);                            // two columns: bold keys, values
+  void table(const Table& table);                                     // asserts each row has one cell per column
+  void figure(const Figure& figure, double max_height_mm);            // centred, scaled to fit
   void figure_grid(const std::vector<Figure>& figures, int per_row);  // per_row: 1 (full width, e.g. a chart), 2 or 3
   void vertical_space(double mm);
   void new_page();

@@ -24,9 +24,9 @@ inline constexpr Rgb kAccent{0.11, 0.29, 0.45};
 inline constexpr Rgb kRule{0.75, 0.78, 0.82};
 inline constexpr Rgb kHeaderFill{0.86, 0.90, 0.94};
 inline constexpr Rgb kZebraFill{0.955, 0.962, 0.972};
-inline constexpr double kLeading = 1.38;       // line height / font size
-inline constexpr double kSmallScale = 0.85;    // notes, captions, table text
-inline constexpr double kParagraphGap = 6;     // after paragraphs and blocks
+inline constexpr double kLeading = 1.38;     // line height / font size
+inline constexpr double kSmallScale = 0.85;  // notes, captions, table text
+inline constexpr double kParagraphGap = 6;   // after paragraphs and blocks
 inline constexpr double kCellPadX = 4.5;
 inline constexpr double kCellPadY = 3.0;
 }  // namespace look
@@ -65,8 +65,8 @@ struct PdfDocument::Impl {
   // Greedy word wrap; words wider than `width` are split between characters; '\n' breaks.
   std::vector<std::string> wrap(std::string_view text, HPDF_Font font, double size, double width);
   void draw_text(std::string_view text, double x, double baseline, HPDF_Font font, double size, Rgb colour);
-  void draw_aligned(std::string_view text, double x, double width, double baseline, Align align,
-                    HPDF_Font font, double size, Rgb colour);
+  void draw_aligned(std::string_view text, double x, double width, double baseline, Align align, HPDF_Font font,
+                    double size, Rgb colour);
   // Wrapped lines from the cursor down (no page breaks inside); returns the height used.
   double draw_lines(const std::vector<std::string>& lines, double x, double width, double top_y, Align align,
                     HPDF_Font font, double size, Rgb colour);

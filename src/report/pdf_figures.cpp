@@ -9,8 +9,8 @@
 namespace maxillo::report {
 namespace {
 
-constexpr double kGridGap = 10;      // points between figures of a row
-constexpr double kCaptionGap = 4;    // points between a figure and its caption
+constexpr double kGridGap = 10;    // points between figures of a row
+constexpr double kCaptionGap = 4;  // points between a figure and its caption
 
 HPDF_Image load_png(PdfDocument::Impl& impl, const std::filesystem::path& png) {
   if (!std::filesystem::is_regular_file(png))

@@ -46,8 +46,8 @@ double row_height(const PdfDocument::Impl& impl, const WrappedRow& row) {
   return lines * impl.small() * look::kLeading + 2 * look::kCellPadY;
 }
 
-void draw_row(PdfDocument::Impl& impl, const WrappedRow& row, const std::vector<CellLayout>& layout,
-              HPDF_Font font, const Rgb* fill) {
+void draw_row(PdfDocument::Impl& impl, const WrappedRow& row, const std::vector<CellLayout>& layout, HPDF_Font font,
+              const Rgb* fill) {
   const double height = row_height(impl, row);
   if (fill) impl.fill_rect(impl.left, impl.cursor_y - height, impl.text_width(), height, *fill);
   for (std::size_t c = 0; c < row.size(); ++c)
@@ -71,7 +71,8 @@ void PdfDocument::table(const Table& table) {
     impl.stroke_line(impl.left, impl.cursor_y, impl.right, impl.cursor_y, 0.6, look::kAccent);
   };
   // The header never stands alone at the bottom of a page: it needs one row below it.
-  const double first_row = table.rows.empty() ? 0 : row_height(impl, wrap_row(impl, table.rows[0], layout, impl.regular));
+  const double first_row =
+      table.rows.empty() ? 0 : row_height(impl, wrap_row(impl, table.rows[0], layout, impl.regular));
   impl.ensure_space(row_height(impl, header) + first_row);
   start_on_this_page();
   for (std::size_t r = 0; r < table.rows.size(); ++r) {

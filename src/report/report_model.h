@@ -22,7 +22,7 @@ struct Patient {
 };
 
 struct SeriesRow {
-  std::string date;  // DICOM DA "YYYYMMDD"
+  std::string date;      // DICOM DA "YYYYMMDD"
   std::string modality;  // "CT", "MR", ...
   std::string description;
   int slices = 0;
@@ -57,7 +57,7 @@ struct Section {
 struct ReportModel {
   Patient patient;
   std::string case_label;
-  std::string images_received;  // how the series came, e.g. "over DICOM from CT_ROOM2 (1 series)"; empty: not shown
+  std::string images_received;    // how the series came, e.g. "over DICOM from CT_ROOM2 (1 series)"; empty: not shown
   std::vector<SeriesRow> series;  // shown in the "patient" section
   std::string generated_at;       // ISO 8601, e.g. "2024-05-02T14:03:11Z"
   std::string program_version;    // maxillo::kVersion

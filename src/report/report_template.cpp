@@ -13,16 +13,15 @@
 namespace maxillo::report {
 namespace {
 
-constexpr std::array<std::string_view, 10> kSectionIds = {
-    "patient", "summary", "views", "contents", "planning", "soft_tissue", "occlusion", "cephalometry", "validation", "notes"};
+constexpr std::array<std::string_view, 10> kSectionIds = {"patient",    "summary",     "views",     "contents",
+                                                          "planning",   "soft_tissue", "occlusion", "cephalometry",
+                                                          "validation", "notes"};
 
 class Reader {
  public:
   explicit Reader(std::string_view source) : source_(source) {}
 
-  [[noreturn]] void fail(const std::string& reason) const {
-    throw Error(ErrorCode::kBadTemplate, source_, reason);
-  }
+  [[noreturn]] void fail(const std::string& reason) const { throw Error(ErrorCode::kBadTemplate, source_, reason); }
 
   // Rejects keys of `object` (at `where`) outside `allowed`, naming the first unknown one.
   void only_keys(const Json& object, std::string_view where, std::initializer_list<std::string_view> allowed) const {
@@ -52,8 +51,8 @@ class Reader {
     if (!value.is_number()) fail("'" + key + "' in " + std::string(where) + " must be a number");
     const double x = value.get<double>();
     if (x < min || x > max)
-      fail("'" + key + "' in " + std::string(where) + " = " + std::to_string(x) + " outside [" +
-           std::to_string(min) + ", " + std::to_string(max) + "]");
+      fail("'" + key + "' in " + std::string(where) + " = " + std::to_string(x) + " outside [" + std::to_string(min) +
+           ", " + std::to_string(max) + "]");
     return x;
   }
 
@@ -67,7 +66,7 @@ void read_page(const Reader& in, const Json& page, ReportTemplate& out) {
   if (in.text(page, "orientation", "page") != "portrait") in.fail("page orientation must be \"portrait\"");
   const Json& margins = in.member(page, "margins_mm", "page");
   in.only_keys(margins, "page.margins_mm", {"top", "bottom", "left", "right"});
-  out.margin_top_mm = in.number(margins, "top", "page.margins_mm", 15, 60);  // room for the header
+  out.margin_top_mm = in.number(margins, "top", "page.margins_mm", 15, 60);        // room for the header
   out.margin_bottom_mm = in.number(margins, "bottom", "page.margins_mm", 15, 60);  // and the footer
   out.margin_left_mm = in.number(margins, "left", "page.margins_mm", 5, 60);
   out.margin_right_mm = in.number(margins, "right", "page.margins_mm", 5, 60);

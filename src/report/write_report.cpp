@@ -22,8 +22,8 @@ PageStyle page_style(const ReportModel& model, const ReportTemplate& t) {
   style.bold_font = resolve_font(t.bold_font);
   style.body_size_pt = t.body_size_pt;
   style.header_left = t.title;
-  style.header_right = format_person_name(model.patient.name) +
-                       (model.patient.id.empty() ? "" : "  ·  ID " + model.patient.id);
+  style.header_right =
+      format_person_name(model.patient.name) + (model.patient.id.empty() ? "" : "  ·  ID " + model.patient.id);
   style.footer_text = t.footer;
   style.document_title = t.title;
   return style;
@@ -52,8 +52,8 @@ void patient_section(PdfDocument& pdf, const ReportModel& model) {
                {"Spacing (mm)", 2.2, Align::Right}},
               {}};
   for (const auto& s : model.series)
-    table.rows.push_back({format_dicom_date(s.date), s.modality, s.description, std::to_string(s.slices),
-                          format_spacing(s.spacing_mm)});
+    table.rows.push_back(
+        {format_dicom_date(s.date), s.modality, s.description, std::to_string(s.slices), format_spacing(s.spacing_mm)});
   pdf.table(table);
 }
 
@@ -79,10 +79,9 @@ const Section* find_section(const ReportModel& model, const std::string& id) {
 
 void check_sections_are_listed(const ReportModel& model, const ReportTemplate& t) {
   for (const auto& section : model.sections) {
-    const bool listed = std::any_of(t.sections.begin(), t.sections.end(),
-                                    [&](const TemplateSection& s) { return s.id == section.id; });
-    if (!listed)
-      throw Error(ErrorCode::kBadTemplate, t.source, "the template has no section '" + section.id + "'");
+    const bool listed =
+        std::any_of(t.sections.begin(), t.sections.end(), [&](const TemplateSection& s) { return s.id == section.id; });
+    if (!listed) throw Error(ErrorCode::kBadTemplate, t.source, "the template has no section '" + section.id + "'");
     assert(std::count_if(model.sections.begin(), model.sections.end(),
                          [&](const Section& s) { return s.id == section.id; }) == 1 &&
            "write_report: a section id appears twice in the model");
@@ -92,14 +91,16 @@ void check_sections_are_listed(const ReportModel& model, const ReportTemplate& t
 void title_block(PdfDocument& pdf, const ReportModel& model, const ReportTemplate& t) {
   pdf.heading(t.title, HeadingLevel::Title);
   std::string provenance = t.subtitle;
-  if (!model.generated_at.empty()) provenance += (provenance.empty() ? "" : "  ·  ") + ("generated " + model.generated_at);
+  if (!model.generated_at.empty())
+    provenance += (provenance.empty() ? "" : "  ·  ") + ("generated " + model.generated_at);
   if (!model.program_version.empty()) provenance += " by maxillo " + model.program_version;
   if (!provenance.empty()) pdf.note(provenance);
 }
 
 }  // namespace
 
-int write_report(const ReportModel& model, const ReportTemplate& report_template, const std::filesystem::path& out_pdf) {
+int write_report(const ReportModel& model, const ReportTemplate& report_template,
+                 const std::filesystem::path& out_pdf) {
   check_sections_are_listed(model, report_template);
   PdfDocument pdf(page_style(model, report_template));
   title_block(pdf, model, report_template);
@@ -115,7 +116,8 @@ int write_report(const ReportModel& model, const ReportTemplate& report_template
     if (!entry.intro.empty()) pdf.paragraph(entry.intro);
     if (entry.id == "patient") patient_section(pdf, model);
     if (section)
-      for (size_t b = starts_with_page_break ? 1 : 0; b < section->blocks.size(); ++b) draw_block(pdf, section->blocks[b]);
+      for (size_t b = starts_with_page_break ? 1 : 0; b < section->blocks.size(); ++b)
+        draw_block(pdf, section->blocks[b]);
   }
   pdf.save(out_pdf);
   log::debug("report for ", model.patient.id, " written to ", out_pdf.string());

@@ -14,7 +14,6 @@ namespace maxillo::report {
 // Throws Error(BadTemplate) when the model has a section the template does not list (naming
 // its id), Error(FileNotFound) for a missing font or figure, Error(WriteFailed) otherwise.
 // Returns the number of pages written.
-int write_report(const ReportModel& model, const ReportTemplate& report_template,
-                  const std::filesystem::path& out_pdf);
+int write_report(const ReportModel& model, const ReportTemplate& report_template, const std::filesystem::path& out_pdf);
 
 }  // namespace maxillo::report

@@ -31,18 +31,14 @@ struct Box {
   static Box around(const Vector3d& centre, const Vector3d& half) { return {centre - half, centre + half}; }
   Box mirrored_x() const { return {{-hi.x(), lo.y(), lo.z()}, {-lo.x(), hi.y(), hi.z()}}; }
   Box united(const Box& o) const { return {lo.cwiseMin(o.lo), hi.cwiseMax(o.hi)}; }
-  bool contains(const Vector3d& p) const {
-    return (p.array() >= lo.array()).all() && (p.array() <= hi.array()).all();
-  }
+  bool contains(const Vector3d& p) const { return (p.array() >= lo.array()).all() && (p.array() <= hi.array()).all(); }
 };
 
 // Axis-aligned ellipsoid.
 inline bool in_ellipsoid(const Vector3d& p, const Vector3d& centre, const Vector3d& semi_axes) {
   return ((p - centre).cwiseQuotient(semi_axes)).squaredNorm() < 1.0;
 }
-inline Box ellipsoid_box(const Vector3d& centre, const Vector3d& semi_axes) {
-  return Box::around(centre, semi_axes);
-}
+inline Box ellipsoid_box(const Vector3d& centre, const Vector3d& semi_axes) { return Box::around(centre, semi_axes); }
 
 // Distance from p to the segment [a, b].
 inline double segment_distance(const Vector3d& p, const Vector3d& a, const Vector3d& b) {

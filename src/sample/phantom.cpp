@@ -18,9 +18,9 @@ constexpr double kMinZ = -135, kMaxZ = 138;  // vertex at z ~ 130
 VolumeGeometry phantom_grid(double spacing) {
   VolumeGeometry g;
   g.spacing = Eigen::Vector3d::Constant(spacing);
-  g.size = Eigen::Vector3i(2 * int(std::floor(kHalfWidthX / spacing)) + 1,
-                           int(std::floor((kMaxY - kMinY) / spacing)) + 1,
-                           int(std::floor((kMaxZ - kMinZ) / spacing)) + 1);
+  g.size =
+      Eigen::Vector3i(2 * int(std::floor(kHalfWidthX / spacing)) + 1, int(std::floor((kMaxY - kMinY) / spacing)) + 1,
+                      int(std::floor((kMaxZ - kMinZ) / spacing)) + 1);
   g.origin = Eigen::Vector3d(-(g.size.x() - 1) / 2 * spacing, kMinY, kMinZ);
   return g;
 }

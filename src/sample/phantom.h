@@ -20,15 +20,15 @@ namespace maxillo {
 
 // Tissue labels of Phantom::labels (values are stable: files and tests rely on them).
 enum class Tissue : uint8_t {
-  kAir = 0,          // outside air and airways open to it (nasal cavity, nostrils, ear canals)
-  kSoftTissue = 1,   // skin, fat, muscle, tongue, brain, eyes, pituitary
-  kBone = 2,         // cranium and facial skeleton (maxilla with palate, zygomas, nasal bones)
-  kUpperTooth = 3,   // maxillary teeth (enamel crowns, dentine roots)
-  kSinusAir = 4,     // air of the two maxillary sinuses (closed cavities, no ostium)
-  kHeadRest = 5,     // curved plastic head rest under the occiput
-  kLowerTooth = 6,   // mandibular teeth
-  kMandible = 7,     // mandibular bone
-  kTable = 8,        // flat CT table plate below the head rest
+  kAir = 0,         // outside air and airways open to it (nasal cavity, nostrils, ear canals)
+  kSoftTissue = 1,  // skin, fat, muscle, tongue, brain, eyes, pituitary
+  kBone = 2,        // cranium and facial skeleton (maxilla with palate, zygomas, nasal bones)
+  kUpperTooth = 3,  // maxillary teeth (enamel crowns, dentine roots)
+  kSinusAir = 4,    // air of the two maxillary sinuses (closed cavities, no ostium)
+  kHeadRest = 5,    // curved plastic head rest under the occiput
+  kLowerTooth = 6,  // mandibular teeth
+  kMandible = 7,    // mandibular bone
+  kTable = 8,       // flat CT table plate below the head rest
 };
 inline constexpr int kTissueCount = 9;
 std::string_view tissue_name(Tissue tissue);
@@ -55,8 +55,8 @@ struct PhantomSpec {
 PhantomSpec phantom_spec_for_class(SkeletalClass skeletal_class);
 
 struct Phantom {
-  Volume ct;            // HU, int16
-  LabelVolume labels;   // Tissue values, same geometry as ct
+  Volume ct;              // HU, int16
+  LabelVolume labels;     // Tissue values, same geometry as ct
   LandmarkSet landmarks;  // LPS mm, see phantom_landmarks.h for the list and definitions
 };
 

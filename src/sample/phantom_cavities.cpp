@@ -41,18 +41,19 @@ bool in_orbit(const Vector3d& p) {
   return u * u + v * v < 1;
 }
 
-
 }  // namespace
 
 void add_cavity_parts(const PhantomDesign& d, PartList& parts) {
   const TissueMask bone = mask_of(Tissue::kBone);
   parts.push_back(bilateral("orbit", Box::spanning(lps(10, 100, -1), lps(54, anterior(kOrbitApex), 36)), in_orbit,
                             Tissue::kSoftTissue, Material::kFat, bone));
-  parts.push_back(bilateral("eye", Box::around(kEyeCentre, Vector3d::Constant(kEyeRadius)),
-                            [](const Vector3d& p) { return (p - kEyeCentre).norm() < kEyeRadius; },
-                            Tissue::kSoftTissue, Material::kVitreous, mask_of(Tissue::kSoftTissue)));
+  parts.push_back(bilateral(
+      "eye", Box::around(kEyeCentre, Vector3d::Constant(kEyeRadius)),
+      [](const Vector3d& p) { return (p - kEyeCentre).norm() < kEyeRadius; }, Tissue::kSoftTissue, Material::kVitreous,
+      mask_of(Tissue::kSoftTissue)));
   parts.push_back(with_maxilla(
-      d, {"nasal cavity", Box::spanning(lps(-kNasalFloorHalfWidth, kNasalBack, -30), lps(kNasalFloorHalfWidth, 85, kNasalRoof)),
+      d, {"nasal cavity",
+          Box::spanning(lps(-kNasalFloorHalfWidth, kNasalBack, -30), lps(kNasalFloorHalfWidth, 85, kNasalRoof)),
           [d](const Vector3d& p) {
             double a = anterior(p), z = p.z();
             if (a < kNasalBack || z > kNasalRoof || z < d.palatal_z(a) + 2) return false;
@@ -62,26 +63,31 @@ void add_cavity_parts(const PhantomDesign& d, PartList& parts) {
             return a < front;
           },
           Tissue::kAir, Material::kAir, mask_of(Tissue::kBone, Tissue::kSoftTissue)}));
-  parts.push_back(with_maxilla(
-      d, {"nasal septum", Box::spanning(lps(-kSeptumHalfThickness, kSeptumBack, -30), lps(kSeptumHalfThickness, kSeptumFront, kSeptumTop)),
-          [d](const Vector3d& p) {
-            double a = anterior(p);
-            return std::abs(p.x()) < kSeptumHalfThickness && a > kSeptumBack && a < kSeptumFront && p.z() < kSeptumTop &&
-                   p.z() > d.palatal_z(a);
-          },
-          Tissue::kBone, Material::kBone, mask_of(Tissue::kAir)}));
-  parts.push_back(bilateral("nostril", capsule_box(kNostrilInner, kNostrilOuter, kNostrilRadius),
-                            [](const Vector3d& p) { return segment_distance(p, kNostrilInner, kNostrilOuter) < kNostrilRadius; },
-                            Tissue::kAir, Material::kAir, mask_of(Tissue::kSoftTissue)));
-  parts.push_back(with_maxilla(d, bilateral("maxillary sinus", ellipsoid_box(kSinusCentre, kSinusSemiAxes),
-                                         [](const Vector3d& p) { return in_ellipsoid(p, kSinusCentre, kSinusSemiAxes); },
-                                         Tissue::kSinusAir, Material::kAir, bone)));
-  parts.push_back(bilateral("ear canal", capsule_box(kEarCanalInner, kEarCanalOuter, kEarCanalRadius),
-                            [](const Vector3d& p) { return segment_distance(p, kEarCanalInner, kEarCanalOuter) < kEarCanalRadius; },
-                            Tissue::kAir, Material::kAir, mask_of(Tissue::kBone, Tissue::kSoftTissue)));
-  parts.push_back(bilateral("temporomandibular joint space", ellipsoid_box(kJointCentre, kJointSemiAxes),
-                            [](const Vector3d& p) { return in_ellipsoid(p, kJointCentre, kJointSemiAxes); },
-                            Tissue::kSoftTissue, Material::kSoft, bone));
+  parts.push_back(with_maxilla(d, {"nasal septum",
+                                   Box::spanning(lps(-kSeptumHalfThickness, kSeptumBack, -30),
+                                                 lps(kSeptumHalfThickness, kSeptumFront, kSeptumTop)),
+                                   [d](const Vector3d& p) {
+                                     double a = anterior(p);
+                                     return std::abs(p.x()) < kSeptumHalfThickness && a > kSeptumBack &&
+                                            a < kSeptumFront && p.z() < kSeptumTop && p.z() > d.palatal_z(a);
+                                   },
+                                   Tissue::kBone, Material::kBone, mask_of(Tissue::kAir)}));
+  parts.push_back(bilateral(
+      "nostril", capsule_box(kNostrilInner, kNostrilOuter, kNostrilRadius),
+      [](const Vector3d& p) { return segment_distance(p, kNostrilInner, kNostrilOuter) < kNostrilRadius; },
+      Tissue::kAir, Material::kAir, mask_of(Tissue::kSoftTissue)));
+  parts.push_back(with_maxilla(d, bilateral(
+                                      "maxillary sinus", ellipsoid_box(kSinusCentre, kSinusSemiAxes),
+                                      [](const Vector3d& p) { return in_ellipsoid(p, kSinusCentre, kSinusSemiAxes); },
+                                      Tissue::kSinusAir, Material::kAir, bone)));
+  parts.push_back(bilateral(
+      "ear canal", capsule_box(kEarCanalInner, kEarCanalOuter, kEarCanalRadius),
+      [](const Vector3d& p) { return segment_distance(p, kEarCanalInner, kEarCanalOuter) < kEarCanalRadius; },
+      Tissue::kAir, Material::kAir, mask_of(Tissue::kBone, Tissue::kSoftTissue)));
+  parts.push_back(bilateral(
+      "temporomandibular joint space", ellipsoid_box(kJointCentre, kJointSemiAxes),
+      [](const Vector3d& p) { return in_ellipsoid(p, kJointCentre, kJointSemiAxes); }, Tissue::kSoftTissue,
+      Material::kSoft, bone));
 }
 
 }  // namespace maxillo::sample

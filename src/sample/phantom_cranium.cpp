@@ -9,9 +9,9 @@ const Vector3d kCraniumCentre = lps(0, -21, 40);
 const Vector3d kCraniumOuter{70, 92, 85};
 const Vector3d kCraniumInner{63, 85, 78};
 // Cranial fossae floors (z of the brain's underside, mm) and skull base thickness.
-constexpr double kAnteriorFossaFloor = 40;  // over the orbits, anterior to a = 28
-constexpr double kMiddleFossaFloor = 2;     // temporal lobes, lateral to |x| = 18
-constexpr double kSphenoidTop = 24;         // central skull base around the sella
+constexpr double kAnteriorFossaFloor = 40;    // over the orbits, anterior to a = 28
+constexpr double kMiddleFossaFloor = 2;       // temporal lobes, lateral to |x| = 18
+constexpr double kSphenoidTop = 24;           // central skull base around the sella
 constexpr double kPosteriorFossaFloor = -18;  // cerebellum, posterior to a = -20
 constexpr double kBaseThickness = 9;
 constexpr double kSphenoidBodyThickness = 30;  // down to the nasopharynx roof
@@ -47,16 +47,18 @@ void add_cranium_parts(const PhantomDesign& design, PartList& parts) {
                    Tissue::kBone, Material::kBone});
   parts.push_back({"brain", ellipsoid_box(kCraniumCentre, kCraniumInner),
                    [](const Vector3d& p) {
-                     return p.z() > skull_base(p.x(), anterior(p)).floor && in_ellipsoid(p, kCraniumCentre, kCraniumInner);
+                     return p.z() > skull_base(p.x(), anterior(p)).floor &&
+                            in_ellipsoid(p, kCraniumCentre, kCraniumInner);
                    },
                    Tissue::kSoftTissue, Material::kBrain});
   const Vector3d sella = design.S;
   parts.push_back({"pituitary fossa (sella turcica)", Box::around(sella, Vector3d::Constant(kSellaRadius)),
-                   [sella](const Vector3d& p) { return (p - sella).norm() < kSellaRadius; },
-                   Tissue::kSoftTissue, Material::kSoft, mask_of(Tissue::kBone)});
-  parts.push_back(bilateral("temporal bone", ellipsoid_box(kTemporalCentre, kTemporalSemiAxes),
-                            [](const Vector3d& p) { return in_ellipsoid(p, kTemporalCentre, kTemporalSemiAxes); },
-                            Tissue::kBone, Material::kBone));
+                   [sella](const Vector3d& p) { return (p - sella).norm() < kSellaRadius; }, Tissue::kSoftTissue,
+                   Material::kSoft, mask_of(Tissue::kBone)});
+  parts.push_back(bilateral(
+      "temporal bone", ellipsoid_box(kTemporalCentre, kTemporalSemiAxes),
+      [](const Vector3d& p) { return in_ellipsoid(p, kTemporalCentre, kTemporalSemiAxes); }, Tissue::kBone,
+      Material::kBone));
 }
 
 }  // namespace maxillo::sample

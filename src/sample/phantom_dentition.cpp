@@ -16,8 +16,8 @@ constexpr double kDeg = std::numbers::pi / 180;
 struct ToothDims {
   double width, crown_height, thickness, root_length;
   int roots;
-  double torque_deg;    // crown tipped labially from the occlusal normal
-  double edge_offset;   // incisal edge beyond the occlusal plane (mm, towards the other arch)
+  double torque_deg;   // crown tipped labially from the occlusal normal
+  double edge_offset;  // incisal edge beyond the occlusal plane (mm, towards the other arch)
 };
 // Adult mesio-distal widths, crown heights, labio-lingual thicknesses and root lengths (mm).
 constexpr std::array<ToothDims, 7> kUpperTeeth = {{{8.5, 10.5, 7.0, 13, 1, 28, 1.1},
@@ -43,7 +43,8 @@ void arch_point(const ArchShape& arch, double s, Vector2d& point, Vector2d& tang
   const double dt = 1e-4;
   const double power = 2 / arch.exponent;
   auto at = [&](double u) {
-    return Vector2d(arch.half_width * std::pow(std::sin(u), power), arch.front - arch.depth * (1 - std::pow(std::cos(u), power)));
+    return Vector2d(arch.half_width * std::pow(std::sin(u), power),
+                    arch.front - arch.depth * (1 - std::pow(std::cos(u), power)));
   };
   Vector2d previous = at(0);
   while (length < s) {
@@ -93,8 +94,8 @@ Dentition::Dentition(const PhantomDesign& design) : design_(design) {
         // Torque: the root tips lingually (crown labially) by torque_deg.
         Vector3d apical = std::cos(d.torque_deg * kDeg) * occlusal - std::sin(d.torque_deg * kDeg) * outward;
         Vector3d buccal = (outward - apical * apical.dot(outward)).normalized();
-        teeth_.push_back(Tooth{jaw, side, i + 1, lps(x, a, z), distal, buccal, apical.normalized(),
-                               occlusal, d.width, d.crown_height, d.thickness, d.root_length, d.roots, i >= 3, i >= 1});
+        teeth_.push_back(Tooth{jaw, side, i + 1, lps(x, a, z), distal, buccal, apical.normalized(), occlusal, d.width,
+                               d.crown_height, d.thickness, d.root_length, d.roots, i >= 3, i >= 1});
       }
     }
   }
@@ -145,8 +146,8 @@ bool Dentition::inside_reference(const Tooth& t, ToothPart part, const Vector3d&
         return true;
     return false;
   }
-  const std::array<Vector2d, 3> centres = {Vector2d(-t.width / 4, t.thickness / 4), Vector2d(t.width / 4, t.thickness / 4),
-                                           Vector2d(0, -t.thickness / 4)};
+  const std::array<Vector2d, 3> centres = {Vector2d(-t.width / 4, t.thickness / 4),
+                                           Vector2d(t.width / 4, t.thickness / 4), Vector2d(0, -t.thickness / 4)};
   for (const Vector2d& c : centres)
     if (in_superellipse(m - c.x() * spread, b - c.y() * spread, 0.18 * t.width * taper, 0.2 * t.thickness * taper, 2))
       return true;
@@ -173,9 +174,7 @@ bool Dentition::inside_lower(const Vector3d& p) const {
   return false;
 }
 
-Vector3d Dentition::incisal_edge_centre(Jaw jaw, Side side) const {
-  return displaced(jaw, tooth(jaw, side, 1).origin);
-}
+Vector3d Dentition::incisal_edge_centre(Jaw jaw, Side side) const { return displaced(jaw, tooth(jaw, side, 1).origin); }
 
 Vector3d Dentition::mesiobuccal_cusp_tip(Jaw jaw, Side side) const {
   const Tooth& t = tooth(jaw, side, 6);

@@ -27,15 +27,15 @@ enum class Side { kRight, kLeft };  // patient right = -x
 struct Tooth {
   Jaw jaw;
   Side side;
-  int position;              // 1 central incisor .. 7 second molar
-  Vector3d origin;           // reference anatomy: incisal edge centre / occlusal centre, LPS mm
-  Vector3d mesiodistal;      // unit, pointing distally
-  Vector3d buccal;           // unit, pointing labially/buccally
-  Vector3d apical;           // unit, from the crown towards the root apex
-  Vector3d into_jaw;         // unit occlusal-plane normal pointing from the plane into this jaw
+  int position;          // 1 central incisor .. 7 second molar
+  Vector3d origin;       // reference anatomy: incisal edge centre / occlusal centre, LPS mm
+  Vector3d mesiodistal;  // unit, pointing distally
+  Vector3d buccal;       // unit, pointing labially/buccally
+  Vector3d apical;       // unit, from the crown towards the root apex
+  Vector3d into_jaw;     // unit occlusal-plane normal pointing from the plane into this jaw
   double width, crown_height, thickness, root_length;
   int roots;
-  bool posterior;            // premolars and molars: flat-topped crowns with cusps and fossa
+  bool posterior;              // premolars and molars: flat-topped crowns with cusps and fossa
   bool cut_by_occlusal_plane;  // all but the central incisors stay on their side of the plane
 };
 
@@ -53,8 +53,8 @@ class Dentition {
 
   const Tooth& tooth(Jaw jaw, Side side, int position) const;
   // Landmarks on the displaced anatomy.
-  Vector3d incisal_edge_centre(Jaw jaw, Side side) const;       // central incisor (U1, L1)
-  Vector3d mesiobuccal_cusp_tip(Jaw jaw, Side side) const;      // first molar (U6, L6)
+  Vector3d incisal_edge_centre(Jaw jaw, Side side) const;   // central incisor (U1, L1)
+  Vector3d mesiobuccal_cusp_tip(Jaw jaw, Side side) const;  // first molar (U6, L6)
 
  private:
   bool inside_reference(const Tooth& tooth, ToothPart part, const Vector3d& p) const;

@@ -14,7 +14,7 @@ constexpr double kPnsAnterior = 19.5, kPnsHeight = -25;  // posterior nasal spin
 constexpr double kUpperAlveolarCurvature = 0.035;  // 1/mm
 // Lower alveolar front: deepest at B, steeper above B (alveolus) than below (chin).
 constexpr double kLowerAlveolarCurvatureAbove = 0.052, kLowerAlveolarCurvatureBelow = 0.0208;
-constexpr double kPogBelowB = 12;                  // Pog lies 12 mm below B
+constexpr double kPogBelowB = 12;  // Pog lies 12 mm below B
 // Occlusal plane: through the incisor overlap (a = 70, z = -50.75), tilted kOcclusalTilt.
 constexpr double kOcclusalAnterior = 70, kOcclusalHeight = -50.75;
 

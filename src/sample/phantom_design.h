@@ -14,17 +14,17 @@
 namespace maxillo::sample {
 
 // Cephalometric design values (mm, deg).
-inline constexpr double kSellaHeight = 20;        // S above Frankfort horizontal
-inline constexpr double kSellaNasion = 70;        // S-N length
-inline constexpr double kSnToFrankfort = 7;       // SN rises anteriorly by this angle
-inline constexpr double kSna = 82, kSnb = 80;     // reference (Class I) angles
-inline constexpr double kNasionToA = 58;          // N-A distance
-inline constexpr double kNasionToB = 95;          // N-B distance
-inline constexpr double kOcclusalTilt = 8;        // occlusal plane descends anteriorly (to FH)
-inline constexpr double kLeFortLevel = -14;       // z of the maxillary displacement's hinge band
-inline constexpr double kChinDepth = 7.5;         // mental protuberance semi-axis, anterior (mm)
-inline constexpr double kChinHeight = 13.5;       // mental protuberance semi-axis, vertical (mm)
-inline constexpr double kChinHalfWidth = 14;      // mental protuberance semi-axis, lateral (mm)
+inline constexpr double kSellaHeight = 20;     // S above Frankfort horizontal
+inline constexpr double kSellaNasion = 70;     // S-N length
+inline constexpr double kSnToFrankfort = 7;    // SN rises anteriorly by this angle
+inline constexpr double kSna = 82, kSnb = 80;  // reference (Class I) angles
+inline constexpr double kNasionToA = 58;       // N-A distance
+inline constexpr double kNasionToB = 95;       // N-B distance
+inline constexpr double kOcclusalTilt = 8;     // occlusal plane descends anteriorly (to FH)
+inline constexpr double kLeFortLevel = -14;    // z of the maxillary displacement's hinge band
+inline constexpr double kChinDepth = 7.5;      // mental protuberance semi-axis, anterior (mm)
+inline constexpr double kChinHeight = 13.5;    // mental protuberance semi-axis, vertical (mm)
+inline constexpr double kChinHalfWidth = 14;   // mental protuberance semi-axis, lateral (mm)
 
 struct PhantomDesign {
   double maxilla_shift = 0;   // mm anterior, below the Le Fort I level

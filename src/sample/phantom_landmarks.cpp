@@ -9,8 +9,8 @@
 namespace maxillo::sample {
 namespace {
 
-constexpr double kOrbitaleX = 33;   // centre of the orbital opening
-constexpr double kPorionA = -20;    // ear canal axis (phantom_cavities.cpp)
+constexpr double kOrbitaleX = 33;  // centre of the orbital opening
+constexpr double kPorionA = -20;   // ear canal axis (phantom_cavities.cpp)
 
 // First point of `tissue` on the ray from `outside` along `direction` (unit), to 1e-4 mm.
 Vector3d first_hit(const PartList& parts, Tissue tissue, const Vector3d& outside, const Vector3d& direction) {

@@ -55,9 +55,7 @@ bool in_posterior_body(const PhantomDesign& d, const Vector3d& p) {
   return in_body_height(d, a, p.z()) && in_polygon(Vector2d(p.x(), a), kPosteriorBody);
 }
 
-double ramus_plane_x(double z) {
-  return lerp(kRamusXAtAngle, kRamusXAtCondyle, smoothstep(-56, -5, z));
-}
+double ramus_plane_x(double z) { return lerp(kRamusXAtAngle, kRamusXAtCondyle, smoothstep(-56, -5, z)); }
 
 }  // namespace
 
@@ -93,24 +91,29 @@ void add_mandible_parts(const PhantomDesign& d, PartList& parts) {
   const TissueMask soft = mask_of(Tissue::kAir, Tissue::kSoftTissue);
   const Vector3d chin_centre = d.Pog - lps(0, kChinDepth, 0);  // behind Pog
   const Vector3d chin_semi{kChinHalfWidth, kChinDepth, kChinHeight};
-  parts.push_back(with_mandible(d, {"mental protuberance", ellipsoid_box(chin_centre, chin_semi),
-                                 [chin_centre, chin_semi](const Vector3d& p) { return in_ellipsoid(p, chin_centre, chin_semi); },
-                                 Tissue::kMandible, Material::kBone, soft}));
-  parts.push_back(with_mandible(d, {"mandibular body", Box::spanning(lps(-35, 20, d.Me.z()), lps(35, 80, -40)),
-                                 [d](const Vector3d& p) { return in_body(d, p); }, Tissue::kMandible, Material::kBone, soft}));
-  parts.push_back(with_mandible(d, bilateral("mandibular body behind the molars", Box::spanning(lps(20, 0, -90), lps(51, 36, -40)),
-                                          [d](const Vector3d& p) { return in_posterior_body(d, p); },
-                                          Tissue::kMandible, Material::kBone, soft)));
+  parts.push_back(
+      with_mandible(d, {"mental protuberance", ellipsoid_box(chin_centre, chin_semi),
+                        [chin_centre, chin_semi](const Vector3d& p) { return in_ellipsoid(p, chin_centre, chin_semi); },
+                        Tissue::kMandible, Material::kBone, soft}));
+  parts.push_back(
+      with_mandible(d, {"mandibular body", Box::spanning(lps(-35, 20, d.Me.z()), lps(35, 80, -40)),
+                        [d](const Vector3d& p) { return in_body(d, p); }, Tissue::kMandible, Material::kBone, soft}));
+  parts.push_back(with_mandible(
+      d, bilateral(
+             "mandibular body behind the molars", Box::spanning(lps(20, 0, -90), lps(51, 36, -40)),
+             [d](const Vector3d& p) { return in_posterior_body(d, p); }, Tissue::kMandible, Material::kBone, soft)));
   const auto outline = ramus_outline(d);
-  parts.push_back(bilateral("ramus", Box::spanning(lps(kRamusXAtAngle - 5, -15, -80), lps(kRamusXAtCondyle + 5, 36, 0)),
-                            [outline](const Vector3d& p) {
-                              return std::abs(p.x() - ramus_plane_x(p.z())) < kRamusHalfThickness &&
-                                     in_polygon(Vector2d(anterior(p), p.z()), outline);
-                            },
-                            Tissue::kMandible, Material::kBone, soft));
-  parts.push_back(bilateral("condyle", ellipsoid_box(kCondyleCentre, kCondyleSemiAxes),
-                            [](const Vector3d& p) { return in_ellipsoid(p, kCondyleCentre, kCondyleSemiAxes); },
-                            Tissue::kMandible, Material::kBone, soft));
+  parts.push_back(bilateral(
+      "ramus", Box::spanning(lps(kRamusXAtAngle - 5, -15, -80), lps(kRamusXAtCondyle + 5, 36, 0)),
+      [outline](const Vector3d& p) {
+        return std::abs(p.x() - ramus_plane_x(p.z())) < kRamusHalfThickness &&
+               in_polygon(Vector2d(anterior(p), p.z()), outline);
+      },
+      Tissue::kMandible, Material::kBone, soft));
+  parts.push_back(bilateral(
+      "condyle", ellipsoid_box(kCondyleCentre, kCondyleSemiAxes),
+      [](const Vector3d& p) { return in_ellipsoid(p, kCondyleCentre, kCondyleSemiAxes); }, Tissue::kMandible,
+      Material::kBone, soft));
 }
 
 }  // namespace maxillo::sample

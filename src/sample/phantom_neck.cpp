@@ -15,9 +15,12 @@ const std::array<Vector2d, 4> kAirwayPath = {{{15, -16}, {11, -40}, {9, -80}, {8
 // arch ring radius 12 mm around the canal, spinous processes back to a = -50.
 constexpr double kBodyCentreA = -9, kBodyRadius = 8, kCanalCentreA = -24, kCanalRadius = 7.5;
 constexpr double kArchRadius = 12, kSpinousTipA = -50, kSpinousRadius = 3;
-struct Level { double bottom, top; };
+struct Level {
+  double bottom, top;
+};
 // C2 (with the dens up to -30) to C7; discs (soft tissue) between the bodies.
-constexpr std::array<Level, 6> kBodies = {{{-62, -40}, {-78, -65}, {-94, -81}, {-110, -97}, {-126, -113}, {-142, -129}}};
+constexpr std::array<Level, 6> kBodies = {
+    {{-62, -40}, {-78, -65}, {-94, -81}, {-110, -97}, {-126, -113}, {-142, -129}}};
 constexpr double kDensTop = -30, kDensRadius = 5;
 constexpr Level kAtlas{-42, -34};  // C1: a ring around the dens and the canal (no body)
 constexpr double kAtlasCentreA = -18, kAtlasInnerRadius = 14, kAtlasOuterRadius = 18;
@@ -59,18 +62,19 @@ bool in_vertebra(const Vector3d& p) {
 
 void add_neck_parts(const PhantomDesign&, PartList& parts) {
   const TissueMask soft = mask_of(Tissue::kSoftTissue);
-  parts.push_back({"foramen magnum", Box::spanning(lps(-kCanalRadius, kCanalCentreA - kCanalRadius, kForamenMagnumBottom),
-                                                   lps(kCanalRadius, kCanalCentreA + kCanalRadius, kForamenMagnumTop)),
-                   [](const Vector3d& p) {
-                     return p.z() < kForamenMagnumTop && radial(p, kCanalCentreA) < kCanalRadius;
-                   },
-                   Tissue::kSoftTissue, Material::kSoft, mask_of(Tissue::kBone)});
+  parts.push_back(
+      {"foramen magnum",
+       Box::spanning(lps(-kCanalRadius, kCanalCentreA - kCanalRadius, kForamenMagnumBottom),
+                     lps(kCanalRadius, kCanalCentreA + kCanalRadius, kForamenMagnumTop)),
+       [](const Vector3d& p) { return p.z() < kForamenMagnumTop && radial(p, kCanalCentreA) < kCanalRadius; },
+       Tissue::kSoftTissue, Material::kSoft, mask_of(Tissue::kBone)});
   parts.push_back({"cervical spine", Box::spanning(lps(-25, 10, -200), lps(25, kSpinousTipA, kDensTop)), in_vertebra,
                    Tissue::kBone, Material::kBone, soft});
-  parts.push_back({"spinal canal", Box::spanning(lps(-kCanalRadius, kCanalCentreA - kCanalRadius, -200),
-                                                 lps(kCanalRadius, kCanalCentreA + kCanalRadius, kForamenMagnumBottom)),
-                   [](const Vector3d& p) { return radial(p, kCanalCentreA) < kCanalRadius; },
-                   Tissue::kSoftTissue, Material::kSoft, mask_of(Tissue::kBone)});
+  parts.push_back({"spinal canal",
+                   Box::spanning(lps(-kCanalRadius, kCanalCentreA - kCanalRadius, -200),
+                                 lps(kCanalRadius, kCanalCentreA + kCanalRadius, kForamenMagnumBottom)),
+                   [](const Vector3d& p) { return radial(p, kCanalCentreA) < kCanalRadius; }, Tissue::kSoftTissue,
+                   Material::kSoft, mask_of(Tissue::kBone)});
   parts.push_back({"pharyngeal airway", Box::spanning(lps(-kAirwayHalfWidth, 25, -200), lps(kAirwayHalfWidth, 0, -16)),
                    in_airway, Tissue::kAir, Material::kAir, soft});
 }

@@ -4,8 +4,8 @@
 
 namespace maxillo::sample {
 
-Part bilateral(const char* name, const Box& left_box, std::function<bool(const Vector3d&)> left_inside,
-               Tissue tissue, Material material, TissueMask overwrites) {
+Part bilateral(const char* name, const Box& left_box, std::function<bool(const Vector3d&)> left_inside, Tissue tissue,
+               Material material, TissueMask overwrites) {
   auto mirrored = [inside = std::move(left_inside)](const Vector3d& p) {
     return inside(Vector3d(std::abs(p.x()), p.y(), p.z()));
   };

@@ -19,22 +19,24 @@ enum class Material : uint8_t { kAir, kFat, kSoft, kBrain, kVitreous, kBone, kEn
 using TissueMask = uint16_t;
 constexpr TissueMask mask_of(Tissue t) { return TissueMask(1u << unsigned(t)); }
 template <typename... T>
-constexpr TissueMask mask_of(Tissue first, T... rest) { return mask_of(first) | mask_of(rest...); }
+constexpr TissueMask mask_of(Tissue first, T... rest) {
+  return mask_of(first) | mask_of(rest...);
+}
 inline constexpr TissueMask kAnyTissue = 0xFFFF;
 
 struct Part {
   const char* name;
-  Box box;                                        // LPS mm; nothing is painted outside it
-  std::function<bool(const Vector3d&)> inside;    // p in LPS mm
+  Box box;                                      // LPS mm; nothing is painted outside it
+  std::function<bool(const Vector3d&)> inside;  // p in LPS mm
   Tissue tissue;
   Material material;
-  TissueMask overwrites = kAnyTissue;             // labels this part may replace
+  TissueMask overwrites = kAnyTissue;  // labels this part may replace
 };
 using PartList = std::vector<Part>;
 
 // A part defined for the left side (x >= 0) and mirrored to the right: evaluated on |x|.
-Part bilateral(const char* name, const Box& left_box, std::function<bool(const Vector3d&)> left_inside,
-               Tissue tissue, Material material, TissueMask overwrites = kAnyTissue);
+Part bilateral(const char* name, const Box& left_box, std::function<bool(const Vector3d&)> left_inside, Tissue tissue,
+               Material material, TissueMask overwrites = kAnyTissue);
 
 // The part moved with the maxilla (below the Le Fort I band) or the mandibular body by the
 // spec's displacement knobs: queries are pulled back to the reference anatomy.

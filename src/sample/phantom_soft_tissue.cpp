@@ -50,17 +50,17 @@ SkinProfile::SkinProfile(const PhantomDesign& design) : design_(design) {
   knots_ = {{{-103, 40},
              {-98, 60},
              {-90, 73},
-             {design.Pog.z(), pog_a},             // soft pogonion (max)
-             {-68, 76},                           // soft B, labiomental fold (min)
-             {kLabraleInferiusHeight, 85},        // labrale inferius (max)
-             {kStomionHeight, 83.5},              // stomion (min)
-             {kLabraleSuperiusHeight, 86.5},      // labrale superius (max)
-             {kSubnasaleHeight, 82},              // subnasale (min)
+             {design.Pog.z(), pog_a},         // soft pogonion (max)
+             {-68, 76},                       // soft B, labiomental fold (min)
+             {kLabraleInferiusHeight, 85},    // labrale inferius (max)
+             {kStomionHeight, 83.5},          // stomion (min)
+             {kLabraleSuperiusHeight, 86.5},  // labrale superius (max)
+             {kSubnasaleHeight, 82},          // subnasale (min)
              {-22, 93},
-             {kPronasaleHeight, 99},              // pronasale (max)
+             {kPronasaleHeight, 99},  // pronasale (max)
              {-2, 93},
              {12, 85},
-             {design.N.z(), n_a},                 // soft nasion (min)
+             {design.N.z(), n_a},  // soft nasion (min)
              {45, 77},
              {60, 74}}};
   // Fritsch-Carlson monotone slopes: zero at every local extremum of the knots.
@@ -112,9 +112,10 @@ double SkinProfile::surface(double x, double z) const {
 }
 
 void add_soft_tissue_parts(const PhantomDesign& design, PartList& parts) {
-  parts.push_back({"scalp", ellipsoid_box(kScalpCentre, kScalpSemiAxes),
-                   [](const Vector3d& p) { return p.z() > kScalpBottom && in_ellipsoid(p, kScalpCentre, kScalpSemiAxes); },
-                   Tissue::kSoftTissue, Material::kSoft});
+  parts.push_back(
+      {"scalp", ellipsoid_box(kScalpCentre, kScalpSemiAxes),
+       [](const Vector3d& p) { return p.z() > kScalpBottom && in_ellipsoid(p, kScalpCentre, kScalpSemiAxes); },
+       Tissue::kSoftTissue, Material::kSoft});
   auto skin = std::make_shared<SkinProfile>(design);
   parts.push_back({"face", Box::spanning(lps(-75, 110, -110), lps(75, kFaceBack, kFaceTop)),
                    [skin](const Vector3d& p) {
@@ -123,8 +124,9 @@ void add_soft_tissue_parts(const PhantomDesign& design, PartList& parts) {
                      return a > kFaceBack && p.z() > submental && a < skin->surface(p.x(), p.z());
                    },
                    Tissue::kSoftTissue, Material::kSoft});
-  parts.push_back({"neck", Box::spanning(lps(-kNeckHalfWidth, kNeckCentreA + kNeckHalfDepth, -1000),
-                                         lps(kNeckHalfWidth, kNeckCentreA - kNeckHalfDepth, kNeckTop)),
+  parts.push_back({"neck",
+                   Box::spanning(lps(-kNeckHalfWidth, kNeckCentreA + kNeckHalfDepth, -1000),
+                                 lps(kNeckHalfWidth, kNeckCentreA - kNeckHalfDepth, kNeckTop)),
                    [](const Vector3d& p) {
                      double u = p.x() / kNeckHalfWidth, v = (anterior(p) - kNeckCentreA) / kNeckHalfDepth;
                      return p.z() < kNeckTop && u * u + v * v < 1;

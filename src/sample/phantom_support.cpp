@@ -10,7 +10,7 @@ constexpr double kOcciputSkinY = 118;   // most posterior skin point (scalp elli
 constexpr double kHeadRestGap = 1.5;    // skin to head rest (mm)
 constexpr double kHeadRestRadius = 90;  // inner radius of the trough
 constexpr double kHeadRestThickness = 8;
-constexpr double kHeadRestRimDrop = 40;  // the trough rises to 40 mm anterior of its lowest line
+constexpr double kHeadRestRimDrop = 40;                      // the trough rises to 40 mm anterior of its lowest line
 constexpr double kHeadRestBottom = -60, kHeadRestTop = 110;  // z extent
 constexpr double kTableGap = 8, kTableThickness = 10;
 

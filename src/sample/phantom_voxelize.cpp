@@ -43,16 +43,26 @@ std::vector<uint8_t> bone_depth(const PaintedGrid& grid) {
       for (int i = 0; i < n.x(); ++i) {
         int64_t v = grid.geometry.index(i, j, k);
         if (!depth[v]) continue;
-        if (i == 0 || j == 0 || k == 0) { depth[v] = 1; continue; }
-        relax(v, v - sx); relax(v, v - sy); relax(v, v - sz);
+        if (i == 0 || j == 0 || k == 0) {
+          depth[v] = 1;
+          continue;
+        }
+        relax(v, v - sx);
+        relax(v, v - sy);
+        relax(v, v - sz);
       }
   for (int k = n.z() - 1; k >= 0; --k)  // backward pass
     for (int j = n.y() - 1; j >= 0; --j)
       for (int i = n.x() - 1; i >= 0; --i) {
         int64_t v = grid.geometry.index(i, j, k);
         if (!depth[v]) continue;
-        if (i == n.x() - 1 || j == n.y() - 1 || k == n.z() - 1) { depth[v] = 1; continue; }
-        relax(v, v + sx); relax(v, v + sy); relax(v, v + sz);
+        if (i == n.x() - 1 || j == n.y() - 1 || k == n.z() - 1) {
+          depth[v] = 1;
+          continue;
+        }
+        relax(v, v + sx);
+        relax(v, v + sy);
+        relax(v, v + sz);
       }
   return depth;
 }
@@ -102,7 +112,7 @@ void add_noise(std::vector<float>& values, const VolumeGeometry& g, double sigma
   for_each_slab(0, g.size.z(), [&](int k0, int k1) {
     for (int k = k0; k < k1; ++k) {
       std::mt19937_64 random(uint64_t(seed) * 0x9E3779B97F4A7C15ull + uint64_t(k));
-      const double to_unit = 1.0 / 18446744073709551616.0;  // 2^-64
+      const double to_unit = 1.0 / 18446744073709551616.0;        // 2^-64
       for (int64_t v = k * slice; v < (k + 1) * slice; v += 2) {  // Box-Muller: two normals per draw
         double u1 = (double(random()) + 1) * to_unit, u2 = double(random()) * to_unit;
         double r = sigma * std::sqrt(-2 * std::log(u1));
@@ -127,7 +137,8 @@ Volume compute_ct(const PaintedGrid& grid, const PhantomSpec& spec) {
   const int cortical_voxels = std::max(1, int(std::lround(kCorticalThickness / spec.spacing_mm)));
   std::vector<float> hu(grid.material.size());
   for (size_t v = 0; v < hu.size(); ++v)
-    hu[v] = grid.material[v] == Material::kBone && depth[v] <= cortical_voxels ? kCorticalHu : material_hu(grid.material[v]);
+    hu[v] = grid.material[v] == Material::kBone && depth[v] <= cortical_voxels ? kCorticalHu
+                                                                               : material_hu(grid.material[v]);
   if (spec.partial_volume == PartialVolume::Blurred)
     for (int axis = 0; axis < 3; ++axis) blur_axis(hu, grid.geometry, axis);
 

@@ -9,8 +9,8 @@ namespace maxillo::sample {
 
 struct PaintedGrid {
   VolumeGeometry geometry;
-  std::vector<uint8_t> tissue;      // Tissue per voxel
-  std::vector<Material> material;   // Material per voxel
+  std::vector<uint8_t> tissue;     // Tissue per voxel
+  std::vector<Material> material;  // Material per voxel
 };
 
 // Paints the parts in order at voxel centres (later parts win where their mask allows).

@@ -37,7 +37,8 @@ Vector imposed_load(const StiffnessBlocks& k, const std::vector<char>& is_free, 
     Eigen::Vector3d sum = Eigen::Vector3d::Zero();
     for (int e = k.graph.row_begin(i); e < k.graph.row_end(i); ++e) {
       const int j = k.graph.neighbours[size_t(e)];
-      if (bc.constraint[size_t(j)] == NodeConstraint::kPrescribed) sum -= k.blocks[size_t(e)] * bc.displacement.row(j).transpose();
+      if (bc.constraint[size_t(j)] == NodeConstraint::kPrescribed)
+        sum -= k.blocks[size_t(e)] * bc.displacement.row(j).transpose();
     }
     b.segment<3>(3 * i) = sum;
   }
@@ -101,8 +102,8 @@ StaticSolution solve_block_pcg(const StiffnessBlocks& k, const BoundaryCondition
   const int n = k.node_count();
   std::vector<char> is_free(static_cast<size_t>(n), 0);
   for (int i = 0; i < n; ++i) is_free[size_t(i)] = bc.is_free(i);
-  const BlockPcgResult pcg =
-      solve_free_block_pcg(k, is_free, imposed_load(k, is_free, bc), options.relative_tolerance, options.max_iterations);
+  const BlockPcgResult pcg = solve_free_block_pcg(k, is_free, imposed_load(k, is_free, bc), options.relative_tolerance,
+                                                  options.max_iterations);
   StaticSolution solution;
   solution.status = pcg.converged ? SolveStatus::kConverged : SolveStatus::kNotConverged;
   solution.iterations = pcg.iterations;

@@ -39,8 +39,8 @@ bool on_cut(const Eigen::Vector3d& p, const std::vector<RegionPlane>& planes, do
 }  // namespace
 
 Attachment attach_to_bone(const TetMesh& mesh, const LabelVolume& segments,
-                          const std::map<uint8_t, Eigen::Isometry3d>& moves,
-                          const std::vector<RegionPlane>& cut_planes, const AttachmentOptions& options) {
+                          const std::map<uint8_t, Eigen::Isometry3d>& moves, const std::vector<RegionPlane>& cut_planes,
+                          const AttachmentOptions& options) {
   const int n = mesh.node_count();
   Attachment result;
   result.bc = all_free(n);

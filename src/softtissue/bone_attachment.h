@@ -16,7 +16,7 @@
 namespace maxillo::softtissue {
 
 struct AttachmentOptions {
-  double touch_mm = 1.5;          // how close bone must be for a node to be joined to it
+  double touch_mm = 1.5;                // how close bone must be for a node to be joined to it
   double cut_plane_tolerance_mm = 1.0;  // nodes this close to a region plane are on the cut
 };
 
@@ -28,7 +28,7 @@ struct Attachment {
 // `segments` labels bone segments (0 = no bone); `moves` gives the rigid move of each moved
 // segment (pre-op -> planned, LPS mm); segments absent from `moves` stay where they are.
 Attachment attach_to_bone(const TetMesh& mesh, const LabelVolume& segments,
-                          const std::map<uint8_t, Eigen::Isometry3d>& moves,
-                          const std::vector<RegionPlane>& cut_planes, const AttachmentOptions& options = {});
+                          const std::map<uint8_t, Eigen::Isometry3d>& moves, const std::vector<RegionPlane>& cut_planes,
+                          const AttachmentOptions& options = {});
 
 }  // namespace maxillo::softtissue

@@ -16,7 +16,8 @@ LabelVolume face_region(const LabelVolume& tissues, const std::vector<uint8_t>& 
         const auto v = size_t(g.index(i, j, k));
         if (std::find(soft_labels.begin(), soft_labels.end(), tissues.labels[v]) == soft_labels.end()) continue;
         const Eigen::Vector3d p = g.world(Eigen::Vector3d(i, j, k));
-        const bool kept = std::all_of(planes.begin(), planes.end(), [&](const RegionPlane& c) { return c.side(p) > 0; });
+        const bool kept =
+            std::all_of(planes.begin(), planes.end(), [&](const RegionPlane& c) { return c.side(p) > 0; });
         region.labels[v] = kept ? 1 : 0;
       }
   return region;

@@ -72,7 +72,8 @@ FactorisationStatus precompute_factorisation(const StiffnessBlocks& stiffness,
   if (backend == CholeskyBackend::kEigenSimplicial) {
     status = factorise<Simplicial>(k, out);
     if (status == FactorisationStatus::kOk)
-      out.factor_nonzeros = static_cast<const Simplicial*>(out.factorisation.get())->matrixL().nestedExpression().nonZeros();
+      out.factor_nonzeros =
+          static_cast<const Simplicial*>(out.factorisation.get())->matrixL().nestedExpression().nonZeros();
   }
 #ifdef MAXILLO_HAVE_CHOLMOD
   if (backend == CholeskyBackend::kCholmodSupernodal) {

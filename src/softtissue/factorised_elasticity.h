@@ -12,8 +12,8 @@
 namespace maxillo::softtissue {
 
 enum class CholeskyBackend {
-  kEigenSimplicial,     // Eigen::SimplicialLLT with AMD ordering
-  kCholmodSupernodal,   // SuiteSparse CHOLMOD, supernodal (BLAS-3), when built with it
+  kEigenSimplicial,    // Eigen::SimplicialLLT with AMD ordering
+  kCholmodSupernodal,  // SuiteSparse CHOLMOD, supernodal (BLAS-3), when built with it
 };
 enum class FactorisationStatus { kOk, kNotPositiveDefinite, kBackendUnavailable };
 
@@ -25,7 +25,7 @@ struct FactorisedElasticity {
   Eigen::SparseMatrix<double> coupling;       // K_fc: 3 nf x 3 nc
   std::shared_ptr<const void> factorisation;  // the backend's factor of K_ff (opaque)
   CholeskyBackend backend = CholeskyBackend::kEigenSimplicial;
-  long factor_nonzeros = 0;                   // entries of L
+  long factor_nonzeros = 0;  // entries of L
 };
 
 // Factorises K_ff for this constraint pattern. On kOk `out` is ready for solve_factorised.

@@ -46,7 +46,9 @@ int closest_vertex(const AabbTree& tree, const TriangleMesh& skin, const Eigen::
 
 }  // namespace
 
-SkinIndex::SkinIndex(const TriangleMesh& mesh) : skin(&mesh), tree(mesh) { vertex_adjacency(mesh, offsets, neighbours); }
+SkinIndex::SkinIndex(const TriangleMesh& mesh) : skin(&mesh), tree(mesh) {
+  vertex_adjacency(mesh, offsets, neighbours);
+}
 
 GaussianMapping init_gaussian_mapping(const TetMesh& mesh, const TriangleMesh& skin, const GaussianMappingOptions& o) {
   return init_gaussian_mapping(mesh, tet_boundary(mesh), SkinIndex(skin), o);
@@ -90,9 +92,11 @@ GaussianMapping init_gaussian_mapping(const TetMesh& mesh, const TetBoundary& bo
   mapping.weights.setFromTriplets(entries.begin(), entries.end());  // duplicates (shared P_j) add up
   for (int i = 0; i < skin_count; ++i) {
     double sum = 0;
-    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(mapping.weights, i); it; ++it) sum += it.value();
+    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(mapping.weights, i); it; ++it)
+      sum += it.value();
     if (sum <= 0) continue;
-    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(mapping.weights, i); it; ++it) it.valueRef() /= sum;
+    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(mapping.weights, i); it; ++it)
+      it.valueRef() /= sum;
     ++mapping.bound_count;
   }
   return mapping;

@@ -20,13 +20,13 @@ namespace maxillo::softtissue {
 
 struct GaussianMappingOptions {
   double radius_mm = 3.0;
-  int max_hops = 4;  // "connectivity lower than 5"
+  int max_hops = 4;                    // "connectivity lower than 5"
   double max_match_distance_mm = 5.0;  // a surface node farther from the skin is not matched
 };
 
 struct GaussianMapping {
   Eigen::SparseMatrix<double, Eigen::RowMajor> weights;  // skin vertices x mesh nodes, rows sum to 1 or 0
-  int bound_count = 0;                                  // skin vertices with at least one weight
+  int bound_count = 0;                                   // skin vertices with at least one weight
 };
 
 // What the skin offers to every mapping, built once per skin (the pre-operative skin does not

@@ -49,7 +49,8 @@ StaticSolution solve_linear_static(const StiffnessBlocks& stiffness, const Bound
   // run() returns free-node rows; spread them over all nodes with the imposed values.
   Eigen::VectorXd free_u(3 * numbering.free_count());
   if (solution.displacement.rows() == numbering.free_count())
-    for (int f = 0; f < numbering.free_count(); ++f) free_u.segment<3>(3 * f) = solution.displacement.row(f).transpose();
+    for (int f = 0; f < numbering.free_count(); ++f)
+      free_u.segment<3>(3 * f) = solution.displacement.row(f).transpose();
   else
     free_u.setZero();
   solution.displacement = assemble_displacement(free_u, numbering, bc);

@@ -25,10 +25,10 @@ enum class IterationStatus { kConverged, kIterationLimit };
 struct LocalIterationResult {
   Eigen::MatrixX3d displacement;  // n x 3, mm
   IterationStatus status = IterationStatus::kIterationLimit;
-  int iterations = 0;             // sweeps over the active points
-  long point_updates = 0;         // local solves performed (the work)
-  double last_max_move_mm = 0;    // largest point move in the last sweep (G_max)
-  int load_steps = 1;             // imposed moves applied in this many steps (mass-spring)
+  int iterations = 0;           // sweeps over the active points
+  long point_updates = 0;       // local solves performed (the work)
+  double last_max_move_mm = 0;  // largest point move in the last sweep (G_max)
+  int load_steps = 1;           // imposed moves applied in this many steps (mass-spring)
 };
 
 // The local dynamic stop criterion, shared by the point-wise solvers. Sweeps over the active
@@ -38,9 +38,8 @@ struct LocalIterationResult {
 // every other point goes to rest. Fills result's iterations, point_updates, last_max_move_mm
 // and status; the caller fills the displacement.
 template <typename UpdatePoint>
-void sweep_until_rest(const std::vector<int>& offsets, const std::vector<int>& neighbours,
-                      const BoundaryConditions& bc, const LocalIterationOptions& options,
-                      UpdatePoint&& update_point, LocalIterationResult& result) {
+void sweep_until_rest(const std::vector<int>& offsets, const std::vector<int>& neighbours, const BoundaryConditions& bc,
+                      const LocalIterationOptions& options, UpdatePoint&& update_point, LocalIterationResult& result) {
   const int n = bc.node_count();
   std::vector<char> active(static_cast<size_t>(n)), next(static_cast<size_t>(n), 0);
   for (int i = 0; i < n; ++i) active[size_t(i)] = bc.is_free(i) ? 1 : 0;

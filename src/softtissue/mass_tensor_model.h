@@ -16,8 +16,8 @@
 namespace maxillo::softtissue {
 
 struct MassTensorModel {
-  std::vector<int> offsets;                      // n + 1: neighbours of j are [offsets[j], offsets[j+1])
-  std::vector<int> neighbours;                   // excluding j itself
+  std::vector<int> offsets;                        // n + 1: neighbours of j are [offsets[j], offsets[j+1])
+  std::vector<int> neighbours;                     // excluding j itself
   std::vector<Eigen::Matrix3d> neighbour_tensors;  // K_jk, N/mm
   std::vector<Eigen::Matrix3d> inverse_diagonal;   // K_jj^-1, mm/N
   int node_count() const { return int(inverse_diagonal.size()); }
@@ -29,7 +29,6 @@ MassTensorModel make_mass_tensor_model(const StiffnessBlocks& stiffness);
 // Static solve. `start`, when given (n x 3), is the initial guess for free nodes (e.g. the
 // answer before a plan change); constrained nodes always take their imposed values.
 LocalIterationResult solve_mass_tensor(const MassTensorModel& model, const BoundaryConditions& bc,
-                                       const LocalIterationOptions& options,
-                                       const Eigen::MatrixX3d* start = nullptr);
+                                       const LocalIterationOptions& options, const Eigen::MatrixX3d* start = nullptr);
 
 }  // namespace maxillo::softtissue

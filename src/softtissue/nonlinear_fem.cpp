@@ -41,7 +41,8 @@ void add_block_entries(const TetMesh& mesh, Reference& r) {
   r.block_entries.resize(size_t(mesh.tet_count()));
   for (int t = 0; t < mesh.tet_count(); ++t)
     for (int a = 0; a < 4; ++a)
-      for (int b = 0; b < 4; ++b) r.block_entries[size_t(t)][size_t(4 * a + b)] = r.graph.find(mesh.tets(t, a), mesh.tets(t, b));
+      for (int b = 0; b < 4; ++b)
+        r.block_entries[size_t(t)][size_t(4 * a + b)] = r.graph.find(mesh.tets(t, a), mesh.tets(t, b));
 }
 
 Eigen::Matrix3d deformation_gradient(const TetMesh& mesh, int t, const Matrix43& g, const Eigen::MatrixX3d& u) {
@@ -67,14 +68,15 @@ Eigen::Matrix3d first_piola(const Eigen::Matrix3d& F, const LameParameters& lame
   return lame.mu * F + (lame.lambda * std::log(j) - lame.mu) * F.inverse().transpose();
 }
 
-Eigen::MatrixX3d forces(const TetMesh& mesh, const Reference& ref, const LameParameters& lame, const Eigen::MatrixX3d& u,
-                        HyperelasticLaw law) {
+Eigen::MatrixX3d forces(const TetMesh& mesh, const Reference& ref, const LameParameters& lame,
+                        const Eigen::MatrixX3d& u, HyperelasticLaw law) {
   Eigen::MatrixX3d f = Eigen::MatrixX3d::Zero(mesh.node_count(), 3);
   for (int t = 0; t < mesh.tet_count(); ++t) {
     const auto& g = ref.gradients[size_t(t)];
     const Eigen::Matrix3d F = deformation_gradient(mesh, t, g, u);
     const Eigen::Matrix3d P = first_piola(F, lame, law);
-    for (int a = 0; a < 4; ++a) f.row(mesh.tets(t, a)) += ref.volumes[size_t(t)] * (P * g.row(a).transpose()).transpose();
+    for (int a = 0; a < 4; ++a)
+      f.row(mesh.tets(t, a)) += ref.volumes[size_t(t)] * (P * g.row(a).transpose()).transpose();
   }
   return f;
 }
@@ -188,7 +190,8 @@ NonlinearSolution solve_nonlinear_static(const TetMesh& mesh, const Material& ma
     constexpr double kEpsilon = 1e-4;
     const Eigen::VectorXd coupling =
         (free_residual(forces(mesh, ref, lame, solution.displacement + kEpsilon * increment, options.law), is_free) -
-         free_residual(f0, is_free)) / kEpsilon;
+         free_residual(f0, is_free)) /
+        kEpsilon;
     const Eigen::VectorXd r0 = free_residual(f0, is_free);
     if (reference_norm == 0) reference_norm = std::max((r0 + coupling).norm(), 1e-300);
     const Eigen::VectorXd predictor = newton_direction(solution.displacement, -(r0 + coupling), solution);
@@ -222,7 +225,7 @@ NonlinearSolution solve_nonlinear_static(const TetMesh& mesh, const Material& ma
         decreased = trial_r.allFinite() && trial_r.norm() < r.norm();  // NaN: a tet turned inside out
       }
       if (!trial_r.allFinite()) break;  // stalled: every step along the Newton direction inverts a tet
-      solution.displacement = trial;  // (not decreased: the smallest step, as a nudge out of a plateau)
+      solution.displacement = trial;    // (not decreased: the smallest step, as a nudge out of a plateau)
       r = trial_r;
     }
     if (!solution.converged) {

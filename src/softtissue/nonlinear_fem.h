@@ -36,9 +36,9 @@ struct NewtonOptions {
 struct NonlinearSolution {
   Eigen::MatrixX3d displacement;  // n x 3, mm
   bool converged = false;
-  int newton_iterations = 0;      // over all load steps
-  int linear_iterations = 0;      // conjugate gradient iterations over all Newton steps
-  double relative_residual = 0;   // at the end
+  int newton_iterations = 0;     // over all load steps
+  int linear_iterations = 0;     // conjugate gradient iterations over all Newton steps
+  double relative_residual = 0;  // at the end
 };
 
 // Internal nodal forces (n x 3, N) of the SVK material at displacement u.

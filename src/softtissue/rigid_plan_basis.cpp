@@ -18,8 +18,10 @@ RigidPlanBasis precompute_rigid_plan_basis(const FactorisedElasticity& factorise
       bc.displacement.setZero();
       for (int i = 0; i < mesh.node_count(); ++i) {
         if (constraint[size_t(i)] != NodeConstraint::kPrescribed || segment_of_node[size_t(i)] != s) continue;
-        if (c < 9) bc.displacement(i, c / 3) = mesh.nodes(i, c % 3);  // A(r, k) X_k lands on axis r
-        else bc.displacement(i, c - 9) = 1.0;
+        if (c < 9)
+          bc.displacement(i, c / 3) = mesh.nodes(i, c % 3);  // A(r, k) X_k lands on axis r
+        else
+          bc.displacement(i, c - 9) = 1.0;
       }
       basis.responses.push_back(solve_factorised(factorised, bc));
     }

@@ -56,7 +56,8 @@ Eigen::MatrixX3d map_displacement(const TetMesh& mesh, const ShapeFunctionMappin
   for (size_t i = 0; i < mapping.tet.size(); ++i) {
     const int t = mapping.tet[i];
     if (t < 0) continue;
-    for (int c = 0; c < 4; ++c) result.row(Eigen::Index(i)) += mapping.weights[i][c] * node_displacement.row(mesh.tets(t, c));
+    for (int c = 0; c < 4; ++c)
+      result.row(Eigen::Index(i)) += mapping.weights[i][c] * node_displacement.row(mesh.tets(t, c));
   }
   return result;
 }

@@ -20,8 +20,7 @@ StiffnessBlocks assemble_stiffness_blocks(const TetMesh& mesh, const Material& m
 Eigen::SparseMatrix<double> to_sparse_matrix(const StiffnessBlocks& stiffness) {
   const int n = stiffness.node_count();
   Eigen::SparseMatrix<double> k(3 * n, 3 * n);
-  k.reserve(Eigen::VectorXi::Constant(3 * n, 0) +
-            Eigen::VectorXi::NullaryExpr(3 * n, [&](Eigen::Index d) {
+  k.reserve(Eigen::VectorXi::Constant(3 * n, 0) + Eigen::VectorXi::NullaryExpr(3 * n, [&](Eigen::Index d) {
               int i = int(d / 3);
               return 3 * (stiffness.graph.row_end(i) - stiffness.graph.row_begin(i));
             }));

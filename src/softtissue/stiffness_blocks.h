@@ -14,7 +14,7 @@
 namespace maxillo::softtissue {
 
 struct StiffnessBlocks {
-  NodeGraph graph;                     // rows: nodes; neighbours include the node itself
+  NodeGraph graph;                      // rows: nodes; neighbours include the node itself
   std::vector<Eigen::Matrix3d> blocks;  // one per graph entry, same order as graph.neighbours
   int node_count() const { return int(graph.offsets.size()) - 1; }
 };

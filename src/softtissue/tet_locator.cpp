@@ -32,7 +32,8 @@ TetLocator::TetLocator(const TetMesh& mesh) : mesh_(&mesh) {
   for (size_t b = 1; b < counts.size(); ++b) counts[b] += counts[b - 1];
   offsets_ = counts;
   tets_.resize(size_t(counts.back()));
-  for (int t = 0; t < mesh.tet_count(); ++t) for_each_bucket(t, [&](int64_t b) { tets_[size_t(counts[size_t(b)]++)] = t; });
+  for (int t = 0; t < mesh.tet_count(); ++t)
+    for_each_bucket(t, [&](int64_t b) { tets_[size_t(counts[size_t(b)]++)] = t; });
 }
 
 Eigen::Vector3i TetLocator::cell_of(const Eigen::Vector3d& p) const {

@@ -51,8 +51,8 @@ Crop crop_around(const LabelVolume& volume, uint8_t label) {
 // which Mesh_3 treats as outside the domain).
 CGAL::Image_3 make_image(const LabelVolume& volume, uint8_t label, const Crop& crop) {
   const auto& g = volume.geometry;
-  _image* image = ::_createImage(size_t(crop.size.x()), size_t(crop.size.y()), size_t(crop.size.z()), 1,
-                                 g.spacing.x(), g.spacing.y(), g.spacing.z(), 1, WK_FIXED, SGN_UNSIGNED);
+  _image* image = ::_createImage(size_t(crop.size.x()), size_t(crop.size.y()), size_t(crop.size.z()), 1, g.spacing.x(),
+                                 g.spacing.y(), g.spacing.z(), 1, WK_FIXED, SGN_UNSIGNED);
   auto* data = static_cast<unsigned char*>(image->data);
   std::memset(data, 0, size_t(crop.size.prod()));
   for (int k = 0; k < crop.size.z(); ++k)
@@ -72,9 +72,10 @@ Complex run_mesh_3(const Domain& domain, const TetMeshingOptions& o, double cell
                     p::facet_distance = o.facet_distance_mm, p::cell_radius_edge_ratio = o.radius_edge_ratio,
                     p::cell_size = cell_size);
   // Perturbation and exudation remove slivers; both are open-ended, hence the time limits.
-  return CGAL::make_mesh_3<Complex>(domain, criteria, p::no_lloyd(), p::no_odt(),
-                                    p::perturb(p::time_limit = o.optimise_seconds, p::sliver_bound = o.sliver_bound_deg),
-                                    p::exude(p::time_limit = o.optimise_seconds, p::sliver_bound = o.sliver_bound_deg));
+  return CGAL::make_mesh_3<Complex>(
+      domain, criteria, p::no_lloyd(), p::no_odt(),
+      p::perturb(p::time_limit = o.optimise_seconds, p::sliver_bound = o.sliver_bound_deg),
+      p::exude(p::time_limit = o.optimise_seconds, p::sliver_bound = o.sliver_bound_deg));
 }
 
 // Cells of the complex as a TetMesh in LPS: image coordinates are index x spacing from the crop.

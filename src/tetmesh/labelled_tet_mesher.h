@@ -21,10 +21,10 @@ struct TetMeshingOptions {
 };
 
 struct TetMeshingResult {
-  softtissue::TetMesh mesh;   // LPS mm, positively oriented tets
-  double cell_size_mm = 0;    // the cell size of the last meshing
-  int attempts = 0;           // meshings run (a coarser one after each one over max_tets)
-  int tet_budget = 0;         // the max_tets asked for
+  softtissue::TetMesh mesh;  // LPS mm, positively oriented tets
+  double cell_size_mm = 0;   // the cell size of the last meshing
+  int attempts = 0;          // meshings run (a coarser one after each one over max_tets)
+  int tet_budget = 0;        // the max_tets asked for
   double seconds = 0;
   // The budget could not be met within the attempts: the mesh is kept (a coarser one would
   // lose the region's shape), and the caller must say so with these numbers.

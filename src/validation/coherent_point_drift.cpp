@@ -41,7 +41,8 @@ void check(const VertexMatrix& fixed, const VertexMatrix& moving, const CpdOptio
 
 // The points accepted in a random order when each must lie at least `radius` from those accepted
 // before it (Poisson-disk sampling, with a hash grid of cells `radius` wide).
-std::vector<Eigen::Index> spaced_points(const VertexMatrix& points, const std::vector<Eigen::Index>& order, double radius) {
+std::vector<Eigen::Index> spaced_points(const VertexMatrix& points, const std::vector<Eigen::Index>& order,
+                                        double radius) {
   std::unordered_map<uint64_t, std::vector<Eigen::Index>> grid;
   const auto cell = [radius](double v) { return long(std::floor(v / radius)); };
   const auto key = [](long x, long y, long z) {  // 21 bits per axis: ample for any mesh in mm
@@ -108,8 +109,9 @@ Points grid_subsample(const Points& points, double spacing) {
   std::map<std::tuple<long, long, long>, Eigen::Index> first_in_cell;
   std::vector<Eigen::Index> kept;
   for (Eigen::Index i = 0; i < points.rows(); ++i) {
-    const auto cell = std::make_tuple(long(std::floor(points(i, 0) / spacing)), long(std::floor(points(i, 1) / spacing)),
-                                      long(std::floor(points(i, 2) / spacing)));
+    const auto cell =
+        std::make_tuple(long(std::floor(points(i, 0) / spacing)), long(std::floor(points(i, 1) / spacing)),
+                        long(std::floor(points(i, 2) / spacing)));
     if (first_in_cell.emplace(cell, i).second) kept.push_back(i);
   }
   Points controls(Eigen::Index(kept.size()), 3);
@@ -139,8 +141,8 @@ struct Posterior {
 Posterior expectation(const Points& x, const Points& centres, double sigma2, double outlier_weight) {
   const Eigen::Index n_fixed = x.rows(), m = centres.rows();
   // The uniform outlier component's share of each denominator.
-  const double outlier = std::pow(2 * M_PI * sigma2, 1.5) * outlier_weight / (1 - outlier_weight) * double(m) /
-                         double(n_fixed);
+  const double outlier =
+      std::pow(2 * M_PI * sigma2, 1.5) * outlier_weight / (1 - outlier_weight) * double(m) / double(n_fixed);
   Posterior post{Eigen::VectorXd::Zero(m), Eigen::VectorXd::Zero(n_fixed), Points::Zero(m, 3), 0};
   std::vector<std::pair<Eigen::Index, double>> near;  // centres of one fixed point with weight > 0
   near.reserve(size_t(m));
@@ -281,7 +283,8 @@ std::vector<double> corresponding_point_distances(const TriangleMesh& predicted,
                                                   const std::vector<bool>& include, const CpdOptions& options) {
   if (!include.empty() && Eigen::Index(include.size()) != predicted.vertex_count())
     throw Error(ErrorCode::kBadValue, "corresponding point distances", "include has one flag per predicted vertex");
-  if (actual.face_count() == 0) throw Error(ErrorCode::kBadValue, "corresponding point distances", "actual surface is empty");
+  if (actual.face_count() == 0)
+    throw Error(ErrorCode::kBadValue, "corresponding point distances", "actual surface is empty");
 
   std::vector<Eigen::Index> chosen;
   for (Eigen::Index v = 0; v < predicted.vertex_count(); ++v)
@@ -292,8 +295,9 @@ std::vector<double> corresponding_point_distances(const TriangleMesh& predicted,
 
   const VertexMatrix fixed =
       vertices_near(actual, included_faces(predicted, include), std::max(20.0, 2 * options.beta_mm));
-  if (fixed.rows() == 0) throw Error(ErrorCode::kEmptyResult, "corresponding point distances",
-                                     "no actual surface near the predicted region");
+  if (fixed.rows() == 0)
+    throw Error(ErrorCode::kEmptyResult, "corresponding point distances",
+                "no actual surface near the predicted region");
   const CpdResult registration = nonrigid_cpd(fixed, moving, options);
 
   // Each correspondence projected onto the actual surface; the sign from its outward normal there.

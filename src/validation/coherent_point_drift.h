@@ -39,7 +39,7 @@ struct CpdOptions {
 struct CpdResult {
   VertexMatrix moved;  // every vertex of `moving`, displaced by the registration's field
   int iterations = 0;
-  double sigma2 = 0;   // final variance of the mixture, mm^2 (the residual misfit's scale)
+  double sigma2 = 0;  // final variance of the mixture, mm^2 (the residual misfit's scale)
 };
 
 // Registers `moving` non-rigidly onto `fixed` (both in mm, the same frame). Throws Error(BadValue)

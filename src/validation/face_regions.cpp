@@ -6,18 +6,12 @@ namespace maxillo::validation {
 
 std::string_view region_name(FaceRegion region) {
   switch (region) {
-    case FaceRegion::kNose:
-      return "nose";
-    case FaceRegion::kUpperLip:
-      return "upper lip";
-    case FaceRegion::kLowerLip:
-      return "lower lip";
-    case FaceRegion::kChin:
-      return "chin";
-    case FaceRegion::kCheeks:
-      return "cheeks";
-    case FaceRegion::kOutside:
-      break;
+    case FaceRegion::kNose: return "nose";
+    case FaceRegion::kUpperLip: return "upper lip";
+    case FaceRegion::kLowerLip: return "lower lip";
+    case FaceRegion::kChin: return "chin";
+    case FaceRegion::kCheeks: return "cheeks";
+    case FaceRegion::kOutside: break;
   }
   return "outside";
 }

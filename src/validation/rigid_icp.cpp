@@ -16,7 +16,6 @@
 namespace maxillo::validation {
 namespace {
 
-
 // Pairs whose normals differ by more than this are not the same piece of surface.
 const double kMinNormalCosine = std::cos(60.0 * M_PI / 180.0);
 
@@ -74,7 +73,11 @@ struct Pair {
 class Matcher {
  public:
   Matcher(const TriangleMesh& moving, const TriangleMesh& target, const IcpOptions& options)
-      : moving_(moving), target_(target), tree_(target), border_(target), options_(options),
+      : moving_(moving),
+        target_(target),
+        tree_(target),
+        border_(target),
+        options_(options),
         moving_normals_(vertex_normals(moving)),
         samples_(sample_vertices(moving.vertex_count(), options.max_samples, options.seed)) {
     face_normals_.reserve(size_t(target.face_count()));

@@ -27,7 +27,7 @@ struct IcpResult {
   Eigen::Isometry3d transform = Eigen::Isometry3d::Identity();  // moving frame -> target frame
   double rms_mm = 0;  // root mean square closest-point distance of the final pairs
   int iterations = 0;
-  int pairs = 0;      // pairs used in the last iteration
+  int pairs = 0;  // pairs used in the last iteration
 };
 
 // Moves `moving` (e.g. a planned bone segment's surface in pre-operative coordinates) onto

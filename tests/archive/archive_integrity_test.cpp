@@ -107,7 +107,8 @@ TEST(ArchiveExport, SeriesComesBackByteIdentical) {
   Archive archive = archive_with_series(folder, &written);
   auto files = archive.export_series(archive.resolve_series(written.series_instance_uid), folder / "out");
   ASSERT_EQ(files.size(), written.files.size());
-  for (size_t k = 0; k < files.size(); ++k) EXPECT_EQ(testing::read_text(files[k]), testing::read_text(written.files[k]));
+  for (size_t k = 0; k < files.size(); ++k)
+    EXPECT_EQ(testing::read_text(files[k]), testing::read_text(written.files[k]));
   EXPECT_THROW(archive.export_series(999, folder / "out2"), Error);
 }
 
@@ -134,8 +135,10 @@ TEST(ArchiveResolve, TypedIdsNameTheirKindEvenWhenBareNumbersCollide) {
   Archive archive = archive_with_series(folder);
   // Series 1, study 1, patient 1 and case 1 all exist: the bare "1" is the series.
   EXPECT_EQ(archive.resolve("1").kind, ItemKind::Series);
-  for (auto [text, kind] : {std::pair{"case:1", ItemKind::Case}, {"patient:1", ItemKind::Patient},
-                            {"study:1", ItemKind::Study}, {"series:1", ItemKind::Series},
+  for (auto [text, kind] : {std::pair{"case:1", ItemKind::Case},
+                            {"patient:1", ItemKind::Patient},
+                            {"study:1", ItemKind::Study},
+                            {"series:1", ItemKind::Series},
                             {"instance:4", ItemKind::Instance}}) {
     auto item = archive.resolve(text);
     EXPECT_EQ(item.kind, kind) << text;

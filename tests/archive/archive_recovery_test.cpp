@@ -185,7 +185,8 @@ std::filesystem::path archive_with_old_index(const TemporaryFolder& folder, int 
     if (n == 0) std::filesystem::copy_file(index_of(path), folder / "backup.sqlite");
   }
   std::filesystem::copy_file(index_of(path), folder / "newest.sqlite");
-  std::filesystem::copy_file(folder / "backup.sqlite", index_of(path), std::filesystem::copy_options::overwrite_existing);
+  std::filesystem::copy_file(folder / "backup.sqlite", index_of(path),
+                             std::filesystem::copy_options::overwrite_existing);
   return path;
 }
 

@@ -64,9 +64,10 @@ TEST_F(BatchReads, ManyCasesContentsAreEachCasesOwnAndMissingIdsAreLeftOut) {
 TEST_F(BatchReads, ManyCasesArtefactsAreEachCasesOwnInOrder) {
   for (size_t n = 0; n < case_ids_.size(); n += 3)
     for (int k = 0; k < 2; ++k)
-      archive_->add_artefact(NewArtefact{case_ids_[n], k ? "plan" : "landmarks",
-                                         archive_->store_object("artefact " + std::to_string(n) + "/" + std::to_string(k)),
-                                         "application/json", "inputs", "{}"});
+      archive_->add_artefact(
+          NewArtefact{case_ids_[n], k ? "plan" : "landmarks",
+                      archive_->store_object("artefact " + std::to_string(n) + "/" + std::to_string(k)),
+                      "application/json", "inputs", "{}"});
   const auto artefacts = archive_->artefacts(case_ids_);
   ASSERT_EQ(artefacts.size(), case_ids_.size());
   for (size_t n = 0; n < case_ids_.size(); ++n) {

@@ -61,7 +61,7 @@ TEST(Deidentify, ExportedCopiesCarryNoIdentityAndImportAsAPseudonymousPatient) {
   EXPECT_EQ(patient.patient_id, pseudonym_for(archive.deidentification_secret(), "P1"));
   EXPECT_EQ(patient.name, patient.patient_id);
   EXPECT_EQ(patient.birth_date, "");
-  EXPECT_EQ(patient.sex, "F");  // patient characteristics retained
+  EXPECT_EQ(patient.sex, "F");                             // patient characteristics retained
   EXPECT_EQ(research.studies().front().date, "20240315");  // longitudinal dates retained
   EXPECT_EQ(research.series().front().instance_count, 4);
 }
@@ -90,7 +90,8 @@ TEST(Deidentify, AnEncapsulatedReportIsRefusedAndNothingOfItIsWritten) {
   const auto contents = archive.case_contents(archive.resolve_case("P1"));
   const std::string pdf = "%PDF-1.4\n% Consultation report of Doe^Jane\n%%EOF\n";
   std::filesystem::create_directories(folder / "report");
-  write_encapsulated_pdf(std::as_bytes(std::span(pdf)), EncapsulatedReport{contents.patient, contents.studies.front(), "Report"},
+  write_encapsulated_pdf(std::as_bytes(std::span(pdf)),
+                         EncapsulatedReport{contents.patient, contents.studies.front(), "Report"},
                          folder / "report" / "report.dcm");
   ImportOptions quiet;
   quiet.progress = ProgressDisplay::Never;

@@ -34,7 +34,8 @@ ErrorCode header_error(const std::filesystem::path& file) {
 }
 
 // A copy of a good slice with `depth` sequences nested in one another (written by DCMTK).
-std::filesystem::path with_nested_sequences(const std::filesystem::path& good, int depth, const std::filesystem::path& out,
+std::filesystem::path with_nested_sequences(const std::filesystem::path& good, int depth,
+                                            const std::filesystem::path& out,
                                             E_TransferSyntax syntax = EXS_LittleEndianExplicit) {
   DcmFileFormat file;
   file.loadFile(good.c_str());

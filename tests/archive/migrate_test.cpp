@@ -13,8 +13,8 @@
 namespace maxillo {
 namespace {
 
-using testing::TemporaryFolder;
 using testing::quiet;
+using testing::TemporaryFolder;
 
 MigrationOptions quiet_migration() { return MigrationOptions{ProgressDisplay::Never}; }
 

@@ -17,8 +17,8 @@
 namespace maxillo {
 namespace {
 
-using testing::TemporaryFolder;
 using testing::quiet;
+using testing::TemporaryFolder;
 
 #define REQUIRE_SERVER() \
   if (!testing::on_server()) GTEST_SKIP() << "no test PostgreSQL server (MAXILLO_TEST_POSTGRES)"
@@ -109,8 +109,12 @@ TEST(ServerArchive, ALostDatabaseIsRebuiltFromTheSharedFolderRowForRow) {
     Archive archive = Archive::open(original, OpenMode::CreateIfMissing);
     archive.import_paths({folder / "a", folder / "b"}, quiet());
     archive.set_series_role(1, 2, "postop");
-    NewArtefact artefact{archive.ensure_case("C-1", "cohort"), "report", archive.store_object("a report"),
-                         "application/pdf", "inputs", R"({"pages": 2})"};
+    NewArtefact artefact{archive.ensure_case("C-1", "cohort"),
+                         "report",
+                         archive.store_object("a report"),
+                         "application/pdf",
+                         "inputs",
+                         R"({"pages": 2})"};
     archive.add_artefact(artefact);
   }
   // The database is lost; the administrator makes a new, empty one for the same folder.

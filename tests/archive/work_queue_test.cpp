@@ -28,7 +28,8 @@ TEST(WorkQueue, TheIndexClockIsUnixSecondsAndMovesOn) {
   TemporaryFolder folder;
   Archive archive = fresh_archive(folder);
   const auto machine = [] {
-    return std::chrono::duration_cast<std::chrono::seconds>(std::chrono::system_clock::now().time_since_epoch()).count();
+    return std::chrono::duration_cast<std::chrono::seconds>(std::chrono::system_clock::now().time_since_epoch())
+        .count();
   };
   const int64_t before = machine();
   const int64_t first = archive.clock_seconds();

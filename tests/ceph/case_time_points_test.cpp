@@ -80,7 +80,8 @@ TEST(CaseTimePoints, CephalogramAxesAreKeptWithTheSet) {
 // Issue 17: a stored set's facts are read strictly. A cephalogram set whose pixel spacing was lost
 // would be measured at a default scale; it is an error naming the artefact and the key instead.
 TEST(CaseTimePoints, DamagedStoredFactsAreAnErrorNamingTheKey) {
-  const std::string set = R"({"@schema": "https://raw.githubusercontent.com/slicer/slicer/master/Modules/Loadable/Markups/Resources/Schema/markups-schema-v1.0.3.json#", "markups": []})";
+  const std::string set =
+      R"({"@schema": "https://raw.githubusercontent.com/slicer/slicer/master/Modules/Loadable/Markups/Resources/Schema/markups-schema-v1.0.3.json#", "markups": []})";
   const std::pair<const char*, const char*> damaged[] = {
       {R"({"source": "a.csv", "count": 0, "frame": {"cephalogram": {"image_y": "down", "face": "+x"}}})",
        "frame.cephalogram.pixel_spacing_mm: missing"},

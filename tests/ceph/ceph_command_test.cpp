@@ -41,9 +41,9 @@ TEST(CephCommand, MeasurePixelCsvNeedsTheImageOrientation) {
   TemporaryFolder scratch;
   // ISBI image 001 (pixels, y down): SNA 83.x, SNB 81.x per the organisers' classes.
   std::ofstream(scratch / "001.csv") << "label,x,y,z\nS,832,994,0\nN,1469,1032,0\nA,1370,1643,0\nB,1364,2056,0\n";
-  auto down = run_maxillo({"ceph", "measure", (scratch / "001.csv").string(), "--pixel-spacing", "0.1",
-                           "--image-y-down", "--json"},
-                          scratch.path());
+  auto down = run_maxillo(
+      {"ceph", "measure", (scratch / "001.csv").string(), "--pixel-spacing", "0.1", "--image-y-down", "--json"},
+      scratch.path());
   ASSERT_EQ(down.exit_code, 0) << down.err;
   double sna = Json::parse(down.out)["measurements"][0]["value"].get<double>();
   EXPECT_GT(sna, 83.2);  // organisers' SNA class 2
@@ -59,8 +59,8 @@ TEST(CephCommand, AddTimePointsThenFollowUpTable) {
   ASSERT_EQ(run_maxillo({"--archive", archive, "import", (scratch / "dicom").string()}, scratch.path()).exit_code, 0);
   write_landmarks(scratch / "pre.mrk.json", phantom_set(SkeletalClass::III));
   write_landmarks(scratch / "post.mrk.json", phantom_set(SkeletalClass::III, 9));
-  auto add_post = run_maxillo({"--archive", archive, "ceph", "add", "P9", "--time-point", "post", "--date", "2003-02-01",
-                               (scratch / "post.mrk.json").string()},
+  auto add_post = run_maxillo({"--archive", archive, "ceph", "add", "P9", "--time-point", "post", "--date",
+                               "2003-02-01", (scratch / "post.mrk.json").string()},
                               scratch.path());
   ASSERT_EQ(add_post.exit_code, 0) << add_post.err;
   ASSERT_EQ(run_maxillo({"--archive", archive, "ceph", "add", "P9", "--time-point", "pre", "--date", "2002-12-01",

@@ -33,8 +33,8 @@ struct Configuration {
 
 SagittalLandmarks as_set(const Configuration& c) {
   SagittalLandmarks set;
-  set.points = {{"S", c.S}, {"N", c.N}, {"A", c.A}, {"B", c.B}, {"U6", c.U6}, {"L6", c.L6},
-                {"U1", c.U1}, {"L1", c.L1}, {"ANS", c.ANS}, {"PNS", c.PNS}};
+  set.points = {{"S", c.S},   {"N", c.N},   {"A", c.A},   {"B", c.B},     {"U6", c.U6},
+                {"L6", c.L6}, {"U1", c.U1}, {"L1", c.L1}, {"ANS", c.ANS}, {"PNS", c.PNS}};
   return set;
 }
 
@@ -50,13 +50,13 @@ TEST(CephalometricMeasures, AnglesOfAConstructedSkull) {
 }
 
 TEST(CephalometricMeasures, WitsOnAHorizontalAndATiltedOcclusalLine) {
-  EXPECT_NEAR(wits_mm({5, 3}, {2, -4}, {0, 0}, {10, 0}), 3, 1e-12);    // AO 3 mm ahead: Class II
-  EXPECT_NEAR(wits_mm({2, 3}, {6, -4}, {0, 0}, {10, 0}), -4, 1e-12);   // BO ahead: Class III
+  EXPECT_NEAR(wits_mm({5, 3}, {2, -4}, {0, 0}, {10, 0}), 3, 1e-12);   // AO 3 mm ahead: Class II
+  EXPECT_NEAR(wits_mm({2, 3}, {6, -4}, {0, 0}, {10, 0}), -4, 1e-12);  // BO ahead: Class III
   // The same geometry rotated by 25 deg and moved: Wits does not change.
   Eigen::Rotation2Dd r(25 * kDeg);
   Eigen::Vector2d t(-3, 40);
-  EXPECT_NEAR(wits_mm(r * Eigen::Vector2d(5, 3) + t, r * Eigen::Vector2d(2, -4) + t, t, r * Eigen::Vector2d(10, 0) + t), 3,
-              1e-12);
+  EXPECT_NEAR(wits_mm(r * Eigen::Vector2d(5, 3) + t, r * Eigen::Vector2d(2, -4) + t, t, r * Eigen::Vector2d(10, 0) + t),
+              3, 1e-12);
 }
 
 TEST(CephalometricMeasures, NasionFrameAxesAndSigns) {
@@ -114,8 +114,8 @@ TEST(CephalometricAnalysis, ImagePixelsWithYDownGiveTheSameAnswer) {
     mirrored.push_back({label, Eigen::Vector3d(1000 - p.x() * 10, 1200 - p.y() * 10, 0)});
   }
   auto from_pixels = analyse(to_sagittal(pixels, LandmarkGeometry::kAuto, {0.1, ImageVerticalAxis::kDown}, "pixels"));
-  auto from_mirrored = analyse(
-      cephalogram_to_sagittal(mirrored, {0.1, ImageVerticalAxis::kDown, FacingDirection::kMinusX}));
+  auto from_mirrored =
+      analyse(cephalogram_to_sagittal(mirrored, {0.1, ImageVerticalAxis::kDown, FacingDirection::kMinusX}));
   for (const auto& id : measurement_ids()) {
     if (!reference.value(id)) continue;
     EXPECT_NEAR(*from_pixels.value(id), *reference.value(id), 1e-9) << id;

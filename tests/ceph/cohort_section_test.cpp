@@ -17,7 +17,8 @@ std::vector<ceph::CaseFollowUp> analysed(const std::vector<ceph::CohortCase>& ca
   for (const auto& c : cases) {
     std::vector<ceph::TimePointAnalysis> points;
     for (const auto& tp : c.time_points)
-      points.push_back({tp.label, tp.date, ceph::analyse(to_sagittal(tp.landmarks, LandmarkGeometry::kAuto, {}, c.name))});
+      points.push_back(
+          {tp.label, tp.date, ceph::analyse(to_sagittal(tp.landmarks, LandmarkGeometry::kAuto, {}, c.name))});
     cohort.push_back(ceph::make_follow_up(c.name, std::move(points)));
   }
   return cohort;

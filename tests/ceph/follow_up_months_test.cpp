@@ -18,7 +18,7 @@ TEST(FollowUpMonths, DaysSinceEpochOfKnownDates) {
 
 TEST(FollowUpMonths, InvalidDatesAreRefused) {
   EXPECT_TRUE(days_since_epoch("2000-02-29").has_value());  // divisible by 400: leap
-  EXPECT_FALSE(days_since_epoch("1900-02-29"));              // divisible by 100: not leap
+  EXPECT_FALSE(days_since_epoch("1900-02-29"));             // divisible by 100: not leap
   EXPECT_FALSE(days_since_epoch("2001-02-29"));
   EXPECT_FALSE(days_since_epoch("2001-04-31"));
   EXPECT_FALSE(days_since_epoch("2001-13-01"));
@@ -32,7 +32,7 @@ TEST(FollowUpMonths, MonthsAreDaysOverTheMeanGregorianMonth) {
   EXPECT_DOUBLE_EQ(kDaysPerMonth, 30.4375);
   EXPECT_DOUBLE_EQ(months_between("2001-03-15", "2001-09-15"), 184 / 30.4375);  // ~6.05
   EXPECT_DOUBLE_EQ(months_between("2001-09-15", "2001-03-15"), -184 / 30.4375);
-  EXPECT_DOUBLE_EQ(months_between("2000-01-01", "2004-01-01"), 48.0);            // 1461 days: one leap cycle
+  EXPECT_DOUBLE_EQ(months_between("2000-01-01", "2004-01-01"), 48.0);  // 1461 days: one leap cycle
   EXPECT_DOUBLE_EQ(months_between("2001-03-15", "2001-03-15"), 0.0);
 }
 
@@ -52,9 +52,10 @@ TimePointAnalysis with_wits(const std::string& label, const std::string& date, s
 }
 
 TEST(FollowUpMonths, OriginIsTheEndOfDistractionSoPreIsNegative) {
-  CaseFollowUp c{"P1",
-                 {with_wits("pre", "2001-01-15", -6.0), with_wits("post", "2001-03-15", 2.0),
-                  with_wits("6M", "2001-09-15", 1.5), with_wits("undated", "", 9.0), with_wits("12M", "2002-03-15", std::nullopt)}};
+  CaseFollowUp c{
+      "P1",
+      {with_wits("pre", "2001-01-15", -6.0), with_wits("post", "2001-03-15", 2.0), with_wits("6M", "2001-09-15", 1.5),
+       with_wits("undated", "", 9.0), with_wits("12M", "2002-03-15", std::nullopt)}};
   auto series = measurement_over_months(c, "Wits");
   EXPECT_EQ(series.origin, MonthsOrigin::kEndOfDistraction);
   ASSERT_EQ(series.months.size(), 3u);  // undated and value-less points left out

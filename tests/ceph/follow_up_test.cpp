@@ -27,10 +27,10 @@ TEST(FollowUp, ChangesAreMeanAndSampleSdOverCasesWithBothTimePoints) {
       make_follow_up("P1", {point("post", "2001-03-01", 12), point("pre", "2001-01-01", 2)}),
       make_follow_up("P2", {point("pre", "2002-01-01", 0), point("post", "2002-03-01", 8)}),
       make_follow_up("P3", {point("pre", "2003-01-01", 1), point("post", "2003-03-01", 10)}),
-      make_follow_up("P4", {point("pre", "2003-01-01", 1)}),                                 // no post
+      make_follow_up("P4", {point("pre", "2003-01-01", 1)}),                                   // no post
       make_follow_up("P5", {point("pre", "", 1), point("post", "2004-01-01", std::nullopt)}),  // not measurable
   };
-  EXPECT_EQ(cohort[0].time_points[0].label, "pre");  // ordered by date
+  EXPECT_EQ(cohort[0].time_points[0].label, "pre");   // ordered by date
   EXPECT_EQ(cohort[4].time_points[0].label, "post");  // undated last
   auto rows = cohort_changes(cohort, "pre", "post", {"ANS_X", "Wits"});
   ASSERT_EQ(rows.size(), 2u);

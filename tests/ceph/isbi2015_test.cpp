@@ -12,7 +12,8 @@
 namespace maxillo::ceph {
 namespace {
 
-const std::filesystem::path kTable = std::filesystem::path(MAXILLO_SHARED_DATA) / "isbi2015-ceph/isbi2015_train_landmarks.csv";
+const std::filesystem::path kTable =
+    std::filesystem::path(MAXILLO_SHARED_DATA) / "isbi2015-ceph/isbi2015_train_landmarks.csv";
 
 TEST(Isbi2015, OurSnaSnbAnbReproduceEveryOfficialClass) {
   if (!std::filesystem::exists(kTable)) GTEST_SKIP() << "ISBI 2015 landmark table absent: " << kTable;

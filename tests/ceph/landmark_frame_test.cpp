@@ -6,8 +6,8 @@ namespace maxillo {
 namespace {
 
 TEST(LandmarkFrame, UsesThePorionsAndOrbitalesOfTheSet) {
-  const LandmarkSet set = {{"N", {0, -90, 25}},       {"PoR", {-60, 10, 3}},  {"PoL", {60, 12, -2}},
-                           {"OrR", {-33, -70, 0}},    {"OrL", {33, -71, 1}},  {"S", {0, -20, 20}}};
+  const LandmarkSet set = {{"N", {0, -90, 25}},    {"PoR", {-60, 10, 3}}, {"PoL", {60, 12, -2}},
+                           {"OrR", {-33, -70, 0}}, {"OrL", {33, -71, 1}}, {"S", {0, -20, 20}}};
   const AnatomicalFrame from_set = anatomical_frame(set);
   const AnatomicalFrame from_points = frankfort_frame({.porion_right = Eigen::Vector3d(-60, 10, 3),
                                                        .porion_left = Eigen::Vector3d(60, 12, -2),

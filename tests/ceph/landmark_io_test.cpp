@@ -39,7 +39,8 @@ void expect_rejected(std::string_view text, LandmarkFormat format, std::initiali
     EXPECT_EQ(e.code(), ErrorCode::kBadValue);
     std::string message = e.what();
     EXPECT_NE(message.find("case.file"), std::string::npos) << message;
-    for (const auto& f : fragments) EXPECT_NE(message.find(f), std::string::npos) << "'" << f << "' not in: " << message;
+    for (const auto& f : fragments)
+      EXPECT_NE(message.find(f), std::string::npos) << "'" << f << "' not in: " << message;
   }
 }
 
@@ -78,7 +79,8 @@ TEST(LandmarkIo, LabelsThatCannotBeWrittenAsCsvAreRejected) {
   LandmarkSet bad = {{"A, point", {0, 0, 0}}};
   EXPECT_THROW(format_landmarks(bad, LandmarkFormat::kCsv), Error);
   EXPECT_THROW(format_landmarks(bad, LandmarkFormat::kSlicerFcsv), Error);
-  EXPECT_EQ(parse_landmarks(format_landmarks(bad, LandmarkFormat::kSlicerMarkupsJson), LandmarkFormat::kSlicerMarkupsJson, "j")
+  EXPECT_EQ(parse_landmarks(format_landmarks(bad, LandmarkFormat::kSlicerMarkupsJson),
+                            LandmarkFormat::kSlicerMarkupsJson, "j")
                 .at(0)
                 .label,
             "A, point");
@@ -115,8 +117,8 @@ TEST(LandmarkIo, FcsvCoordinateSystemsIncludingLegacyCodes) {
   EXPECT_EQ(parse("# CoordinateSystem = 0\n"), from_ras);
   EXPECT_EQ(parse(""), from_ras);  // no declaration: Slicer's historical RAS
   // Columns in another order are followed.
-  auto moved = parse_landmarks("# CoordinateSystem = LPS\n# columns = label,z,y,x\nGo,3,2,1\n", LandmarkFormat::kSlicerFcsv,
-                               "y.fcsv");
+  auto moved = parse_landmarks("# CoordinateSystem = LPS\n# columns = label,z,y,x\nGo,3,2,1\n",
+                               LandmarkFormat::kSlicerFcsv, "y.fcsv");
   EXPECT_EQ(moved.at(0).label, "Go");
   EXPECT_EQ(moved.at(0).position, Eigen::Vector3d(1, 2, 3));
 }
@@ -146,7 +148,8 @@ TEST(LandmarkIo, MalformedFcsvNamesLineAndReason) {
 }
 
 TEST(LandmarkIo, MalformedMarkupsJsonNamesLineOrPointAndReason) {
-  expect_rejected("{\n  \"markups\": [\n    {,}\n  ]\n}\n", LandmarkFormat::kSlicerMarkupsJson, {"line 3", "invalid JSON"});
+  expect_rejected("{\n  \"markups\": [\n    {,}\n  ]\n}\n", LandmarkFormat::kSlicerMarkupsJson,
+                  {"line 3", "invalid JSON"});
   expect_rejected("{\"markup\": []}", LandmarkFormat::kSlicerMarkupsJson, {"markups"});
   expect_rejected(R"({"markups":[{"coordinateSystem":"LPS","controlPoints":[{"label":"S","position":[1,2]}]}]})",
                   LandmarkFormat::kSlicerMarkupsJson, {"control point 1", "'S'", "position"});
@@ -154,8 +157,9 @@ TEST(LandmarkIo, MalformedMarkupsJsonNamesLineOrPointAndReason) {
                   LandmarkFormat::kSlicerMarkupsJson, {"position[1]", "not a number"});
   expect_rejected(R"({"markups":[{"controlPoints":[{"position":[1,2,3]}]}]})", LandmarkFormat::kSlicerMarkupsJson,
                   {"control point 1", "label"});
-  expect_rejected(R"({"markups":[{"controlPoints":[{"label":"S","position":[1,2,3]},{"label":"S","position":[1,2,3]}]}]})",
-                  LandmarkFormat::kSlicerMarkupsJson, {"control point 2", "duplicate label 'S'"});
+  expect_rejected(
+      R"({"markups":[{"controlPoints":[{"label":"S","position":[1,2,3]},{"label":"S","position":[1,2,3]}]}]})",
+      LandmarkFormat::kSlicerMarkupsJson, {"control point 2", "duplicate label 'S'"});
   expect_rejected(R"({"markups":[{"coordinateSystem":"IJK","controlPoints":[]}]})", LandmarkFormat::kSlicerMarkupsJson,
                   {"markup 1", "coordinateSystem"});
 }

@@ -82,7 +82,8 @@ TEST(ArchiveCli, UnreadableFileIsNamedAsPermissionDeniedAndTheRestImports) {
   auto result = testing::run_command(as_user + MAXILLO_BINARY + " --archive " + testing::quote(folder / "archive") +
                                      " import " + testing::quote(folder / "in") + " 2>&1");
   EXPECT_EQ(result.exit_code, 1) << result.output;
-  EXPECT_NE(result.output.find(locked.string() + ": unreadable: Permission denied"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find(locked.string() + ": unreadable: Permission denied"), std::string::npos)
+      << result.output;
   EXPECT_NE(result.output.find("3 imported"), std::string::npos) << result.output;
 }
 
@@ -90,7 +91,8 @@ TEST(ArchiveCli, ListShowVerifyAndExportByteIdentical) {
   TemporaryFolder folder;
   auto written = testing::write_series(folder / "in", 4);
   auto archive = testing::archive_at(folder / "archive").string();
-  ASSERT_EQ(testing::run_maxillo({"--archive", archive, "import", (folder / "in").string()}, folder.path()).exit_code, 0);
+  ASSERT_EQ(testing::run_maxillo({"--archive", archive, "import", (folder / "in").string()}, folder.path()).exit_code,
+            0);
 
   auto patients = testing::run_maxillo({"--archive", archive, "--json", "list", "patients"}, folder.path());
   ASSERT_EQ(patients.exit_code, 0) << patients.err;
@@ -99,7 +101,8 @@ TEST(ArchiveCli, ListShowVerifyAndExportByteIdentical) {
   EXPECT_EQ(Json::parse(cases.out).at(0).at("label"), "default");
   EXPECT_EQ(testing::run_maxillo({"--archive", archive, "list", "nonsense"}, folder.path()).exit_code, 2);
 
-  auto show = testing::run_maxillo({"--archive", archive, "--json", "show", written.series_instance_uid}, folder.path());
+  auto show =
+      testing::run_maxillo({"--archive", archive, "--json", "show", written.series_instance_uid}, folder.path());
   ASSERT_EQ(show.exit_code, 0) << show.err;
   Json shown = Json::parse(show.out);
   EXPECT_EQ(shown.at("kind"), "series");
@@ -113,8 +116,8 @@ TEST(ArchiveCli, ListShowVerifyAndExportByteIdentical) {
   EXPECT_EQ(Json::parse(verify.out).at("objects_checked"), 4);
 
   auto out = folder / "exported";
-  auto exported = testing::run_maxillo({"--archive", archive, "export", written.series_instance_uid, "--out", out.string()},
-                                       folder.path());
+  auto exported = testing::run_maxillo(
+      {"--archive", archive, "export", written.series_instance_uid, "--out", out.string()}, folder.path());
   ASSERT_EQ(exported.exit_code, 0) << exported.err;
   std::vector<std::filesystem::path> files(std::filesystem::directory_iterator(out), {});
   std::sort(files.begin(), files.end());
@@ -185,8 +188,10 @@ TEST(ArchiveCli, ALostIndexIsRefusedByEveryCommandAndRebuiltFromTheStore) {
   for (bool truncate : {false, true}) {
     std::filesystem::remove(archive / "index.sqlite");
     if (truncate) std::ofstream(archive / "index.sqlite").close();
-    for (std::vector<std::string> command : {std::vector<std::string>{"list"}, {"import", (folder / "in").string()},
-                                             {"verify", "--repair"}, {"export", "1", "--out", (folder / "x").string()}}) {
+    for (std::vector<std::string> command : {std::vector<std::string>{"list"},
+                                             {"import", (folder / "in").string()},
+                                             {"verify", "--repair"},
+                                             {"export", "1", "--out", (folder / "x").string()}}) {
       command.insert(command.begin(), {"--archive", a});
       auto result = testing::run_maxillo(command, folder.path());
       EXPECT_EQ(result.exit_code, exit_code_for(ErrorCode::kIndexDamaged)) << command[2] << ": " << result.err;
@@ -222,11 +227,17 @@ TEST(ArchiveCli, JsonOutputSurvivesLatin1NamesAndFileNames) {
   file.getDataset()->putAndInsertString(DCM_PatientName, "M\xFCller^J\xF6rg");
   file.getDataset()->putAndInsertString(DCM_SOPInstanceUID, "1.2.3.4.5.6");
   std::filesystem::create_directories(folder / "latin");
-  ASSERT_TRUE(file.saveFile((folder / "latin" / "sch\xE4" "del.dcm").c_str(), EXS_LittleEndianExplicit).good());
+  ASSERT_TRUE(file.saveFile((folder / "latin" /
+                             "sch\xE4"
+                             "del.dcm")
+                                .c_str(),
+                            EXS_LittleEndianExplicit)
+                  .good());
   std::ofstream(folder / "latin" / "notiz-\xFC.txt") << std::string(200, 'x');  // a failure naming a Latin-1 path
   auto a = testing::archive_at(folder / "archive").string();
 
-  auto imported = testing::run_maxillo({"--archive", a, "--json", "import", (folder / "latin").string()}, folder.path());
+  auto imported =
+      testing::run_maxillo({"--archive", a, "--json", "import", (folder / "latin").string()}, folder.path());
   EXPECT_EQ(imported.exit_code, 1) << imported.err;
   Json report = Json::parse(imported.out);
   EXPECT_EQ(report.at("imported"), 1);
@@ -260,11 +271,12 @@ TEST(ServerAddressCli, BadAddressesAreRefusedWithTheirExitCodeAndAReason) {
       {"postgresql://maxillo:secret@127.0.0.1:" + std::to_string(closed_port) + "/db?objects=" + folder.path().string(),
        ErrorCode::kArchiveUnreachable, "127.0.0.1"},
       {"postgresql://maxillo:secret@127.0.0.1/db", ErrorCode::kBadArchiveAddress, "objects"},
-      {"postgresql://maxillo:secret@127.0.0.1/db?objects=" + (folder / "not-there").string(), ErrorCode::kBadArchiveAddress,
-       "not-there"},
+      {"postgresql://maxillo:secret@127.0.0.1/db?objects=" + (folder / "not-there").string(),
+       ErrorCode::kBadArchiveAddress, "not-there"},
   };
   for (const auto& c : cases)
-    for (const std::vector<std::string> command : {std::vector<std::string>{"list", "patients"}, {"verify"}, {"import", folder.path().string()}}) {
+    for (const std::vector<std::string> command :
+         {std::vector<std::string>{"list", "patients"}, {"verify"}, {"import", folder.path().string()}}) {
       std::vector<std::string> args{"--archive", c.address};
       args.insert(args.end(), command.begin(), command.end());
       const auto run = testing::run_maxillo(args, folder.path());
@@ -278,12 +290,12 @@ TEST(ArchiveCli, TwoConcurrentImportersOfOverlappingSets) {
   TemporaryFolder folder;
   for (const char* name : {"a", "b", "c"}) testing::write_series(folder / "in" / name, 120, std::string("P") + name);
   auto archive = testing::archive_at(folder / "archive").string();
-  pid_t one = testing::start_maxillo({"--archive", archive, "import", "--batch", "25", (folder / "in" / "a").string(),
-                                      (folder / "in" / "b").string()},
-                                     folder / "one.out", folder / "one.err");
-  pid_t two = testing::start_maxillo({"--archive", archive, "import", "--batch", "30", (folder / "in" / "b").string(),
-                                      (folder / "in" / "c").string()},
-                                     folder / "two.out", folder / "two.err");
+  pid_t one = testing::start_maxillo(
+      {"--archive", archive, "import", "--batch", "25", (folder / "in" / "a").string(), (folder / "in" / "b").string()},
+      folder / "one.out", folder / "one.err");
+  pid_t two = testing::start_maxillo(
+      {"--archive", archive, "import", "--batch", "30", (folder / "in" / "b").string(), (folder / "in" / "c").string()},
+      folder / "two.out", folder / "two.err");
   EXPECT_EQ(testing::wait_exit_code(one), 0) << testing::slurp(folder / "one.err");
   EXPECT_EQ(testing::wait_exit_code(two), 0) << testing::slurp(folder / "two.err");
   EXPECT_EQ(testing::slurp(folder / "one.err"), "");

@@ -50,7 +50,8 @@ TEST_F(InputChecks, ARejectedPlanStoresNothing) {
     EXPECT_EQ(result.exit_code, exit_code_for(ErrorCode::kUsage)) << value << ": " << result.err;
     EXPECT_NE(result.err.find("--advance"), std::string::npos) << result.err;
   }
-  std::ofstream(folder / "huge.json") << R"({"format_version": 1, "distraction": {"target": {"advancement_mm": 1e400}}})";
+  std::ofstream(folder / "huge.json")
+      << R"({"format_version": 1, "distraction": {"target": {"advancement_mm": 1e400}}})";
   auto huge = run({"plan", "create", "case:1", "--from", (folder / "huge.json").string()});
   EXPECT_EQ(huge.exit_code, exit_code_for(ErrorCode::kBadValue)) << huge.err;
   EXPECT_NE(huge.err.find("huge.json"), std::string::npos) << huge.err;
@@ -62,9 +63,14 @@ TEST_F(InputChecks, ARejectedPlanStoresNothing) {
 }
 
 TEST_F(InputChecks, SimulateOptionsHaveRanges) {
-  for (std::vector<std::string> bad : {std::vector<std::string>{"--advance", "nan"}, {"--advance", "1e6"},
-                                       {"--max-tets", "0"}, {"--max-tets", "-1"}, {"--max-tets", "10"},
-                                       {"--cell-mm", "-1"}, {"--cell-mm", "1e-3"}, {"--poisson", "nan"}}) {
+  for (std::vector<std::string> bad : {std::vector<std::string>{"--advance", "nan"},
+                                       {"--advance", "1e6"},
+                                       {"--max-tets", "0"},
+                                       {"--max-tets", "-1"},
+                                       {"--max-tets", "10"},
+                                       {"--cell-mm", "-1"},
+                                       {"--cell-mm", "1e-3"},
+                                       {"--poisson", "nan"}}) {
     std::vector<std::string> args = {"simulate", "case:1", "--out", (folder / "sim").string()};
     args.insert(args.end(), bad.begin(), bad.end());
     auto result = run(args);
@@ -77,7 +83,8 @@ TEST_F(InputChecks, SimulateOptionsHaveRanges) {
 TEST_F(InputChecks, CoincidentLandmarksAreAnInputErrorNamingThem) {
   std::ofstream csv(folder / "flat.csv");
   csv << "label,x,y,z\n";
-  for (const char* label : {"S", "N", "A", "B", "U6", "L6", "U1", "L1", "ANS", "PNS", "Si"}) csv << label << ",10,20,0\n";
+  for (const char* label : {"S", "N", "A", "B", "U6", "L6", "U1", "L1", "ANS", "PNS", "Si"})
+    csv << label << ",10,20,0\n";
   csv.close();
   auto result = run({"ceph", "measure", (folder / "flat.csv").string()});
   EXPECT_EQ(result.exit_code, exit_code_for(ErrorCode::kBadValue)) << result.out << result.err;

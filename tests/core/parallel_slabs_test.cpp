@@ -14,21 +14,24 @@ namespace {
 TEST(ParallelSlabs, EveryIndexIsVisitedExactlyOnceWhateverTheThreadCount) {
   for (int threads : {1, 2, 3, 8}) {
     std::vector<std::atomic<int>> visits(1001);
-    for_each_slab(
-        0, 1001,
-        [&](int begin, int end) {
-          for (int i = begin; i < end; ++i) ++visits[size_t(i)];
-        },
-        {.max_threads = threads, .min_slab_size = 1});
-    for (size_t i = 0; i < visits.size(); ++i) ASSERT_EQ(visits[i].load(), 1) << "index " << i << ", " << threads << " threads";
+    for_each_slab(0, 1001,
+                  [&](int begin, int end) {
+                    for (int i = begin; i < end; ++i) ++visits[size_t(i)];
+                  },
+                  {.max_threads = threads, .min_slab_size = 1});
+    for (size_t i = 0; i < visits.size(); ++i)
+      ASSERT_EQ(visits[i].load(), 1) << "index " << i << ", " << threads << " threads";
   }
 }
 
 TEST(ParallelSlabs, SlabsAreContiguousAndCoverTheRangeInOrder) {
   std::vector<std::pair<int, int>> slabs(8, {-1, -1});
   std::atomic<int> next{0};
-  for_each_slab(
-      5, 45, [&](int begin, int end) { slabs[size_t(next++)] = {begin, end}; }, {.max_threads = 4, .min_slab_size = 1});
+  for_each_slab(5, 45,
+                [&](int begin, int end) {
+                  slabs[size_t(next++)] = {begin, end};
+                },
+                {.max_threads = 4, .min_slab_size = 1});
   ASSERT_EQ(next.load(), 4);
   slabs.resize(4);
   std::sort(slabs.begin(), slabs.end());
@@ -47,13 +50,12 @@ TEST(ParallelSlabs, AnEmptyRangeRunsNothing) {
 TEST(ParallelSlabs, TheLowestSlabsErrorReachesTheCallerAfterAllThreadsEnded) {
   std::atomic<int> finished{0};
   try {
-    for_each_slab(
-        0, 4,
-        [&](int begin, int) {
-          ++finished;
-          throw std::runtime_error("slab " + std::to_string(begin));
-        },
-        {.max_threads = 4, .min_slab_size = 1});
+    for_each_slab(0, 4,
+                  [&](int begin, int) {
+                    ++finished;
+                    throw std::runtime_error("slab " + std::to_string(begin));
+                  },
+                  {.max_threads = 4, .min_slab_size = 1});
     FAIL() << "no exception";
   } catch (const std::runtime_error& e) {
     EXPECT_STREQ(e.what(), "slab 0");
@@ -63,7 +65,12 @@ TEST(ParallelSlabs, TheLowestSlabsErrorReachesTheCallerAfterAllThreadsEnded) {
 
 TEST(ParallelSlabs, RunConcurrentlyRunsEveryTaskAndReportsTheFirstFailure) {
   std::atomic<int> ran{0};
-  EXPECT_THROW(run_concurrently({[&] { ++ran; }, [&] { ++ran; throw std::logic_error("second"); }, [&] { ++ran; }}),
+  EXPECT_THROW(run_concurrently({[&] { ++ran; },
+                                 [&] {
+                                   ++ran;
+                                   throw std::logic_error("second");
+                                 },
+                                 [&] { ++ran; }}),
                std::logic_error);
   EXPECT_EQ(ran.load(), 3);
   run_concurrently({});

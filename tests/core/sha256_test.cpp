@@ -22,8 +22,7 @@ TEST(Sha256, IncrementalEqualsOneShot) {
   std::string text(100000, 'x');
   for (size_t i = 0; i < text.size(); ++i) text[i] = static_cast<char>('a' + i % 26);
   Sha256 hash;
-  for (size_t offset = 0; offset < text.size(); offset += 777)
-    hash.update(std::string_view(text).substr(offset, 777));
+  for (size_t offset = 0; offset < text.size(); offset += 777) hash.update(std::string_view(text).substr(offset, 777));
   EXPECT_EQ(hash.hex_digest(), sha256_hex(text));
 }
 

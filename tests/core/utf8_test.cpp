@@ -8,11 +8,14 @@ namespace maxillo {
 namespace {
 
 TEST(BytesAsUtf8, ValidTextPassesAsItIs) {
-  for (std::string text : {"", "/data/P1/1.dcm", "Müller^Jörg", "1.2.840.10008.1.2.1"}) EXPECT_EQ(bytes_as_utf8(text), text);
+  for (std::string text : {"", "/data/P1/1.dcm", "Müller^Jörg", "1.2.840.10008.1.2.1"})
+    EXPECT_EQ(bytes_as_utf8(text), text);
 }
 
 TEST(BytesAsUtf8, AnyBytesComeBackUnchangedAndThroughJson) {
-  const std::string latin1_path = "/share/sch\xE4" "del.dcm";
+  const std::string latin1_path =
+      "/share/sch\xE4"
+      "del.dcm";
   const std::string with_nul("a\0b", 3);
   const std::string marker_lookalike = std::string(kBytesMarker) + "41";
   std::string every_byte;
@@ -28,7 +31,8 @@ TEST(BytesAsUtf8, AnyBytesComeBackUnchangedAndThroughJson) {
     EXPECT_EQ(bytes_from_utf8(parsed.at("path").get<std::string>()), bytes);
   }
   EXPECT_EQ(bytes_as_utf8(latin1_path), bytes_as_utf8(latin1_path));  // equal bytes, equal text
-  EXPECT_NE(bytes_as_utf8(latin1_path), bytes_as_utf8("/share/sch\xC3\xA4" "del.dcm"));  // not the "repaired" name
+  EXPECT_NE(bytes_as_utf8(latin1_path), bytes_as_utf8("/share/sch\xC3\xA4"
+                                                      "del.dcm"));  // not the "repaired" name
 }
 
 }  // namespace

@@ -18,8 +18,9 @@ TEST(CadaverReport, WrapImportAndReport) {
   testing::TemporaryFolder folder("maxillo-cadaver");
   const std::string maxillo = std::string(MAXILLO_BINARY) + " --archive " + quote(folder / "archive");
 
-  auto wrap = run_command(std::string("bash ") + MAXILLO_SOURCE_DIR + "/scripts/cthead-to-dicom " +
-                          quote(folder / "ct") + " --data " + quote(kCthead / "slices") + " --maxillo " + MAXILLO_BINARY + " 2>&1");
+  auto wrap =
+      run_command(std::string("bash ") + MAXILLO_SOURCE_DIR + "/scripts/cthead-to-dicom " + quote(folder / "ct") +
+                  " --data " + quote(kCthead / "slices") + " --maxillo " + MAXILLO_BINARY + " 2>&1");
   ASSERT_EQ(wrap.exit_code, 0) << wrap.output;
   auto import = run_command(maxillo + " import " + quote(folder / "ct") + " 2>&1");
   ASSERT_EQ(import.exit_code, 0) << import.output;

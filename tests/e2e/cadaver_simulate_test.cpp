@@ -45,8 +45,9 @@ TEST(CadaverSimulate, LeFortAdvancementOnTheRealHead) {
     GTEST_SKIP() << "real data absent: " << kCthead << " (see ../shared/data/README.md)";
   testing::TemporaryFolder folder("maxillo-cadaver-simulate");
   const std::string maxillo = std::string(MAXILLO_BINARY) + " --archive " + quote(folder / "archive");
-  auto wrap = run_command(std::string("bash ") + MAXILLO_SOURCE_DIR + "/scripts/cthead-to-dicom " + quote(folder / "ct") +
-                          " --data " + quote(kCthead / "slices") + " --maxillo " + MAXILLO_BINARY + " 2>&1");
+  auto wrap =
+      run_command(std::string("bash ") + MAXILLO_SOURCE_DIR + "/scripts/cthead-to-dicom " + quote(folder / "ct") +
+                  " --data " + quote(kCthead / "slices") + " --maxillo " + MAXILLO_BINARY + " 2>&1");
   ASSERT_EQ(wrap.exit_code, 0) << wrap.output;
   ASSERT_EQ(run_command(maxillo + " import " + quote(folder / "ct") + " 2>&1").exit_code, 0);
   std::ofstream(folder / "landmarks.csv") << kLandmarks;
@@ -54,7 +55,8 @@ TEST(CadaverSimulate, LeFortAdvancementOnTheRealHead) {
                          quote(folder / "landmarks.csv") + " 2>&1");
   ASSERT_EQ(add.exit_code, 0) << add.output;
 
-  auto run = run_command(maxillo + " --json simulate CTHEAD-UNC --advance 6 --out " + quote(folder / "sim") + " 2>/dev/null");
+  auto run =
+      run_command(maxillo + " --json simulate CTHEAD-UNC --advance 6 --out " + quote(folder / "sim") + " 2>/dev/null");
   ASSERT_EQ(run.exit_code, 0) << run.output;
   const auto summary = Json::parse(run.output);
   EXPECT_LE(summary["tetrahedra"].get<int>(), 100000);

@@ -53,7 +53,8 @@ class ClusterEndToEnd : public ::testing::Test {
   void make_case(const std::string& patient, const std::string& advance) {
     const auto sample = dir_ / patient;
     ASSERT_EQ(
-        run_maxillo({"sample", "--out", sample.string(), "--spacing", "2", "--patient-id", patient}, dir_).exit_code, 0);
+        run_maxillo({"sample", "--out", sample.string(), "--spacing", "2", "--patient-id", patient}, dir_).exit_code,
+        0);
     run_ok({"import", (sample / "ct").string()});
     run_ok({"ceph", "add", patient, "--time-point", "pre", "--date", "2026-01-02",
             (sample / "landmarks.mrk.json").string()});
@@ -80,11 +81,13 @@ TEST_F(ClusterEndToEnd, SlurmWorkersWithOneKilledValidateEveryCaseExactlyOnceAnd
   if (HasFatalFailure()) return;
 
   const auto out = dir_ / "nightly";
-  const auto submitted = shell("bash " + testing::quote(std::filesystem::path(MAXILLO_SOURCE_DIR) / "scripts/cluster/nightly-slurm.sh") +
-                               " " + testing::quote(out) + " 3");
+  const auto submitted =
+      shell("bash " + testing::quote(std::filesystem::path(MAXILLO_SOURCE_DIR) / "scripts/cluster/nightly-slurm.sh") +
+            " " + testing::quote(out) + " 3");
   ASSERT_EQ(submitted.exit_code, 0) << submitted.output;
   std::smatch ids;
-  ASSERT_TRUE(std::regex_search(submitted.output, ids, std::regex("workers: (\\d+)  summary: (\\d+)"))) << submitted.output;
+  ASSERT_TRUE(std::regex_search(submitted.output, ids, std::regex("workers: (\\d+)  summary: (\\d+)")))
+      << submitted.output;
   const std::string jobs = std::string(ids[1]) + "," + std::string(ids[2]);
 
   // Kill the first worker seen holding a case, by the PID in its lease ("host:pid").

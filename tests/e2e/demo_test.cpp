@@ -44,8 +44,8 @@ TEST_F(DemoTest, ReportTextIsExtractable) {
   ASSERT_TRUE(std::filesystem::exists(report()));
   auto text = testing::pdf_text(report());
   for (const char* expected : {"Phantom, Maxillo", "MAXILLO-PHANTOM-001", "Synthetic craniofacial phantom", "CT",
-                               "skin, frontal", "skin, lateral", "bone, oblique", "Frankfort frame", "Case contents", "SNA", "ANB",
-                               "surface-skin", "page 1 of"})
+                               "skin, frontal", "skin, lateral", "bone, oblique", "Frankfort frame", "Case contents",
+                               "SNA", "ANB", "surface-skin", "page 1 of"})
     EXPECT_NE(text.find(expected), std::string::npos) << "missing text: " << expected;
 }
 
@@ -72,7 +72,8 @@ TEST_F(DemoTest, ReportIsStoredInTheArchiveAndVerifies) {
   auto archive = folder_->path() / "out" / "archive";
   auto verify = run_command(std::string(MAXILLO_BINARY) + " --archive " + quote(archive) + " verify 2>&1");
   EXPECT_EQ(verify.exit_code, 0) << verify.output;
-  auto show = run_command(std::string(MAXILLO_BINARY) + " --json --archive " + quote(archive) + " show case:1 2>/dev/null");
+  auto show =
+      run_command(std::string(MAXILLO_BINARY) + " --json --archive " + quote(archive) + " show case:1 2>/dev/null");
   for (const char* kind : {"\"report\"", "\"surface-skin\"", "\"render-bone-lateral\"", "\"landmarks\""})
     EXPECT_NE(show.output.find(kind), std::string::npos) << kind << " missing in " << show.output;
 }
@@ -82,13 +83,14 @@ TEST_F(DemoTest, ReportHasTheOcclusionSectionAndItsArtefacts) {
   ASSERT_TRUE(std::filesystem::exists(report()));
   auto text = testing::pdf_text(report());
   for (const char* expected : {"Occlusion", "Occlusionogram", "Guided alignment", "Contacts per tooth",
-                               "Final occlusion in the anatomical frame", "pitch", "Surgical splint",
-                               "Watertight", "yes (one closed piece)", "Thickness where no tooth is"})
+                               "Final occlusion in the anatomical frame", "pitch", "Surgical splint", "Watertight",
+                               "yes (one closed piece)", "Thickness where no tooth is"})
     EXPECT_NE(text.find(expected), std::string::npos) << "missing text: " << expected;
   for (const char* file : {"occlusion.json", "occlusionogram.png", "splint.stl", "splint.png"})
     EXPECT_TRUE(std::filesystem::exists(folder_->path() / "out" / "occlusion" / file)) << file;
   auto archive = folder_->path() / "out" / "archive";
-  auto show = run_command(std::string(MAXILLO_BINARY) + " --json --archive " + quote(archive) + " show case:1 2>/dev/null");
+  auto show =
+      run_command(std::string(MAXILLO_BINARY) + " --json --archive " + quote(archive) + " show case:1 2>/dev/null");
   for (const char* kind : {"\"occlusion\"", "\"occlusionogram\"", "\"splint\""})
     EXPECT_NE(show.output.find(kind), std::string::npos) << kind << " missing in " << show.output;
 }
@@ -98,26 +100,26 @@ TEST_F(DemoTest, ReportHasTheOcclusionSectionAndItsArtefacts) {
 TEST_F(DemoTest, ReportHasThePlanningSectionWithTheMustShowNumbers) {
   ASSERT_EQ(demo_.exit_code, 0) << demo_.output;
   auto text = testing::pdf_text(report());
-  for (const char* expected : {"Surgical plan", "Planned moves", "Distraction vectors", "Distractor checks",
-                               "Activation schedule", "Forward simulation", "Vector divergence",
-                               "33.4\u00b0", "16.7\u00b0", "10.44 mm", "21.00", "All distractor checks passed",
-                               "End of consolidation", "day 100"})
+  for (const char* expected :
+       {"Surgical plan", "Planned moves", "Distraction vectors", "Distractor checks", "Activation schedule",
+        "Forward simulation", "Vector divergence", "33.4\u00b0", "16.7\u00b0", "10.44 mm", "21.00",
+        "All distractor checks passed", "End of consolidation", "day 100"})
     EXPECT_NE(text.find(expected), std::string::npos) << "missing text: " << expected;
   std::ifstream result_file(folder_->path() / "out" / "plan" / "plan-result.json");
   auto result = Json::parse(result_file);
   EXPECT_TRUE(result.at("feasible").get<bool>());
   for (const auto& point : result.at("distraction").at("forward_simulation").at("points"))
     EXPECT_LT(point.at("error_mm").get<double>(), 0.5) << point.at("label");
-  auto show = run_command(std::string(MAXILLO_BINARY) + " --json --archive " + quote(folder_->path() / "out" / "archive") +
-                          " plan show case:1 2>/dev/null");
+  auto show = run_command(std::string(MAXILLO_BINARY) + " --json --archive " +
+                          quote(folder_->path() / "out" / "archive") + " plan show case:1 2>/dev/null");
   EXPECT_NE(show.output.find("\"history\""), std::string::npos) << show.output;
 }
 
 // Issue 17: every artefact the demo stores is of a kind in the one list (archive/artefact_kind.h),
 // and the demo shows every kind there is.
 TEST_F(DemoTest, EveryStoredArtefactKindIsInTheOneList) {
-  auto show = run_command(std::string(MAXILLO_BINARY) + " --json --archive " + quote(folder_->path() / "out" / "archive") +
-                          " show case:1 2>/dev/null");
+  auto show = run_command(std::string(MAXILLO_BINARY) + " --json --archive " +
+                          quote(folder_->path() / "out" / "archive") + " show case:1 2>/dev/null");
   ASSERT_EQ(show.exit_code, 0);
   std::set<ArtefactKind> stored;
   const Json shown = Json::parse(show.output);  // kept: the loop must not range over a temporary's member
@@ -172,8 +174,9 @@ TEST_F(DemoTest, WritesTheSampleCohortFollowUpReport) {
   ASSERT_TRUE(std::filesystem::exists(pdf));
   EXPECT_EQ(run_command("qpdf --check " + quote(pdf) + " >/dev/null 2>&1").exit_code, 0);
   auto text = testing::pdf_text(pdf);
-  for (const char* expected : {"Cohort follow-up: 6 patients", "Change pre to post", "Change post to 6M",
-                               "Stability from post to 6M", "Wits appraisal (mm) per patient", "Wits appraisal over months"})
+  for (const char* expected :
+       {"Cohort follow-up: 6 patients", "Change pre to post", "Change post to 6M", "Stability from post to 6M",
+        "Wits appraisal (mm) per patient", "Wits appraisal over months"})
     EXPECT_NE(text.find(expected), std::string::npos) << "missing text: " << expected;
   // A cohort's report, not a patient's (issue 17): its own title, no empty patient fields.
   EXPECT_NE(text.find("Cohort follow-up\n"), std::string::npos);
@@ -191,8 +194,8 @@ TEST_F(DemoTest, TheScanArrivesAndTheReportLeavesOverDicom) {
   ASSERT_EQ(demo_.exit_code, 0) << demo_.output;
   EXPECT_NE(testing::pdf_text(report()).find("over DICOM from DEMO-CT (1 series)"), std::string::npos);
   const auto list = [](const std::filesystem::path& archive, const std::string& what) {
-    return Json::parse(run_command(std::string(MAXILLO_BINARY) + " --json --archive " + quote(archive) + " list " + what +
-                                   " 2>/dev/null")
+    return Json::parse(run_command(std::string(MAXILLO_BINARY) + " --json --archive " + quote(archive) + " list " +
+                                   what + " 2>/dev/null")
                            .output);
   };
   const auto pacs = folder_->path() / "out" / "pacs";
@@ -219,8 +222,8 @@ TEST_F(DemoTest, SecondRunIsIdempotent) {
   EXPECT_EQ(summary.at("received_over_dicom"), 0);
   EXPECT_GT(summary.at("already_archived").get<int>(), 100);
   EXPECT_EQ(summary.at("surfaces_reused"), true);
-  auto series = run_command(std::string(MAXILLO_BINARY) + " --json --archive " + quote(folder_->path() / "out" / "archive") +
-                            " list series 2>/dev/null");
+  auto series = run_command(std::string(MAXILLO_BINARY) + " --json --archive " +
+                            quote(folder_->path() / "out" / "archive") + " list series 2>/dev/null");
   int ct_series = 0;
   for (const auto& entry : Json::parse(series.output)) ct_series += entry.at("modality") == "CT";
   EXPECT_EQ(ct_series, 2) << series.output;  // the phantom and its synthetic post-operative CT, once each
@@ -240,7 +243,8 @@ TEST_F(DemoTest, ReportHasTheSoftTissuePrediction) {
                                "joined to moved bone", "Pre-operative, right lateral", "Predicted, right lateral",
                                "Displacement, right lateral", "Uncertainty band", "Sn", "Ls", "PogS"})
     EXPECT_NE(text.find(expected), std::string::npos) << "missing text: " << expected;
-  for (const char* file : {"soft-tissue/predicted-skin.vtp", "soft-tissue/soft-tissue-model.vtu", "soft-tissue/simulation.json"})
+  for (const char* file :
+       {"soft-tissue/predicted-skin.vtp", "soft-tissue/soft-tissue-model.vtu", "soft-tissue/simulation.json"})
     EXPECT_TRUE(std::filesystem::exists(folder_->path() / "out" / file)) << file;
   // Issue 17: the prediction reuses the moves `plan apply` stored instead of applying the plan again.
   std::ifstream simulation_file(folder_->path() / "out" / "soft-tissue" / "simulation.json");
@@ -253,7 +257,8 @@ TEST_F(DemoTest, PlanWritesTheTransferModelAndSegments) {
   for (const char* file : {"transfer-model.stl", "planned-maxilla.stl", "planned-cranium.stl", "plan-lateral.png"})
     EXPECT_TRUE(std::filesystem::exists(plan / file)) << file;
   auto text = testing::pdf_text(report());
-  for (const char* expected : {"Osteotomies: bone segments", "maxilla", "Transfer model", "Printable", "Planned skeleton"})
+  for (const char* expected :
+       {"Osteotomies: bone segments", "maxilla", "Transfer model", "Printable", "Planned skeleton"})
     EXPECT_NE(text.find(expected), std::string::npos) << "missing text: " << expected;
 }
 

@@ -48,7 +48,7 @@ TEST(Simulate, SixMillimetreAdvancementOfThePhantomGivesAPlausibleFace) {
   // The face follows a 6 mm advancement by at most about as much, and visibly.
   EXPECT_GT(summary["max_skin_displacement_mm"].get<double>(), 4.0);
   EXPECT_LT(summary["max_skin_displacement_mm"].get<double>(), 7.0);
-  EXPECT_EQ(summary["uncertainty"]["runs"].size(), 4u);  // fem 0.46, mtm 0.46, fem 0.45, fem 0.49
+  EXPECT_EQ(summary["uncertainty"]["runs"].size(), 4u);            // fem 0.46, mtm 0.46, fem 0.45, fem 0.49
   EXPECT_LT(summary["uncertainty"]["p95_mm"].get<double>(), 1.0);  // plausible models agree
   // The predicted skin: closed like the input, and the VTP carries the displacement per vertex.
   EXPECT_TRUE(is_watertight(read_mesh(dir / "sim" / "predicted-skin.stl")));
@@ -58,8 +58,8 @@ TEST(Simulate, SixMillimetreAdvancementOfThePhantomGivesAPlausibleFace) {
     EXPECT_TRUE(std::filesystem::exists(dir / "sim" / png)) << png;
 
   // The non-linear model (neo-Hookean) converges on the same face and stays near the linear one.
-  auto nonlinear = run_maxillo({archive, "--json", "simulate", "MAXILLO-PHANTOM-001", "--advance", "6", "--model", "nfem",
-                                "--out", (dir / "sim-nfem").string()},
+  auto nonlinear = run_maxillo({archive, "--json", "simulate", "MAXILLO-PHANTOM-001", "--advance", "6", "--model",
+                                "nfem", "--out", (dir / "sim-nfem").string()},
                                dir);
   ASSERT_EQ(nonlinear.exit_code, 0) << nonlinear.err;
   const auto nfem = Json::parse(nonlinear.out);
@@ -67,13 +67,16 @@ TEST(Simulate, SixMillimetreAdvancementOfThePhantomGivesAPlausibleFace) {
   EXPECT_LT(nfem["max_skin_displacement_mm"].get<double>(), 7.0);
 
   // Issue 4: `plan apply` writes the transfer model and, with the soft tissue engine in, the face.
-  ASSERT_EQ(run_maxillo({archive, "plan", "create", "MAXILLO-PHANTOM-001", "--advance", "8", "--widen", "4"}, dir).exit_code, 0);
+  ASSERT_EQ(
+      run_maxillo({archive, "plan", "create", "MAXILLO-PHANTOM-001", "--advance", "8", "--widen", "4"}, dir).exit_code,
+      0);
   auto apply = run_maxillo({archive, "plan", "apply", "MAXILLO-PHANTOM-001", "--out", (dir / "plan").string()}, dir);
   ASSERT_EQ(apply.exit_code, 0) << apply.err;
   const auto transfer = read_mesh(dir / "plan" / "transfer-model.stl");
   EXPECT_TRUE(is_watertight(transfer));
   EXPECT_GT(signed_volume(transfer), 1000.0);  // mm^3
-  for (const char* file : {"plan-result.json", "planned-maxilla.stl", "plan-oblique.png", "soft-tissue/simulation.json"})
+  for (const char* file :
+       {"plan-result.json", "planned-maxilla.stl", "plan-oblique.png", "soft-tissue/simulation.json"})
     EXPECT_TRUE(std::filesystem::exists(dir / "plan" / file)) << file;
   // Issue 17: the face of `plan apply` uses the moves it has just stored, not a second application.
   EXPECT_EQ(Json::parse(text_of(dir / "plan" / "soft-tissue" / "simulation.json"))["plan_application"], "stored");
@@ -83,9 +86,9 @@ TEST(Simulate, SixMillimetreAdvancementOfThePhantomGivesAPlausibleFace) {
 // archive here does not even exist, which must not be what the command complains about).
 TEST(Simulate, WithoutAPlanOrAMoveItSaysWhatIsMissing) {
   TemporaryFolder folder("simulate-usage");
-  auto run = run_maxillo({"--archive=" + (folder.path() / "a").string(), "simulate", "1", "--out",
-                          (folder.path() / "sim").string()},
-                         folder.path());
+  auto run = run_maxillo(
+      {"--archive=" + (folder.path() / "a").string(), "simulate", "1", "--out", (folder.path() / "sim").string()},
+      folder.path());
   EXPECT_EQ(run.exit_code, exit_code_for(ErrorCode::kUsage)) << run.err;
   EXPECT_NE(run.err.find("give a plan (--plan PLAN.json) or a Le Fort I advancement (--advance MM)"), std::string::npos)
       << run.err;

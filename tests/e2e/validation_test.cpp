@@ -139,7 +139,8 @@ TEST_F(ValidationEndToEnd, ValidateFindsTheKnownAnswerAndNightlySummarisesEveryC
   //    and resumes: the next run validates B only and writes the summary.
   const auto night = (dir_ / "night").string();
   const auto killed_err = dir_ / "killed-stderr.txt";
-  const pid_t pid = testing::start_maxillo({archive_, "nightly", "--out", night}, dir_ / "killed-stdout.txt", killed_err);
+  const pid_t pid =
+      testing::start_maxillo({archive_, "nightly", "--out", night}, dir_ / "killed-stdout.txt", killed_err);
   for (int waited = 0; waited < 600 && testing::slurp(killed_err).find("registering") == std::string::npos; ++waited)
     std::this_thread::sleep_for(std::chrono::milliseconds(250));
   kill(pid, SIGKILL);

@@ -25,14 +25,14 @@ template <typename Body>
 void expecting_errors(Body&& body) {
   try {
     body();
-  } catch (const Error&) {
-  }
+  } catch (const Error&) {}
 }
 
 // VTK's readers take file names: the input goes to a file of this process's own (on tmpfs
 // when there is one, /dev/shm, so that a million runs do not wear a disk).
 std::filesystem::path scratch_file(const char* extension) {
-  const std::filesystem::path folder = std::filesystem::exists("/dev/shm") ? "/dev/shm" : std::filesystem::temp_directory_path();
+  const std::filesystem::path folder =
+      std::filesystem::exists("/dev/shm") ? "/dev/shm" : std::filesystem::temp_directory_path();
   return folder / ("maxillo-fuzz-" + std::to_string(::getpid()) + extension);
 }
 

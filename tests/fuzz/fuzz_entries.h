@@ -31,9 +31,11 @@ struct Target {
   const char* extra;   // more seeds elsewhere under tests/, or nullptr
   void (*entry)(std::span<const std::byte>);
 };
-inline constexpr Target kTargets[] = {
-    {"dicom_header", "dicom", "data/bad-inputs", dicom_header}, {"dicom_slice", "dicom", "data/bad-inputs", dicom_slice},
-    {"landmarks", "landmarks", nullptr, landmarks},              {"plan_json", "plan_json", nullptr, plan_json},
-    {"mesh_file", "mesh_file", nullptr, mesh_file},              {"cohort_csv", "cohort_csv", nullptr, cohort_csv}};
+inline constexpr Target kTargets[] = {{"dicom_header", "dicom", "data/bad-inputs", dicom_header},
+                                      {"dicom_slice", "dicom", "data/bad-inputs", dicom_slice},
+                                      {"landmarks", "landmarks", nullptr, landmarks},
+                                      {"plan_json", "plan_json", nullptr, plan_json},
+                                      {"mesh_file", "mesh_file", nullptr, mesh_file},
+                                      {"cohort_csv", "cohort_csv", nullptr, cohort_csv}};
 
 }  // namespace maxillo::fuzzing

@@ -10,8 +10,10 @@ namespace {
 // Porions and orbitales of an average adult head in a frame where anterior = -y,
 // superior = +z, left = +x (mm).
 FrankfortPoints canonical_points() {
-  return {.porion_right = Eigen::Vector3d(-60, 10, 0), .porion_left = Eigen::Vector3d(60, 10, 0),
-          .orbitale_right = Eigen::Vector3d(-33, -70, 0), .orbitale_left = Eigen::Vector3d(33, -70, 0)};
+  return {.porion_right = Eigen::Vector3d(-60, 10, 0),
+          .porion_left = Eigen::Vector3d(60, 10, 0),
+          .orbitale_right = Eigen::Vector3d(-33, -70, 0),
+          .orbitale_left = Eigen::Vector3d(33, -70, 0)};
 }
 
 FrankfortPoints moved(FrankfortPoints points, const Eigen::Matrix3d& rotation, const Eigen::Vector3d& shift) {
@@ -21,8 +23,8 @@ FrankfortPoints moved(FrankfortPoints points, const Eigen::Matrix3d& rotation, c
 }
 
 void expect_near(const Eigen::Vector3d& actual, const Eigen::Vector3d& expected, double tolerance) {
-  EXPECT_LT((actual - expected).norm(), tolerance) << "actual " << actual.transpose() << " expected "
-                                                   << expected.transpose();
+  EXPECT_LT((actual - expected).norm(), tolerance)
+      << "actual " << actual.transpose() << " expected " << expected.transpose();
 }
 
 TEST(AnatomicalFrame, WithoutPointsUsesPatientAxes) {
@@ -36,8 +38,9 @@ TEST(AnatomicalFrame, WithoutPointsUsesPatientAxes) {
 
 TEST(AnatomicalFrame, FrankfortFrameFollowsARotatedHead) {
   // Head pitched 20 degrees chin-down and turned 30 degrees, then moved.
-  const Eigen::Matrix3d rotation = (Eigen::AngleAxisd(0.35, Eigen::Vector3d::UnitX()) *
-                                    Eigen::AngleAxisd(0.52, Eigen::Vector3d::UnitZ())).toRotationMatrix();
+  const Eigen::Matrix3d rotation =
+      (Eigen::AngleAxisd(0.35, Eigen::Vector3d::UnitX()) * Eigen::AngleAxisd(0.52, Eigen::Vector3d::UnitZ()))
+          .toRotationMatrix();
   const Eigen::Vector3d shift(12, -150, 300);
   const AnatomicalFrame frame = frankfort_frame(moved(canonical_points(), rotation, shift));
   EXPECT_EQ(frame.source, FrameSource::Frankfort);
@@ -61,19 +64,21 @@ TEST(AnatomicalFrame, OneOrbitaleIsEnoughAndFrameStaysOrthonormal) {
 
 TEST(AnatomicalFrame, DegeneratePointsFallBack) {
   // Porions 5 mm apart: no reliable transverse axis.
-  EXPECT_EQ(frankfort_frame({.porion_right = Eigen::Vector3d(-2, 0, 0), .porion_left = Eigen::Vector3d(3, 0, 0),
+  EXPECT_EQ(frankfort_frame({.porion_right = Eigen::Vector3d(-2, 0, 0),
+                             .porion_left = Eigen::Vector3d(3, 0, 0),
                              .orbitale_right = Eigen::Vector3d(0, -70, 0)})
                 .source,
             FrameSource::PatientAxes);
   // Orbitale on the porion axis: no forward direction.
-  EXPECT_EQ(frankfort_frame({.porion_right = Eigen::Vector3d(-60, 0, 0), .porion_left = Eigen::Vector3d(60, 0, 0),
+  EXPECT_EQ(frankfort_frame({.porion_right = Eigen::Vector3d(-60, 0, 0),
+                             .porion_left = Eigen::Vector3d(60, 0, 0),
                              .orbitale_right = Eigen::Vector3d(30, 0, 0)})
                 .source,
             FrameSource::PatientAxes);
   // Missing orbitales.
-  EXPECT_EQ(frankfort_frame({.porion_right = Eigen::Vector3d(-60, 0, 0), .porion_left = Eigen::Vector3d(60, 0, 0)})
-                .source,
-            FrameSource::PatientAxes);
+  EXPECT_EQ(
+      frankfort_frame({.porion_right = Eigen::Vector3d(-60, 0, 0), .porion_left = Eigen::Vector3d(60, 0, 0)}).source,
+      FrameSource::PatientAxes);
 }
 
 }  // namespace

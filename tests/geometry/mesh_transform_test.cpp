@@ -20,11 +20,13 @@ TEST(CylinderMesh, IsClosedOutwardAndHasThePrismVolume) {
 
 TEST(Transformed, KeepsVolumeAndMovesPointsRigidly) {
   auto mesh = cylinder_mesh(Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 0, 10), 3.0);
-  Eigen::Isometry3d move = Eigen::Translation3d(5, -7, 2) * Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 2, 3).normalized());
+  Eigen::Isometry3d move =
+      Eigen::Translation3d(5, -7, 2) * Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 2, 3).normalized());
   auto moved = transformed(mesh, move);
   EXPECT_NEAR(signed_volume(moved), signed_volume(mesh), 1e-9);
   for (Eigen::Index v = 0; v < mesh.vertex_count(); ++v)
-    EXPECT_LT((moved.vertices.row(v).transpose() - move * Eigen::Vector3d(mesh.vertices.row(v).transpose())).norm(), 1e-12);
+    EXPECT_LT((moved.vertices.row(v).transpose() - move * Eigen::Vector3d(mesh.vertices.row(v).transpose())).norm(),
+              1e-12);
 }
 
 TEST(Merged, AddsVolumesAndKeepsEachPartClosed) {

@@ -35,8 +35,9 @@ std::filesystem::path write_synthetic_head(const TemporaryFolder& folder) {
         const uint16_t stored = uint16_t(std::lround(hu_at(2.0 * Eigen::Vector3d(i, j, k)) + 1024));
         raw.write(reinterpret_cast<const char*>(&stored), 2);  // little endian (x86)
       }
-  std::ofstream(folder / "head.mhd") << "ObjectType = Image\nNDims = 3\nDimSize = 50 50 50\nElementType = MET_USHORT\n"
-                                        "ElementSpacing = 2 2 2\nElementByteOrderMSB = False\nElementDataFile = head.raw\n";
+  std::ofstream(folder / "head.mhd")
+      << "ObjectType = Image\nNDims = 3\nDimSize = 50 50 50\nElementType = MET_USHORT\n"
+         "ElementSpacing = 2 2 2\nElementByteOrderMSB = False\nElementDataFile = head.raw\n";
   return folder / "head.mhd";
 }
 
@@ -60,11 +61,11 @@ TEST_F(Commands, ConvertThenSurfaces) {
   EXPECT_EQ(converted["files"], kSize);
   EXPECT_EQ(converted["origin_lps_mm"], Json::array({10.0, 20.0, 30.0}));
 
-  auto surfaces = maxillo("--json surfaces " + testing::quote(folder / "dicom") + " --out " +
-                          testing::quote(folder / "surfaces") +
-                          // iso-values halfway between the phantom's steps put the surfaces on
-                          // the voxel boundaries, where the analytic sizes apply
-                          " --skin-hu -485 --bone-hu 515 --triangles 5000 --format ply");
+  auto surfaces =
+      maxillo("--json surfaces " + testing::quote(folder / "dicom") + " --out " + testing::quote(folder / "surfaces") +
+              // iso-values halfway between the phantom's steps put the surfaces on
+              // the voxel boundaries, where the analytic sizes apply
+              " --skin-hu -485 --bone-hu 515 --triangles 5000 --format ply");
   ASSERT_EQ(surfaces.exit_code, 0) << surfaces.output;
   Json result = Json::parse(surfaces.output);
   ASSERT_EQ(result["surfaces"].size(), 2u);

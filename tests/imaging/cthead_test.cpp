@@ -39,7 +39,8 @@ class CadaverHead : public ::testing::Test {
     std::ofstream(*folder_ / "cthead.mhd")
         << "ObjectType = Image\nNDims = 3\nDimSize = 256 256 113\nElementType = MET_USHORT\n"
            "ElementSpacing = 1.0 1.0 2.0\nElementByteOrderMSB = True\nOffset = 0 0 0\n"
-           "ElementDataFile = " << std::filesystem::absolute(kSlices).string() << "/CThead.%d 1 113 1\n";
+           "ElementDataFile = "
+        << std::filesystem::absolute(kSlices).string() << "/CThead.%d 1 113 1\n";
     Volume raw = read_volume_file(*folder_ / "cthead.mhd", {.hu_offset = -1024});
     raw.geometry.direction.col(2) = Eigen::Vector3d(0, 0, -1);
     raw.geometry.origin = {-127.5, -127.5, 224};
@@ -52,17 +53,18 @@ class CadaverHead : public ::testing::Test {
     labels_ = new LabelVolume(segment_tissues(*volume_));
     const double segmentation_seconds = seconds_since(start);
     start = std::chrono::steady_clock::now();
-    skin_ = new TriangleMesh(extract_surface(restrict_to_mask(*volume_, select_labels(*labels_, kSoftTissue, kTeeth), -400),
-                                             -400, {.keep_largest_components = 1, .target_triangles = 200000}));
+    skin_ =
+        new TriangleMesh(extract_surface(restrict_to_mask(*volume_, select_labels(*labels_, kSoftTissue, kTeeth), -400),
+                                         -400, {.keep_largest_components = 1, .target_triangles = 200000}));
     const double skin_seconds = seconds_since(start);
     start = std::chrono::steady_clock::now();
-    bone_ = new TriangleMesh(extract_surface(restrict_to_mask(*volume_, select_labels(*labels_, kBone, kTeeth), 300), 300,
-                                             {.keep_largest_components = 0, .min_component_fraction = 0.001,
-                                              .target_triangles = 200000}));
+    bone_ = new TriangleMesh(
+        extract_surface(restrict_to_mask(*volume_, select_labels(*labels_, kBone, kTeeth), 300), 300,
+                        {.keep_largest_components = 0, .min_component_fraction = 0.001, .target_triangles = 200000}));
     const double bone_seconds = seconds_since(start);
     std::cout << "[cthead] load 113 DICOM slices: " << load_seconds << " s; segmentation: " << segmentation_seconds
-              << " s; skin surface: " << skin_seconds << " s, " << skin_->face_count() << " triangles; bone surface: "
-              << bone_seconds << " s, " << bone_->face_count() << " triangles\n";
+              << " s; skin surface: " << skin_seconds << " s, " << skin_->face_count()
+              << " triangles; bone surface: " << bone_seconds << " s, " << bone_->face_count() << " triangles\n";
   }
   static void TearDownTestSuite() {
     delete skin_;
@@ -155,7 +157,8 @@ TEST_F(CadaverHead, BoneReachesTheTeeth) {
   EXPECT_GT(teeth, 500) << "teeth voxels at the occlusal level";
   int64_t bone_at_teeth_level = 0;
   for (Eigen::Index v = 0; v < bone_->vertex_count(); ++v)
-    if (bone_->vertices(v, 2) < z_of_slice(70) && bone_->vertices(v, 2) > z_of_slice(88) && bone_->vertices(v, 1) < y_of_row(110))
+    if (bone_->vertices(v, 2) < z_of_slice(70) && bone_->vertices(v, 2) > z_of_slice(88) &&
+        bone_->vertices(v, 1) < y_of_row(110))
       ++bone_at_teeth_level;
   EXPECT_GT(bone_at_teeth_level, 1000);
 }
@@ -164,9 +167,10 @@ TEST_F(CadaverHead, ScriptWrapsTheSameSeries) {
   const std::filesystem::path maxillo = MAXILLO_BINARY;
   if (!std::filesystem::exists(maxillo)) GTEST_SKIP() << maxillo << " is not built";
   TemporaryFolder out("cthead-script");
-  auto run = testing::run_command(testing::quote(std::filesystem::path(MAXILLO_SOURCE_DIR) / "scripts" / "cthead-to-dicom") +
-                                  " " + testing::quote(out / "series") + " --data " + testing::quote(kSlices) +
-                                  " --maxillo " + testing::quote(maxillo) + " 2>&1");
+  auto run =
+      testing::run_command(testing::quote(std::filesystem::path(MAXILLO_SOURCE_DIR) / "scripts" / "cthead-to-dicom") +
+                           " " + testing::quote(out / "series") + " --data " + testing::quote(kSlices) + " --maxillo " +
+                           testing::quote(maxillo) + " 2>&1");
   ASSERT_EQ(run.exit_code, 0) << run.output;
   std::vector<std::filesystem::path> files;
   for (const auto& entry : std::filesystem::directory_iterator(out / "series")) files.push_back(entry.path());

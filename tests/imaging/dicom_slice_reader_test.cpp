@@ -113,10 +113,19 @@ TEST(DicomSliceReader, AppliesBitsStoredSignAndRescale) {
   };
   const std::vector<Case> cases = {
       {"unsigned 8 bit, slope 2", {8, 8, 0, "MONOCHROME2", "2", "-100"}, {0, 1, 128, 255}, {-100, -98, 156, 410}},
-      {"unsigned 16 bit, CT offset", {16, 16, 0, "MONOCHROME2", "1", "-1024"}, {0, 1024, 3000, 65535}, {-1024, 0, 1976, 32767}},
+      {"unsigned 16 bit, CT offset",
+       {16, 16, 0, "MONOCHROME2", "1", "-1024"},
+       {0, 1024, 3000, 65535},
+       {-1024, 0, 1976, 32767}},
       // 12 stored bits, signed; the unused high bits carry garbage that must be masked off.
-      {"signed 12 of 16 bits", {16, 12, 1, "MONOCHROME2", "1", "0"}, {0x0800, 0x0FFF, 0xF7FF, 0x0001}, {-2048, -1, 2047, 1}},
-      {"signed 16 bit, slope 0.5", {16, 16, 1, "MONOCHROME2", "0.5", "10"}, {0xFFFE, 0x8000, 0x7FFF, 20}, {9, -16374, 16394, 20}},
+      {"signed 12 of 16 bits",
+       {16, 12, 1, "MONOCHROME2", "1", "0"},
+       {0x0800, 0x0FFF, 0xF7FF, 0x0001},
+       {-2048, -1, 2047, 1}},
+      {"signed 16 bit, slope 0.5",
+       {16, 16, 1, "MONOCHROME2", "0.5", "10"},
+       {0xFFFE, 0x8000, 0x7FFF, 20},
+       {9, -16374, 16394, 20}},
       {"MONOCHROME1 is inverted", {8, 8, 0, "MONOCHROME1", "1", "0"}, {0, 55, 200, 255}, {255, 200, 55, 0}},
   };
   for (const Case& c : cases) {
@@ -128,7 +137,8 @@ TEST(DicomSliceReader, AppliesBitsStoredSignAndRescale) {
 }
 
 TEST(DicomSliceReader, DecodesJpegLosslessJpegLsAndRle) {
-  if (!testing::tool_available("dcmcjpeg") || !testing::tool_available("dcmcjpls") || !testing::tool_available("dcmcrle"))
+  if (!testing::tool_available("dcmcjpeg") || !testing::tool_available("dcmcjpls") ||
+      !testing::tool_available("dcmcrle"))
     GTEST_SKIP() << "DCMTK command-line tools (dcmcjpeg, dcmcjpls, dcmcrle) are not installed";
   TemporaryFolder folder("slice-codecs");
   const Volume v = small_ct(Eigen::Matrix3d::Identity());
@@ -157,14 +167,19 @@ TEST(DicomSliceReader, RefusesWhatItCannotRead) {
     return path;
   };
   std::string reason;
-  EXPECT_EQ(code_of_reading(modified("rgb.dcm", [](DcmDataset& d) { d.putAndInsertString(DCM_PhotometricInterpretation, "RGB"); }), &reason),
+  EXPECT_EQ(code_of_reading(
+                modified("rgb.dcm", [](DcmDataset& d) { d.putAndInsertString(DCM_PhotometricInterpretation, "RGB"); }),
+                &reason),
             ErrorCode::kUnsupportedSyntax);
   EXPECT_NE(reason.find("RGB"), std::string::npos) << reason;
-  EXPECT_EQ(code_of_reading(modified("frames.dcm", [](DcmDataset& d) { d.putAndInsertString(DCM_NumberOfFrames, "2"); }), &reason),
+  EXPECT_EQ(code_of_reading(
+                modified("frames.dcm", [](DcmDataset& d) { d.putAndInsertString(DCM_NumberOfFrames, "2"); }), &reason),
             ErrorCode::kUnsupportedSyntax);
   EXPECT_NE(reason.find("multi-frame"), std::string::npos) << reason;
-  EXPECT_EQ(code_of_reading(modified("no-ipp.dcm", [](DcmDataset& d) { d.findAndDeleteElement(DCM_ImagePositionPatient); }), &reason),
-            ErrorCode::kMissingAttribute);
+  EXPECT_EQ(
+      code_of_reading(modified("no-ipp.dcm", [](DcmDataset& d) { d.findAndDeleteElement(DCM_ImagePositionPatient); }),
+                      &reason),
+      ErrorCode::kMissingAttribute);
   EXPECT_NE(reason.find("Image Position (Patient)"), std::string::npos) << reason;
 
   // JPEG 2000: a valid encapsulation with a fake codestream; DCMTK has no decoder for it.

@@ -29,9 +29,9 @@ size_t count(const Mask& mask) { return size_t(std::count(mask.begin(), mask.end
 TEST(MaskComponents, LargestComponentIsFaceConnected) {
   const auto g = grid(12, 10, 8);
   Mask mask(g.voxel_count(), 0);
-  set_box(mask, g, {0, 0, 0}, {2, 2, 2});     // 8 voxels
-  set_box(mask, g, {5, 5, 3}, {8, 8, 6});     // 27 voxels
-  mask[g.index(2, 2, 2)] = 1;                 // touches the first box by a corner only: separate
+  set_box(mask, g, {0, 0, 0}, {2, 2, 2});  // 8 voxels
+  set_box(mask, g, {5, 5, 3}, {8, 8, 6});  // 27 voxels
+  mask[g.index(2, 2, 2)] = 1;              // touches the first box by a corner only: separate
   const Mask largest = largest_component(mask, g);
   EXPECT_EQ(count(largest), 27u);
   EXPECT_EQ(largest[g.index(6, 6, 4)], 1);
@@ -90,7 +90,8 @@ TEST(DistanceMorphology, SquaredDistancesEqualBruteForceOnAnisotropicGrids) {
     for (size_t k = 0; k < g.size[2]; ++k)
       for (size_t j = 0; j < g.size[1]; ++j)
         for (size_t i = 0; i < g.size[0]; ++i)
-          EXPECT_NEAR(d[g.index(i, j, k)], brute_squared_distance(features, g, i, j, k), 1e-3) << i << " " << j << " " << k;
+          EXPECT_NEAR(d[g.index(i, j, k)], brute_squared_distance(features, g, i, j, k), 1e-3)
+              << i << " " << j << " " << k;
   }
   const auto g = grid(4, 4, 4);
   EXPECT_GT(squared_distance_to(Mask(g.voxel_count(), 0), g)[0], 1e18f);  // nothing to be near

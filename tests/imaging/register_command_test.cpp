@@ -48,9 +48,9 @@ TEST(RegisterCommand, WritesARigidTransformCloseToTheKnownOne) {
   EXPECT_EQ(t.at("fixed").at("folder").get<std::string>(), (scratch / "pre").string());
 
   // A box outside the fixed CT is refused as bad input (exit 26), naming the box.
-  const auto outside = run_maxillo({"register", (scratch / "pre").string(), (scratch / "post").string(), "--box",
-                                    "500,500,500,600,600,600"},
-                                   scratch.path());
+  const auto outside = run_maxillo(
+      {"register", (scratch / "pre").string(), (scratch / "post").string(), "--box", "500,500,500,600,600,600"},
+      scratch.path());
   EXPECT_EQ(outside.exit_code, 26) << outside.err;
   EXPECT_NE(outside.err.find("registration box"), std::string::npos) << outside.err;
 }

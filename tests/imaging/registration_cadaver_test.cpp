@@ -43,8 +43,8 @@ TEST(CadaverRegistration, RecoversFourDegreesAndSevenMillimetresWithinFiftyMicro
   ASSERT_GT(skin.rows(), 10000);
   const double rms = pipeline::rms_error_mm(skin, result.moving_to_fixed, known);
   const double start_rms = pipeline::rms_error_mm(skin, Eigen::Isometry3d::Identity(), known);
-  std::cout << "[cadaver registration] " << result.seconds << " s, " << result.iterations << " iterations, RMS "
-            << rms << " mm over " << skin.rows() << " skin vertices (start " << start_rms << " mm)\n";
+  std::cout << "[cadaver registration] " << result.seconds << " s, " << result.iterations << " iterations, RMS " << rms
+            << " mm over " << skin.rows() << " skin vertices (start " << start_rms << " mm)\n";
   EXPECT_GT(start_rms, 7);
   EXPECT_LE(rms, 0.05);
 }
@@ -81,10 +81,12 @@ TEST(CadaverRegistration, RepeatedAndDifferentlyStartedRegistrationsAgree) {
   }
 
   Eigen::Isometry3d nudge = Eigen::Isometry3d::Identity();
-  nudge.rotate(Eigen::AngleAxisd(M_PI / 180, Eigen::Vector3d(1, -1, 2).normalized())).pretranslate(Eigen::Vector3d(0.6, -0.5, 0.6));
+  nudge.rotate(Eigen::AngleAxisd(M_PI / 180, Eigen::Vector3d(1, -1, 2).normalized()))
+      .pretranslate(Eigen::Vector3d(0.6, -0.5, 0.6));
   options.initial = nudge * known.inverse();
   const Apart nudged = apart(register_rigid(fixed, moving, options).moving_to_fixed, first.moving_to_fixed, skin);
-  std::cout << "[cadaver registration] differently started: " << nudged.degrees << " deg, " << nudged.mm << " mm apart\n";
+  std::cout << "[cadaver registration] differently started: " << nudged.degrees << " deg, " << nudged.mm
+            << " mm apart\n";
   EXPECT_LT(nudged.degrees, 0.01);
   EXPECT_LT(nudged.mm, 0.01);
 }
@@ -119,9 +121,10 @@ TEST(CadaverRegistration, ElastixEulerTransformIsReadAsMovingToFixed) {
                          "(ComputeZYX \"false\")\n";
   const Eigen::Isometry3d moving_to_fixed = pipeline::read_elastix_euler(file);
   std::filesystem::remove(file);
-  const Eigen::Matrix3d r = (Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(0.1, Eigen::Vector3d::UnitX()) *
-                             Eigen::AngleAxisd(-0.2, Eigen::Vector3d::UnitY()))
-                                .toRotationMatrix();
+  const Eigen::Matrix3d r =
+      (Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(0.1, Eigen::Vector3d::UnitX()) *
+       Eigen::AngleAxisd(-0.2, Eigen::Vector3d::UnitY()))
+          .toRotationMatrix();
   const Eigen::Vector3d c(10, 20, 30), p(3, -7, 50);
   const Eigen::Vector3d in_moving = r * (p - c) + c + Eigen::Vector3d(1.5, -2, 4);
   EXPECT_LT((moving_to_fixed * in_moving - p).norm(), 1e-9);

@@ -34,10 +34,10 @@ SyntheticHead make_head() {
         if (e <= 1) {
           h.in_head[n] = 1;
           hu = 40;
-          if (e > 0.85 && e < 0.93) hu = 900;                                          // skull
-          if ((p - (c + Eigen::Vector3d(0, -55, -30))).norm() < 6) hu = 2200;          // tooth
-          if ((p - (c + Eigen::Vector3d(20, -20, 10))).norm() < 8) hu = -950;          // air cell
-          if ((p - (c + Eigen::Vector3d(-20, 0, 0))).norm() < 1.5) hu = 700;           // bone speck
+          if (e > 0.85 && e < 0.93) hu = 900;                                  // skull
+          if ((p - (c + Eigen::Vector3d(0, -55, -30))).norm() < 6) hu = 2200;  // tooth
+          if ((p - (c + Eigen::Vector3d(20, -20, 10))).norm() < 8) hu = -950;  // air cell
+          if ((p - (c + Eigen::Vector3d(-20, 0, 0))).norm() < 1.5) hu = 700;   // bone speck
         }
         // Head rest: a cylindrical shell 4 mm thick around an axis along z, under the back of
         // the head (posterior = +y), touching the skin along the mid-sagittal line.
@@ -85,7 +85,8 @@ TEST(Segmentation, SyntheticHeadLabelsAndHeadRestRemoval) {
   const VolumeGeometry& g = labels.geometry;
   auto label_at = [&](const Eigen::Vector3d& lps) {
     Eigen::Vector3d ijk = g.continuous_index(lps);
-    return labels.labels[size_t(g.index(int(std::lround(ijk.x())), int(std::lround(ijk.y())), int(std::lround(ijk.z()))))];
+    return labels
+        .labels[size_t(g.index(int(std::lround(ijk.x())), int(std::lround(ijk.y())), int(std::lround(ijk.z()))))];
   };
   const Eigen::Vector3d c(80, 100, 90);
   EXPECT_EQ(label_at(c), kSoftTissue);

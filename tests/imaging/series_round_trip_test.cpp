@@ -62,7 +62,9 @@ TEST(SeriesRoundTrip, LeftHandedVolumeComesBackFlippedButSamePlaces) {
     for (int j = 0; j < v.geometry.size.y(); ++j)
       for (int i = 0; i < v.geometry.size.x(); ++i) {
         ASSERT_EQ(back.at(i, j, nz - 1 - k), v.at(i, j, k));
-        ASSERT_LT((back.geometry.world(Eigen::Vector3d(i, j, nz - 1 - k)) - v.geometry.world(Eigen::Vector3d(i, j, k))).norm(), 1e-6);
+        ASSERT_LT((back.geometry.world(Eigen::Vector3d(i, j, nz - 1 - k)) - v.geometry.world(Eigen::Vector3d(i, j, k)))
+                      .norm(),
+                  1e-6);
       }
 }
 

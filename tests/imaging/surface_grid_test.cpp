@@ -35,7 +35,8 @@ Traced both_ways(const Volume& ct, const LabelVolume& labels, uint8_t first, uin
 
 void expect_alike(const Traced& t, const char* what, double mean_mm, double p95_mm) {
   EXPECT_TRUE(is_watertight(t.for_budget)) << what;
-  EXPECT_EQ(connected_components(t.for_budget).face_counts.size(), connected_components(t.native).face_counts.size()) << what;
+  EXPECT_EQ(connected_components(t.for_budget).face_counts.size(), connected_components(t.native).face_counts.size())
+      << what;
   EXPECT_NEAR(surface_area(t.for_budget), surface_area(t.native), 0.03 * surface_area(t.native)) << what;
   for (const auto* mesh : {&t.native, &t.for_budget}) {
     std::cout << "[surface grid] " << what << " pieces (triangles):";
@@ -73,13 +74,13 @@ TEST(RegionSurface, IsTheSurfaceOfTheRestrictedCopyWithoutMakingIt) {
     double iso;
     SurfaceGrid grid;
   };
-  for (const Case& c : {Case{{kSoftTissue, kTeeth}, -400, SurfaceGrid::ForBudget}, Case{{kBone, kTeeth}, 300, SurfaceGrid::Native},
-                        Case{{kBone, kBone}, 300, SurfaceGrid::ForBudget}}) {
+  for (const Case& c :
+       {Case{{kSoftTissue, kTeeth}, -400, SurfaceGrid::ForBudget}, Case{{kBone, kTeeth}, 300, SurfaceGrid::Native},
+        Case{{kBone, kBone}, 300, SurfaceGrid::ForBudget}}) {
     SurfaceOptions options{.keep_largest_components = 0, .target_triangles = 20000, .grid = c.grid};
     const TriangleMesh direct = extract_region_surface(phantom.ct, labels, c.region, c.iso, options);
-    const TriangleMesh copied =
-        extract_surface(restrict_to_mask(phantom.ct, select_labels(labels, c.region.first, c.region.last), c.iso), c.iso,
-                        options);
+    const TriangleMesh copied = extract_surface(
+        restrict_to_mask(phantom.ct, select_labels(labels, c.region.first, c.region.last), c.iso), c.iso, options);
     ASSERT_GT(direct.face_count(), 1000) << int(c.region.first) << "-" << int(c.region.last);
     EXPECT_EQ(direct.faces, copied.faces);
     EXPECT_EQ(direct.vertices, copied.vertices);

@@ -13,11 +13,11 @@ inline double synthetic_head_hu(const Eigen::Vector3d& p) {
   const Eigen::Vector3d semi(60, 72, 84);
   const double r = p.cwiseQuotient(semi).norm();  // 1 on the skin
   if (r > 1) return -1000;
-  if ((p - Eigen::Vector3d(-22, -30, -12)).norm() < 12) return -900;  // air pocket
+  if ((p - Eigen::Vector3d(-22, -30, -12)).norm() < 12) return -900;                                // air pocket
   if (Eigen::Vector2d(p.y() + 45, p.z() + 30).norm() < 7 && std::abs(p.x() - 8) < 30) return 1600;  // rod
-  if ((p - Eigen::Vector3d(25, -20, 35)).norm() < 14) return 250;  // lump
-  if (r > 0.82 && r < 0.92) return 900;                             // bone shell
-  return 20 + 0.4 * p.z() + 0.2 * p.x();                            // tissue with a gradient
+  if ((p - Eigen::Vector3d(25, -20, 35)).norm() < 14) return 250;                                   // lump
+  if (r > 0.82 && r < 0.92) return 900;                                                             // bone shell
+  return 20 + 0.4 * p.z() + 0.2 * p.x();  // tissue with a gradient
 }
 
 inline Volume synthetic_head(const Eigen::Vector3i& size = {72, 84, 96}, double spacing = 2) {

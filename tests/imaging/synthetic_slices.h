@@ -38,7 +38,8 @@ inline DicomSlice make_slice(const std::string& name, const Eigen::Vector3d& pos
 }
 
 // n slices at the given positions along the normal of `axes` (third column), origin `start`.
-inline std::vector<DicomSlice> make_stack(const std::vector<double>& along, const Eigen::Matrix3d& axes = Eigen::Matrix3d::Identity(),
+inline std::vector<DicomSlice> make_stack(const std::vector<double>& along,
+                                          const Eigen::Matrix3d& axes = Eigen::Matrix3d::Identity(),
                                           const Eigen::Vector3d& start = {10, -20, 30}) {
   std::vector<DicomSlice> slices;
   for (size_t k = 0; k < along.size(); ++k)
@@ -48,7 +49,8 @@ inline std::vector<DicomSlice> make_stack(const std::vector<double>& along, cons
 
 inline Eigen::Matrix3d oblique_axes() {
   return (Eigen::AngleAxisd(0.35, Eigen::Vector3d(1, 2, 3).normalized()) *
-          Eigen::AngleAxisd(-0.6, Eigen::Vector3d::UnitX())).toRotationMatrix();
+          Eigen::AngleAxisd(-0.6, Eigen::Vector3d::UnitX()))
+      .toRotationMatrix();
 }
 
 }  // namespace maxillo::testing

@@ -81,12 +81,13 @@ TEST(VolumeAssembly, UnevenSpacingIsResampledLinearly) {
   // 1 mm and 1.25 mm gaps mixed; HU grows linearly along the normal, so interpolation is exact.
   const std::vector<double> along = {0, 1, 2, 3.25, 4.5, 5.75, 6.75, 7.75};
   auto slices = make_stack(along);
-  for (size_t k = 0; k < along.size(); ++k) std::fill(slices[k].hu.begin(), slices[k].hu.end(), int16_t(100 * along[k]));
+  for (size_t k = 0; k < along.size(); ++k)
+    std::fill(slices[k].hu.begin(), slices[k].hu.end(), int16_t(100 * along[k]));
   AssemblyReport report;
   Volume v = assemble_volume(slices, &report);
   EXPECT_EQ(report.spacing, SliceSpacing::Resampled);
   EXPECT_DOUBLE_EQ(v.geometry.spacing.z(), 1.0);  // the median gap
-  ASSERT_EQ(v.geometry.size.z(), 8);             // 0, 1, ..., 7 mm
+  ASSERT_EQ(v.geometry.size.z(), 8);              // 0, 1, ..., 7 mm
   for (int k = 0; k < 8; ++k) EXPECT_EQ(v.at(2, 3, k), 100 * k) << "k = " << k;
 }
 

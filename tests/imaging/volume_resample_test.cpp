@@ -103,7 +103,8 @@ TEST(VolumeResample, LabelsFollowAQuarterTurnExactly) {
   shift.translation() = Eigen::Vector3d(3, 0, 0);
   const LabelVolume shifted = resample_rigid(source, shift, source.geometry);
   EXPECT_EQ(shifted.labels[size_t(source.geometry.index(2, 5, 1))], 0);
-  EXPECT_EQ(shifted.labels[size_t(source.geometry.index(7, 5, 1))], source.labels[size_t(source.geometry.index(4, 5, 1))]);
+  EXPECT_EQ(shifted.labels[size_t(source.geometry.index(7, 5, 1))],
+            source.labels[size_t(source.geometry.index(4, 5, 1))]);
 }
 
 }  // namespace

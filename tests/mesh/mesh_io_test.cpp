@@ -16,8 +16,9 @@ namespace {
 
 TriangleMesh sample_mesh() {
   // A sphere placed at realistic LPS coordinates (far from 0), a few thousand triangles.
-  return extract_surface(testing::sphere_volume(24, {11.5, 11.5, 11.5}, 8, Eigen::Matrix3d::Identity(), {-90.25, 120.5, -310}),
-                         0, {.smoothing_iterations = 5});
+  return extract_surface(
+      testing::sphere_volume(24, {11.5, 11.5, 11.5}, 8, Eigen::Matrix3d::Identity(), {-90.25, 120.5, -310}), 0,
+      {.smoothing_iterations = 5});
 }
 
 class MeshRoundTrip : public ::testing::TestWithParam<const char*> {};

@@ -62,7 +62,8 @@ double signed_area_xy(const std::vector<Eigen::Vector3d>& loop) {
 TEST(PlaneSection, SphereCutOffCentreIsOneCircleOfTheRightRadius) {
   const Eigen::Vector3d centre(10, -5, 3);
   const double radius = 20, height = 12;  // plane z = centre.z + 12: circle radius 16
-  const auto lines = plane_section(sphere(radius, centre), centre + Eigen::Vector3d(0, 0, height), Eigen::Vector3d(0, 0, 2));
+  const auto lines =
+      plane_section(sphere(radius, centre), centre + Eigen::Vector3d(0, 0, height), Eigen::Vector3d(0, 0, 2));
   ASSERT_EQ(lines.size(), 1u);
   const auto& loop = lines[0];
   ASSERT_GT(loop.size(), 50u);
@@ -73,7 +74,8 @@ TEST(PlaneSection, SphereCutOffCentreIsOneCircleOfTheRightRadius) {
     EXPECT_NEAR((p - centre).head<2>().norm(), circle_radius, 0.05);
   }
   EXPECT_NEAR(length(loop), 2 * M_PI * circle_radius, 0.01 * 2 * M_PI * circle_radius);
-  EXPECT_NEAR(signed_area_xy(loop) - 0, M_PI * circle_radius * circle_radius, 0.02 * M_PI * circle_radius * circle_radius)
+  EXPECT_NEAR(signed_area_xy(loop) - 0, M_PI * circle_radius * circle_radius,
+              0.02 * M_PI * circle_radius * circle_radius)
       << "counter-clockwise seen from +z";
 }
 

@@ -70,7 +70,8 @@ PreviousPath previous_surface(const Volume& ct, const LabelVolume& labels, Label
     changes += split_pinched_vertices(mesh);
     changes += close_small_holes(mesh);
   }
-  if (changes > 0) mesh = keep_largest_components(mesh, options.keep_largest_components, options.min_component_fraction);
+  if (changes > 0)
+    mesh = keep_largest_components(mesh, options.keep_largest_components, options.min_component_fraction);
   orient_outward(mesh);
   path.result = std::move(mesh);
   return path;
@@ -133,7 +134,8 @@ void expect_no_worse(const TriangleMesh& now, const PreviousPath& previous, cons
   EXPECT_GE(now.face_count(), int64_t(0.9 * double(options.target_triangles))) << what << ": the budget is used";
   EXPECT_TRUE(is_watertight(now)) << what;
   EXPECT_EQ(connected_components(now).face_counts.size(), connected_components(before).face_counts.size()) << what;
-  EXPECT_EQ(euler_characteristic(now), euler_characteristic(previous.undecimated)) << what << ": the iso-surface's topology";
+  EXPECT_EQ(euler_characteristic(now), euler_characteristic(previous.undecimated))
+      << what << ": the iso-surface's topology";
   EXPECT_NEAR(signed_volume(now), signed_volume(before), 0.01 * signed_volume(before)) << what;
 
   const auto forth = validation::distance_statistics(validation::signed_surface_distances(now, before));
@@ -175,7 +177,8 @@ TEST(PreviousSurfacePath, PhantomSurfacesAreNoWorse) {
 TEST(PreviousSurfacePath, CadaverSurfacesAreNoWorse) {
   const auto slices = std::filesystem::path(MAXILLO_SHARED_DATA) / "cthead-stanford" / "slices";
   if (!std::filesystem::exists(slices / "CThead.113")) GTEST_SKIP() << "real data absent: " << slices;
-  const auto header = std::filesystem::temp_directory_path() / ("cthead-previous-path-" + std::to_string(getpid()) + ".mhd");
+  const auto header =
+      std::filesystem::temp_directory_path() / ("cthead-previous-path-" + std::to_string(getpid()) + ".mhd");
   std::ofstream(header) << "ObjectType = Image\nNDims = 3\nDimSize = 256 256 113\nElementType = MET_USHORT\n"
                            "ElementSpacing = 1.0 1.0 2.0\nElementByteOrderMSB = True\nOffset = 0 0 0\n"
                            "ElementDataFile = "

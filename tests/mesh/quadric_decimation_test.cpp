@@ -30,7 +30,8 @@ TriangleMesh parametric_mesh(int rows, int cols, bool wrap_u, bool wrap_v, Surfa
   int f = 0;
   for (int j = 0; j < rows; ++j)
     for (int i = 0; i < cols; ++i) {
-      const int a = j * nu + i, b = j * nu + (i + 1) % nu, c = ((j + 1) % nv) * nu + i, d = ((j + 1) % nv) * nu + (i + 1) % nu;
+      const int a = j * nu + i, b = j * nu + (i + 1) % nu, c = ((j + 1) % nv) * nu + i,
+                d = ((j + 1) % nv) * nu + (i + 1) % nu;
       m.faces.row(f++) << a, b, d;
       m.faces.row(f++) << a, d, c;
     }
@@ -71,7 +72,8 @@ TriangleMesh fine_box(int n) {
     box.vertices.resize(Eigen::Index(points.size()), 3);
     for (size_t v = 0; v < points.size(); ++v) box.vertices.row(Eigen::Index(v)) = points[v].transpose();
   }
-  for (Eigen::Index v = 0; v < box.vertex_count(); ++v) box.vertices.row(v).array() *= Eigen::RowVector3d(2, 3, 4).array();
+  for (Eigen::Index v = 0; v < box.vertex_count(); ++v)
+    box.vertices.row(v).array() *= Eigen::RowVector3d(2, 3, 4).array();
   return box;
 }
 

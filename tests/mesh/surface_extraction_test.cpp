@@ -60,15 +60,16 @@ TEST(SurfaceExtraction, KeepsTheLargestComponentAndDropsASmallBlob) {
   Volume v = testing::sphere_volume(48, {20, 20, 20}, kRadius);
   Volume blob = testing::sphere_volume(48, {41, 41, 41}, 3);
   for (size_t n = 0; n < v.hu.size(); ++n) v.hu[n] = std::max(v.hu[n], blob.hu[n]);
-  EXPECT_EQ(connected_components(extract_surface(v, 0, {.keep_largest_components = 0, .min_component_fraction = 0,
-                                                        .smoothing_iterations = 0}))
-                .face_counts.size(),
-            2u);
+  EXPECT_EQ(
+      connected_components(
+          extract_surface(v, 0, {.keep_largest_components = 0, .min_component_fraction = 0, .smoothing_iterations = 0}))
+          .face_counts.size(),
+      2u);
   TriangleMesh largest = extract_surface(v, 0, {.keep_largest_components = 1, .smoothing_iterations = 0});
   expect_sphere(largest, kRadius, 0.01);
   // Keeping "all" components still drops pieces under 1% of the largest by default.
-  TriangleMesh filtered = extract_surface(v, 0, {.keep_largest_components = 0, .min_component_fraction = 0.1,
-                                                 .smoothing_iterations = 0});
+  TriangleMesh filtered =
+      extract_surface(v, 0, {.keep_largest_components = 0, .min_component_fraction = 0.1, .smoothing_iterations = 0});
   EXPECT_EQ(connected_components(filtered).face_counts.size(), 1u);
 }
 

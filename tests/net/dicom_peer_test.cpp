@@ -26,10 +26,10 @@ TEST(DicomPeer, ParsesAeHostAndPort) {
 }
 
 TEST(DicomPeer, RefusesWhatIsNotAPeer) {
-  for (const char* text : {"ORTHANC", "ORTHANC@127.0.0.1", "127.0.0.1:4242", "@127.0.0.1:4242", "ORTHANC@:4242",
-                           "ORTHANC@127.0.0.1:0", "ORTHANC@127.0.0.1:65536", "ORTHANC@127.0.0.1:42x",
-                           "SEVENTEEN_CHARS_X@127.0.0.1:4242", "BACK\\SLASH@127.0.0.1:4242", "    @127.0.0.1:4242",
-                           "ORTHANC@host/name:4242"})
+  for (const char* text :
+       {"ORTHANC", "ORTHANC@127.0.0.1", "127.0.0.1:4242", "@127.0.0.1:4242", "ORTHANC@:4242", "ORTHANC@127.0.0.1:0",
+        "ORTHANC@127.0.0.1:65536", "ORTHANC@127.0.0.1:42x", "SEVENTEEN_CHARS_X@127.0.0.1:4242",
+        "BACK\\SLASH@127.0.0.1:4242", "    @127.0.0.1:4242", "ORTHANC@host/name:4242"})
     EXPECT_EQ(error_of([&] { parse_peer(text); }), ErrorCode::kUsage) << text;
 }
 

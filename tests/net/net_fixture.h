@@ -46,7 +46,8 @@ inline Volume slices(int count, int16_t base) {
 }
 
 // A CT series of such slices for a patient, as DICOM files in `folder`.
-inline WrittenSeries write_series(const std::filesystem::path& folder, const std::string& patient_id, int count, int16_t base) {
+inline WrittenSeries write_series(const std::filesystem::path& folder, const std::string& patient_id, int count,
+                                  int16_t base) {
   SeriesMetadata metadata;
   metadata.patient_id = patient_id;
   metadata.patient_name = "Network^Test";

@@ -50,7 +50,8 @@ class OrthancPeer : public ::testing::Test {
     server_ = testing::start_maxillo({"--archive", archive().string(), "serve", "--aet", "MAXILLO", "--port",
                                       std::to_string(serve_port_), "--allow", "ORTHANC@127.0.0.1"},
                                      folder_ / "serve.out", folder_ / "serve.err");
-    for (int attempt = 0; attempt < 100 && !serving(); ++attempt) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    for (int attempt = 0; attempt < 100 && !serving(); ++attempt)
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
     ASSERT_TRUE(serving()) << testing::slurp(folder_ / "serve.err");
   }
 
@@ -88,7 +89,8 @@ TEST_F(OrthancPeer, SendReceiveFindRetrieveAndTheReportBack) {
   // maxillo -> Orthanc: an archived series.
   const auto ours = testing::write_series(folder_ / "ours", "NETPACS", 6, 3);
   const auto source = folder_ / "source";
-  Archive::open(source, OpenMode::CreateIfMissing).import_paths({folder_ / "ours"}, {.progress = ProgressDisplay::Never});
+  Archive::open(source, OpenMode::CreateIfMissing)
+      .import_paths({folder_ / "ours"}, {.progress = ProgressDisplay::Never});
   const auto sent = testing::run_maxillo(
       {"--archive", source.string(), "send", ours.series_instance_uid, "--to", orthanc_peer()}, folder_.path());
   ASSERT_EQ(sent.exit_code, 0) << sent.err;
@@ -109,12 +111,13 @@ TEST_F(OrthancPeer, SendReceiveFindRetrieveAndTheReportBack) {
     const auto files = received.series_instance_files(received.resolve_series(theirs.series_instance_uid));
     ASSERT_EQ(files.size(), 4u);
     for (size_t i = 0; i < files.size(); ++i)
-      EXPECT_EQ(testing::pixel_data(files[i]), testing::pixel_data(theirs.files[i])) << "byte-identical pixel data " << i;
+      EXPECT_EQ(testing::pixel_data(files[i]), testing::pixel_data(theirs.files[i]))
+          << "byte-identical pixel data " << i;
   }
 
   // Query and retrieve: the study Orthanc holds, found by Patient ID, fetched by C-GET into a new archive.
-  const auto found_json = testing::run_maxillo({"--json", "find", "--from", orthanc_peer(), "--patient-id", "NETPACS2"},
-                                               folder_.path());
+  const auto found_json =
+      testing::run_maxillo({"--json", "find", "--from", orthanc_peer(), "--patient-id", "NETPACS2"}, folder_.path());
   ASSERT_EQ(found_json.exit_code, 0) << found_json.err;
   const Json studies = Json::parse(found_json.out);
   ASSERT_EQ(studies.size(), 1u) << found_json.out;
@@ -128,7 +131,8 @@ TEST_F(OrthancPeer, SendReceiveFindRetrieveAndTheReportBack) {
     Archive archive = Archive::open(fetched);
     const auto files = archive.series_instance_files(archive.resolve_series(theirs.series_instance_uid));
     ASSERT_EQ(files.size(), 4u);
-    for (size_t i = 0; i < files.size(); ++i) EXPECT_EQ(testing::pixel_data(files[i]), testing::pixel_data(theirs.files[i]));
+    for (size_t i = 0; i < files.size(); ++i)
+      EXPECT_EQ(testing::pixel_data(files[i]), testing::pixel_data(theirs.files[i]));
     EXPECT_TRUE(archive.verify(RepairMode::ReportOnly, ProgressDisplay::Never).consistent());
   }
   // The same study by C-MOVE, found by Patient ID: Orthanc delivers to MAXILLO at serve_port_
@@ -143,7 +147,8 @@ TEST_F(OrthancPeer, SendReceiveFindRetrieveAndTheReportBack) {
     Archive archive = Archive::open(moved);
     const auto files = archive.series_instance_files(archive.resolve_series(theirs.series_instance_uid));
     ASSERT_EQ(files.size(), 4u);
-    for (size_t i = 0; i < files.size(); ++i) EXPECT_EQ(testing::pixel_data(files[i]), testing::pixel_data(theirs.files[i]));
+    for (size_t i = 0; i < files.size(); ++i)
+      EXPECT_EQ(testing::pixel_data(files[i]), testing::pixel_data(theirs.files[i]));
   }
 
   // The report back: an Encapsulated PDF in the study of the series sent first.
@@ -153,17 +158,20 @@ TEST_F(OrthancPeer, SendReceiveFindRetrieveAndTheReportBack) {
   const std::string pdf = "%PDF-1.4\n% a stand-in for the consultation report\n%%EOF\n";
   const auto report_file = folder_ / "report.dcm";
   write_encapsulated_pdf(std::as_bytes(std::span(pdf)),
-                         EncapsulatedReport{contents.patient, contents.studies.front(), "Consultation report"}, report_file);
+                         EncapsulatedReport{contents.patient, contents.studies.front(), "Consultation report"},
+                         report_file);
   ASSERT_TRUE(archive.import_paths({report_file}, {.progress = ProgressDisplay::Never}).all_ok());
   for (const auto& series : archive.case_contents(case_id).series)
     if (series.series.modality == "DOC") archive.set_series_role(case_id, series.series.id, "report");
   const auto report = testing::run_maxillo(
-      {"--archive", source.string(), "send", "--report", std::to_string(case_id), "--to", orthanc_peer()}, folder_.path());
+      {"--archive", source.string(), "send", "--report", std::to_string(case_id), "--to", orthanc_peer()},
+      folder_.path());
   ASSERT_EQ(report.exit_code, 0) << report.err;
-  const Json found = rest_json(
-      "POST", "/tools/find",
-      "-d " + quote(Json{{"Level", "Series"}, {"Query", {{"StudyInstanceUID", ours.study_instance_uid}, {"Modality", "DOC"}}}}
-                        .dump()));
+  const Json found =
+      rest_json("POST", "/tools/find",
+                "-d " + quote(Json{{"Level", "Series"},
+                                   {"Query", {{"StudyInstanceUID", ours.study_instance_uid}, {"Modality", "DOC"}}}}
+                                  .dump()));
   EXPECT_EQ(found.size(), 1u) << "the report is in the study it belongs to";
 }
 

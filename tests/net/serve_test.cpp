@@ -50,9 +50,21 @@ class Serve : public ::testing::Test {
     if (!testing::tool_available("echoscu") || !testing::tool_available("storescu"))
       GTEST_SKIP() << "DCMTK's echoscu/storescu are not installed (scripts/setup installs the dcmtk package)";
     port_ = free_loopback_port();
-    std::vector<std::string> arguments = {"--archive", archive().string(), "serve", "--aet", "MAXILLO", "--port",
-                                          std::to_string(port_), "--allow", "STORESCU", "--allow", "ECHOSCU@127.0.0.1",
-                                          "--max-associations", "6", "--timeout", "10"};
+    std::vector<std::string> arguments = {"--archive",
+                                          archive().string(),
+                                          "serve",
+                                          "--aet",
+                                          "MAXILLO",
+                                          "--port",
+                                          std::to_string(port_),
+                                          "--allow",
+                                          "STORESCU",
+                                          "--allow",
+                                          "ECHOSCU@127.0.0.1",
+                                          "--max-associations",
+                                          "6",
+                                          "--timeout",
+                                          "10"};
     for (auto& extra : extra_arguments()) arguments.push_back(std::move(extra));
     server_ = testing::start_maxillo(arguments, folder_ / "serve.out", folder_ / "serve.err");
     ASSERT_GT(server_, 0);
@@ -118,7 +130,8 @@ TEST_F(Serve, AnswersAnEchoFromAnAllowedPeerAndRefusesAStranger) {
 TEST_F(Serve, ArchivesWhatFourAssociationsPushOnceAndByteExact) {
   std::vector<WrittenSeries> series;
   for (int s = 0; s < 4; ++s)
-    series.push_back(write_series(folder_ / ("series" + std::to_string(s)), "NET" + std::to_string(s % 2), 250, int16_t(s)));
+    series.push_back(
+        write_series(folder_ / ("series" + std::to_string(s)), "NET" + std::to_string(s % 2), 250, int16_t(s)));
   // Four senders at once, each pushing two series, so that every instance arrives twice.
   std::vector<std::thread> senders;
   std::vector<testing::CommandResult> results(4);
@@ -153,7 +166,8 @@ TEST_F(Serve, ArchivesWhatFourAssociationsPushOnceAndByteExact) {
 TEST_F(Serve, AnswersBadInstancesWithAFailureAndGoesOn) {
   const auto good = write_series(folder_ / "good", "NETBAD", 3, 0);
   const auto no_study = folder_ / "no-study.dcm";
-  edited_copy(good.files[0], no_study, [](DcmFileFormat& f) { f.getDataset()->findAndDeleteElement(DCM_StudyInstanceUID); });
+  edited_copy(good.files[0], no_study,
+              [](DcmFileFormat& f) { f.getDataset()->findAndDeleteElement(DCM_StudyInstanceUID); });
   const auto rt_plan = folder_ / "rt-plan.dcm";
   edited_copy(good.files[1], rt_plan, [](DcmFileFormat& f) {
     f.getDataset()->putAndInsertString(DCM_SOPClassUID, UID_RTPlanStorage);
@@ -190,8 +204,8 @@ TEST_F(Serve, LosesNothingAcknowledgedAndKeepsNothingHalfReceived) {
   large.geometry.spacing = {0.1, 0.1, 1.0};
   large.hu.assign(size_t(large.geometry.voxel_count()), 40);
   const auto huge = write_ct_series(large, {}, folder_ / "huge");
-  const pid_t sender = testing::start_process({testing::tool_path("storescu"), "-aet", "STORESCU", "-aec", "MAXILLO", "127.0.0.1",
-                                               std::to_string(port_), huge.files[0].string()},
+  const pid_t sender = testing::start_process({testing::tool_path("storescu"), "-aet", "STORESCU", "-aec", "MAXILLO",
+                                               "127.0.0.1", std::to_string(port_), huge.files[0].string()},
                                               folder_ / "sender.out", folder_ / "sender.err");
   bool receiving = false;
   for (int waited = 0; waited < 20000 && !receiving; ++waited) {
@@ -224,10 +238,12 @@ TEST_F(Serve, LosesNothingAcknowledgedAndKeepsNothingHalfReceived) {
 TEST_F(Serve, ReceivesWhatMaxilloSendsOriginalAndDeidentified) {
   const auto written = write_series(folder_ / "source-files", "NETSEND", 12, 5);
   const auto source = folder_ / "source";
-  Archive::open(source, OpenMode::CreateIfMissing).import_paths({folder_ / "source-files"}, {.progress = ProgressDisplay::Never});
+  Archive::open(source, OpenMode::CreateIfMissing)
+      .import_paths({folder_ / "source-files"}, {.progress = ProgressDisplay::Never});
   const std::string peer = "MAXILLO@127.0.0.1:" + std::to_string(port_);
   const auto original = testing::run_maxillo(
-      {"--archive", source.string(), "send", written.series_instance_uid, "--to", peer, "--aet", "STORESCU"}, folder_.path());
+      {"--archive", source.string(), "send", written.series_instance_uid, "--to", peer, "--aet", "STORESCU"},
+      folder_.path());
   EXPECT_EQ(original.exit_code, 0) << original.err;
   EXPECT_NE(original.out.find("sent 12 instances"), std::string::npos) << original.out;
   // The patient's report, filed in the study as an Encapsulated PDF, names the patient inside
@@ -238,11 +254,13 @@ TEST_F(Serve, ReceivesWhatMaxilloSendsOriginalAndDeidentified) {
     const std::string pdf = "%PDF-1.4\n% report\n%%EOF\n";
     std::filesystem::create_directories(folder_ / "report");
     write_encapsulated_pdf(std::as_bytes(std::span(pdf)),
-                           EncapsulatedReport{contents.patient, contents.studies.front(), "Report"}, folder_ / "report" / "r.dcm");
+                           EncapsulatedReport{contents.patient, contents.studies.front(), "Report"},
+                           folder_ / "report" / "r.dcm");
     ASSERT_TRUE(filed.import_paths({folder_ / "report"}, {.progress = ProgressDisplay::Never}).all_ok());
   }
   const auto anonymous = testing::run_maxillo(
-      {"--archive", source.string(), "send", "NETSEND", "--deidentify", "--to", peer, "--aet", "STORESCU"}, folder_.path());
+      {"--archive", source.string(), "send", "NETSEND", "--deidentify", "--to", peer, "--aet", "STORESCU"},
+      folder_.path());
   EXPECT_EQ(anonymous.exit_code, exit_code_for(ErrorCode::kBatchPartlyFailed)) << anonymous.err;
   EXPECT_NE(anonymous.out.find("sent 12 instances (de-identified)"), std::string::npos) << anonymous.out;
   EXPECT_NE(anonymous.out.find("1 series withheld"), std::string::npos) << anonymous.out;
@@ -286,13 +304,14 @@ TEST_F(Serve, ASilentConnectionDoesNotHoldUpOtherPeers) {
 TEST_F(Serve, RetrieveNamesTheMissingServiceAndATakenMovePort) {
   const std::string peer = "MAXILLO@127.0.0.1:" + std::to_string(port_);
   const auto by_get = testing::run_maxillo(
-      {"--archive", (folder_ / "fetched").string(), "retrieve", "--from", peer, "--aet", "STORESCU", "1.2.3.4"}, folder_.path());
+      {"--archive", (folder_ / "fetched").string(), "retrieve", "--from", peer, "--aet", "STORESCU", "1.2.3.4"},
+      folder_.path());
   EXPECT_EQ(by_get.exit_code, exit_code_for(ErrorCode::kNetwork));
   EXPECT_NE(by_get.err.find("does not offer C-GET"), std::string::npos) << by_get.err;
-  const auto by_move = testing::run_maxillo({"--archive", (folder_ / "fetched").string(), "retrieve", "--from", peer,
-                                             "--aet", "STORESCU", "--move-port", std::to_string(free_loopback_port()),
-                                             "1.2.3.4"},
-                                            folder_.path());
+  const auto by_move =
+      testing::run_maxillo({"--archive", (folder_ / "fetched").string(), "retrieve", "--from", peer, "--aet",
+                            "STORESCU", "--move-port", std::to_string(free_loopback_port()), "1.2.3.4"},
+                           folder_.path());
   EXPECT_EQ(by_move.exit_code, exit_code_for(ErrorCode::kNetwork));
   EXPECT_NE(by_move.err.find("does not offer C-MOVE"), std::string::npos) << by_move.err;
   const auto taken = testing::run_maxillo({"--archive", (folder_ / "fetched").string(), "retrieve", "--from", peer,
@@ -369,7 +388,8 @@ TEST(ServeStableAcrossRestarts, AnActionOwedBeforeAKillRunsAfterTheRestart) {
          "echo \"$MAXILLO_STUDY_UID\" >> " + quote(actions)},
         folder / "serve.out", folder / "serve.err");
     for (int attempt = 0; attempt < 200; ++attempt) {
-      if (run_command("echoscu -aet ECHOSCU -aec MAXILLO 127.0.0.1 " + std::to_string(port) + " 2>&1").exit_code == 0) break;
+      if (run_command("echoscu -aet ECHOSCU -aec MAXILLO 127.0.0.1 " + std::to_string(port) + " 2>&1").exit_code == 0)
+        break;
       std::this_thread::sleep_for(std::chrono::milliseconds(100));
     }
     return pid;
@@ -391,7 +411,8 @@ TEST(ServeStableAcrossRestarts, AnActionOwedBeforeAKillRunsAfterTheRestart) {
   EXPECT_TRUE(lines().empty());
 
   server = start(1);
-  for (int waited = 0; waited < 100 && lines().empty(); ++waited) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  for (int waited = 0; waited < 100 && lines().empty(); ++waited)
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
   EXPECT_EQ(testing::stop_process(server), 0);
   ASSERT_EQ(lines().size(), 1u);
   EXPECT_EQ(lines()[0], series.study_instance_uid);

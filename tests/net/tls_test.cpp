@@ -40,8 +40,10 @@ class TestCertificates {
             name + ".pem");
   }
   void signed_by_ca(const std::string& name) const {
-    openssl("req -newkey rsa:2048 -nodes -sha256 -subj /CN=" + name + " -keyout " + name + ".key -out " + name + ".csr");
-    openssl("x509 -req -sha256 -days 2 -in " + name + ".csr -CA ca.pem -CAkey ca.key -CAcreateserial -out " + name + ".pem");
+    openssl("req -newkey rsa:2048 -nodes -sha256 -subj /CN=" + name + " -keyout " + name + ".key -out " + name +
+            ".csr");
+    openssl("x509 -req -sha256 -days 2 -in " + name + ".csr -CA ca.pem -CAkey ca.key -CAcreateserial -out " + name +
+            ".pem");
   }
   std::filesystem::path folder_;
 };
@@ -49,16 +51,17 @@ class TestCertificates {
 class ServeTls : public ::testing::Test {
  protected:
   void SetUp() override {
-    if (!testing::tool_available("echoscu") || !testing::tool_available("storescu") || !testing::tool_available("openssl"))
+    if (!testing::tool_available("echoscu") || !testing::tool_available("storescu") ||
+        !testing::tool_available("openssl"))
       GTEST_SKIP() << "DCMTK's echoscu/storescu or openssl are not installed (scripts/setup installs them)";
     certificates_.emplace(folder_ / "certificates");
     if (HasFatalFailure()) return;
     port_ = testing::free_loopback_port();
-    server_ = testing::start_maxillo({"--archive", archive().string(), "serve", "--port", std::to_string(port_),
-                                      "--allow", "STORESCU", "--allow", "ECHOSCU", "--allow", "MAXILLO", "--timeout",
-                                      "10", "--tls-cert", cert("server").string(), "--tls-key", key("server").string(),
-                                      "--tls-trust", cert("ca").string()},
-                                     folder_ / "serve.out", folder_ / "serve.err");
+    server_ = testing::start_maxillo(
+        {"--archive", archive().string(), "serve", "--port", std::to_string(port_), "--allow", "STORESCU", "--allow",
+         "ECHOSCU", "--allow", "MAXILLO", "--timeout", "10", "--tls-cert", cert("server").string(), "--tls-key",
+         key("server").string(), "--tls-trust", cert("ca").string()},
+        folder_ / "serve.out", folder_ / "serve.err");
     ASSERT_GT(server_, 0);
     for (int attempt = 0; attempt < 200 && echo_with("client").exit_code != 0; ++attempt)
       std::this_thread::sleep_for(std::chrono::milliseconds(100));
@@ -99,8 +102,10 @@ class ServeTls : public ::testing::Test {
 
 TEST_F(ServeTls, ArchivesFromACallerTheCaSignedAndRefusesEveryOtherCaller) {
   const auto series = testing::write_series(folder_ / "series", "TLS1", 5, 0);
-  const std::string signed_client = "+tls " + quote(key("client")) + " " + quote(cert("client")) + " +cf " + quote(cert("ca"));
-  const std::string stranger = "+tls " + quote(key("stranger")) + " " + quote(cert("stranger")) + " +cf " + quote(cert("ca"));
+  const std::string signed_client =
+      "+tls " + quote(key("client")) + " " + quote(cert("client")) + " +cf " + quote(cert("ca"));
+  const std::string stranger =
+      "+tls " + quote(key("stranger")) + " " + quote(cert("stranger")) + " +cf " + quote(cert("ca"));
   const auto plain = store("", {series.files[0]});
   EXPECT_NE(plain.exit_code, 0) << plain.output;
   const auto unknown = store(stranger, {series.files[0]});
@@ -120,19 +125,24 @@ TEST_F(ServeTls, ArchivesFromACallerTheCaSignedAndRefusesEveryOtherCaller) {
 TEST_F(ServeTls, MaxilloSendsAndEchoesOverTlsAndVerifiesTheServer) {
   const auto series = testing::write_series(folder_ / "series", "TLS2", 4, 100);
   const std::string peer = "MAXILLO@127.0.0.1:" + std::to_string(port_);
-  const std::vector<std::string> identity = {"--tls-cert", cert("client").string(), "--tls-key", key("client").string()};
+  const std::vector<std::string> identity = {"--tls-cert", cert("client").string(), "--tls-key",
+                                             key("client").string()};
   auto with = [](std::vector<std::string> command, const std::vector<std::string>& more) {
     command.insert(command.end(), more.begin(), more.end());
     return command;
   };
   const auto source = folder_ / "source";
-  Archive::open(source, OpenMode::CreateIfMissing).import_paths({folder_ / "series"}, {.progress = ProgressDisplay::Never});
-  const std::vector<std::string> send = {"--archive", source.string(), "send", series.series_instance_uid, "--to", peer};
-  const auto sent = testing::run_maxillo(with(with(send, identity), {"--tls-trust", cert("ca").string()}), folder_.path());
+  Archive::open(source, OpenMode::CreateIfMissing)
+      .import_paths({folder_ / "series"}, {.progress = ProgressDisplay::Never});
+  const std::vector<std::string> send = {"--archive", source.string(), "send", series.series_instance_uid, "--to",
+                                         peer};
+  const auto sent =
+      testing::run_maxillo(with(with(send, identity), {"--tls-trust", cert("ca").string()}), folder_.path());
   EXPECT_EQ(sent.exit_code, 0) << sent.err;
   EXPECT_EQ(archived_instances(), 4u);
 
-  const auto echoed = testing::run_maxillo(with({"echo", peer, "--tls-trust", cert("ca").string()}, identity), folder_.path());
+  const auto echoed =
+      testing::run_maxillo(with({"echo", peer, "--tls-trust", cert("ca").string()}, identity), folder_.path());
   EXPECT_EQ(echoed.exit_code, 0) << echoed.err;
   // A server whose certificate the stranger CA did not sign is not trusted.
   const auto untrusted =
@@ -148,10 +158,10 @@ TEST(ServeTlsSetUp, AKeyThatIsNotTheCertificatesIsRefusedByName) {
   if (!testing::tool_available("openssl")) GTEST_SKIP() << "openssl is not installed";
   TemporaryFolder folder("serve-tls-key");
   const TestCertificates certificates(folder / "certificates");
-  const auto result = testing::run_maxillo({"--archive", (folder / "archive").string(), "serve", "--port", "4",
-                                            "--tls-cert", certificates.pem("server").string(), "--tls-key",
-                                            certificates.key("client").string()},
-                                           folder.path());
+  const auto result =
+      testing::run_maxillo({"--archive", (folder / "archive").string(), "serve", "--port", "4", "--tls-cert",
+                            certificates.pem("server").string(), "--tls-key", certificates.key("client").string()},
+                           folder.path());
   EXPECT_EQ(result.exit_code, exit_code_for(ErrorCode::kBadValue)) << result.err;
   EXPECT_NE(result.err.find("does not belong to the certificate"), std::string::npos) << result.err;
   EXPECT_NE(result.err.find("client.key"), std::string::npos) << result.err;

@@ -55,7 +55,7 @@ TEST(AnatomicalMotion, YawAndRollFollowTheirAxes) {
   EXPECT_NEAR(roll.roll_deg, 1.5, 1e-9);
   EXPECT_NEAR(roll.yaw_deg, 0, 1e-9);
   EXPECT_GT((Eigen::AngleAxisd(1.5 * M_PI / 180, frame.anterior) * frame.left).dot(frame.superior), 0);  // left up
-  EXPECT_GT((Eigen::AngleAxisd(3 * M_PI / 180, frame.superior) * frame.anterior).dot(frame.left), 0);  // front left
+  EXPECT_GT((Eigen::AngleAxisd(3 * M_PI / 180, frame.superior) * frame.anterior).dot(frame.left), 0);    // front left
 }
 
 }  // namespace

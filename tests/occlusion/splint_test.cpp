@@ -50,7 +50,8 @@ struct Arches {
   TriangleMesh lower, upper;
   Arches() {
     for (int t = 0; t < 3; ++t) {
-      const TriangleMesh lo = make_sphere({8.0 * t, 0, -4}, kRadius), up = make_sphere({8.0 * t + 4, 0, upper_z}, kRadius);
+      const TriangleMesh lo = make_sphere({8.0 * t, 0, -4}, kRadius),
+                         up = make_sphere({8.0 * t + 4, 0, upper_z}, kRadius);
       lower = t == 0 ? lo : testing::append(lower, lo);
       upper = t == 0 ? up : testing::append(upper, up);
     }

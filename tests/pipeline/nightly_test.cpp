@@ -70,7 +70,8 @@ TEST(Nightly, TheScanOfEveryCaseGivesEachTheHashOfItsOwnAndFailsAnUnreadableOneA
   const auto before = validation_inputs_hash(archive, damaged, options);
   attach_landmarks(archive, second, {{"S", {0, 0, 1}}, {"N", {0, -70, 10}}}, "test");  // its own, newer landmarks
   // The damaged case's newest landmarks are not a landmark document.
-  archive.add_artefact(NewArtefact{damaged, "landmarks", archive.store_object("{ damaged"), "application/json", "", "{}"});
+  archive.add_artefact(
+      NewArtefact{damaged, "landmarks", archive.store_object("{ damaged"), "application/json", "", "{}"});
 
   const int64_t missing = bare + 100;
   const auto scan = validation_inputs_hashes(archive, {first, second, damaged, bare, missing}, options);

@@ -29,7 +29,8 @@ inline PhantomCase archived_phantom(const std::filesystem::path& folder, double 
 // The archived phantom with a distraction plan (advancement only) stored, loaded as a planned case.
 inline PlannedCase planned_phantom(const std::filesystem::path& folder, double spacing_mm, double advancement_mm) {
   auto [archive, case_id] = archived_phantom(folder, spacing_mm);
-  store_plan(archive, case_id, planning::distraction_plan({.advancement_mm = advancement_mm, .widening_mm = 0}, "test"));
+  store_plan(archive, case_id,
+             planning::distraction_plan({.advancement_mm = advancement_mm, .widening_mm = 0}, "test"));
   return load_planned_case(archive, case_id);
 }
 

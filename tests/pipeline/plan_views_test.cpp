@@ -39,7 +39,8 @@ TEST(PlanViews, ShowTheMovedMaxillaAndTheScrews) {
     EXPECT_GT(signed_volume(s.mesh), 0) << planning::segment_name(s.segment);
   }
 
-  std::vector<SegmentTransform> moves{{planning::Segment::kMaxilla, Eigen::Isometry3d(Eigen::Translation3d(0, -10, 0))}};
+  std::vector<SegmentTransform> moves{
+      {planning::Segment::kMaxilla, Eigen::Isometry3d(Eigen::Translation3d(0, -10, 0))}};
   std::vector<ScrewAxis> screws{{"right", {-22, -58, -18}, {0, 1, 0}, 26}, {"left", {22, -58, -18}, {0, 1, 0}, 26}};
   TemporaryFolder folder("plan-views");
   const std::array views{render::StandardView::Frontal, render::StandardView::Lateral};

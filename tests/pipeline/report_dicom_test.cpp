@@ -25,9 +25,11 @@ TEST(ReportDicom, TheReportIsFiledInTheAnalysedStudyAndComesBackByteForByte) {
   const std::string pdf = "%PDF-1.4\n% the consultation report of Doe^Jane\n%%EOF\n";
   write_file_atomically(folder / "report.pdf", pdf);
 
-  const auto filed = write_report_dicom(archive, case_id, folder / "report.pdf", folder / "report.dcm", StoreInArchive::Yes);
+  const auto filed =
+      write_report_dicom(archive, case_id, folder / "report.pdf", folder / "report.dcm", StoreInArchive::Yes);
   std::this_thread::sleep_for(std::chrono::milliseconds(1100));  // the clock must not change the file
-  const auto again = write_report_dicom(archive, case_id, folder / "report.pdf", folder / "again.dcm", StoreInArchive::Yes);
+  const auto again =
+      write_report_dicom(archive, case_id, folder / "report.pdf", folder / "again.dcm", StoreInArchive::Yes);
   EXPECT_EQ(again.sop_instance_uid, filed.sop_instance_uid);
   EXPECT_EQ(read_file(folder / "again.dcm"), read_file(folder / "report.dcm"));
 
@@ -45,7 +47,10 @@ TEST(ReportDicom, TheReportIsFiledInTheAnalysedStudyAndComesBackByteForByte) {
   const auto exported = archive.export_series(report.series.id, folder / "out");
   ASSERT_EQ(exported.size(), 1u);
   EXPECT_EQ(read_file(exported.front()), read_file(folder / "report.dcm"));
-  ASSERT_EQ(testing::run_command("dcm2pdf " + testing::quote(exported.front()) + " " + testing::quote(folder / "back.pdf")).exit_code, 0);
+  ASSERT_EQ(
+      testing::run_command("dcm2pdf " + testing::quote(exported.front()) + " " + testing::quote(folder / "back.pdf"))
+          .exit_code,
+      0);
   EXPECT_EQ(read_file(folder / "back.pdf"), read_file(folder / "report.pdf"));
   EXPECT_TRUE(archive.verify(RepairMode::ReportOnly, ProgressDisplay::Never).consistent());
 }

@@ -25,12 +25,8 @@ TEST(PlanningFrame, NasionFrameIsSnRotatedSixDegreesDown) {
   // S behind N, SN rising 7 deg anteriorly above the z = 0 Frankfort plane (the phantom's design).
   const double rise = 7 * std::numbers::pi / 180;
   const Vector3d s(0, 0, 20), n = s + 70 * Vector3d(0, -std::cos(rise), std::sin(rise));
-  const LandmarkSet landmarks{{"S", s},
-                              {"N", n},
-                              {"PoR", {-60, 60, 0}},
-                              {"PoL", {60, 60, 0}},
-                              {"OrR", {-33, -10, 0}},
-                              {"OrL", {33, -10, 0}}};
+  const LandmarkSet landmarks{
+      {"S", s}, {"N", n}, {"PoR", {-60, 60, 0}}, {"PoL", {60, 60, 0}}, {"OrR", {-33, -10, 0}}, {"OrL", {33, -10, 0}}};
   const PlanningFrame frame = planning_frame(landmarks);
   EXPECT_EQ(frame.source, "nasion");
   EXPECT_TRUE(frame.origin.isApprox(n));
@@ -60,7 +56,7 @@ TEST(FrameMove, PureTranslationsGiveTheirValues) {
 
 TEST(FrameMove, PureRotationsMoveAPointTheDocumentedWay) {
   const PlanningFrame frame = axes_frame();
-  const Vector3d pivot(0, 40, -20);             // PNS-like
+  const Vector3d pivot(0, 40, -20);                      // PNS-like
   const Vector3d incisor = pivot + Vector3d(0, -50, 0);  // 50 mm in front of it
   FrameMove move;
   move.pitch_deg = 10;  // anterior end up
@@ -85,8 +81,8 @@ TEST(FrameMove, RoundTripsThroughTheTransform) {
   frame.left = tilt * frame.left;
   frame.superior = tilt * frame.superior;
   const Vector3d pivot(3, 40, -25);
-  const FrameMove move{.advancement_mm = 7.5, .vertical_mm = -2.25, .lateral_mm = 1.5,
-                       .pitch_deg = -4, .roll_deg = 2.5, .yaw_deg = 6};
+  const FrameMove move{
+      .advancement_mm = 7.5, .vertical_mm = -2.25, .lateral_mm = 1.5, .pitch_deg = -4, .roll_deg = 2.5, .yaw_deg = 6};
   const FrameMove back = from_transform(frame, to_transform(frame, move, pivot), pivot);
   EXPECT_NEAR(back.advancement_mm, move.advancement_mm, 1e-9);
   EXPECT_NEAR(back.vertical_mm, move.vertical_mm, 1e-9);

@@ -90,8 +90,8 @@ TEST(ForwardSimulation, TenMillimetreAdvancementWithSixMillimetreWideningHitsThe
 }
 
 TEST(ForwardSimulation, CombinedMovesAreRecovered) {
-  const MaxillaryTarget target{.advancement_mm = 9, .vertical_mm = 2, .widening_mm = 4, .midline_shift_mm = -2,
-                               .rotation_deg = -3};
+  const MaxillaryTarget target{
+      .advancement_mm = 9, .vertical_mm = 2, .widening_mm = 4, .midline_shift_mm = -2, .rotation_deg = -3};
   const DistractionVectors v = distraction_vectors(kFrame, target, kRef, kEntryRight, kEntryLeft);
   const ForwardSimulation sim = simulate_distraction(kFrame, target, kRef, v, kPoints);
   EXPECT_LT(sim.max_error_mm, 1e-6);

@@ -17,9 +17,9 @@ TEST(EnclosedAir, FindsSealedCavitiesOnly) {
       for (int j = lo; j <= hi; ++j)
         for (int i = lo; i <= hi; ++i) ct.at(i, j, k) = hu;
   };
-  fill(2, 17, 40);      // a soft-tissue block
-  fill(5, 8, -1000);    // a sealed 4^3 cavity
-  fill(11, 14, -1000);  // another cavity...
+  fill(2, 17, 40);                                          // a soft-tissue block
+  fill(5, 8, -1000);                                        // a sealed 4^3 cavity
+  fill(11, 14, -1000);                                      // another cavity...
   for (int i = 14; i <= 17; ++i) ct.at(i, 12, 12) = -1000;  // ...with a channel to the outside
   LabelVolume tissues;
   tissues.geometry = ct.geometry;

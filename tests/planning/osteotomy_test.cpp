@@ -72,8 +72,8 @@ TEST(Osteotomy, EveryBoneVoxelIsInExactlyOneSegment) {
   for (auto s : result.segments.labels) segmented += s != uint8_t(Segment::kNone);
   for (const auto& s : result.stats) summed += s.voxels;
   EXPECT_EQ(result.input_bone_voxels, bone);
-  EXPECT_EQ(segmented, bone);  // nothing lost, nothing added
-  EXPECT_EQ(summed, bone);     // the per-segment volumes add up
+  EXPECT_EQ(segmented, bone);                                 // nothing lost, nothing added
+  EXPECT_EQ(summed, bone);                                    // the per-segment volumes add up
   EXPECT_EQ(result.stats.size(), size_t(kSegmentCount - 1));  // all six segments exist
 }
 

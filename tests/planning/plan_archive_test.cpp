@@ -51,7 +51,8 @@ TEST(PlanArchive, EverySavedPlanIsANewVersion) {
 TEST(PlanArchive, StoredMovesAreFoundForTheirPlanAndLandmarksOnly) {
   ArchivedCase c;
   const Phantom phantom = make_phantom({.spacing_mm = 2.0, .noise_sigma_hu = 0});
-  const StoredPlan plan = store_plan(c.archive, c.case_id, planning::distraction_plan({.advancement_mm = 8}, "distraction"));
+  const StoredPlan plan =
+      store_plan(c.archive, c.case_id, planning::distraction_plan({.advancement_mm = 8}, "distraction"));
   const planning::PlanResult applied = planning::apply_plan(plan.plan, phantom.labels, phantom.landmarks);
   ASSERT_FALSE(applied.moves.empty());
   EXPECT_FALSE(stored_plan_moves(c.archive, c.case_id, plan.sha256, phantom.landmarks));
@@ -109,9 +110,9 @@ TEST(PlanningSection, ShowsVectorsChecksScheduleAndSimulation) {
 
   const report::Table* schedule = table_with_column(section, "Planned");
   ASSERT_NE(schedule, nullptr);
-  EXPECT_EQ(schedule->rows[0][2], "21.00");   // turns: 20.88 -> 21
-  EXPECT_EQ(schedule->rows[0][4], "6");       // first day after 5 days of latency
-  EXPECT_EQ(schedule->rows[0][5], "16");      // 11 days
+  EXPECT_EQ(schedule->rows[0][2], "21.00");  // turns: 20.88 -> 21
+  EXPECT_EQ(schedule->rows[0][4], "6");      // first day after 5 days of latency
+  EXPECT_EQ(schedule->rows[0][5], "16");     // 11 days
 
   const report::Table* simulation = table_with_column(section, "Target (LPS mm)");
   ASSERT_NE(simulation, nullptr);
@@ -162,7 +163,8 @@ TEST(PlanResultRecord, ReadsBackWhatTheReportShowsAndRefusesDamage) {
     return {};
   };
   EXPECT_EQ(failure([](Json& j) { j.erase("feasible"); }), "artefact 9 (plan result): feasible: missing");
-  EXPECT_EQ(failure([](Json& j) { j["feasible"] = "yes"; }), "artefact 9 (plan result): feasible: must be true or false");
+  EXPECT_EQ(failure([](Json& j) { j["feasible"] = "yes"; }),
+            "artefact 9 (plan result): feasible: must be true or false");
   EXPECT_EQ(failure([](Json& j) { j["distraction"]["checks"][3].erase("limit_mm"); }),
             "artefact 9 (plan result): distraction.checks[3].limit_mm: missing");
   EXPECT_EQ(failure([](Json& j) { j["distraction"]["schedule"]["right"]["first_day"] = 1.5; }),
@@ -172,7 +174,8 @@ TEST(PlanResultRecord, ReadsBackWhatTheReportShowsAndRefusesDamage) {
   EXPECT_EQ(failure([](Json& j) { j["osteotomy"]["segments"][0]["voxels"] = "many"; }),
             "artefact 9 (plan result): osteotomy.segments[0].voxels: must be an integer");
   EXPECT_EQ(failure([](Json& j) { j["frame"].erase("source"); }), "artefact 9 (plan result): frame.source: missing");
-  EXPECT_EQ(failure([](Json& j) { j["files"]["render"] = 3; }), "artefact 9 (plan result): files.render: must be a path");
+  EXPECT_EQ(failure([](Json& j) { j["files"]["render"] = 3; }),
+            "artefact 9 (plan result): files.render: must be a path");
   EXPECT_EQ(failure([](Json& j) { j["format_version"] = 2; }),
             "artefact 9 (plan result): format_version: is 2, newer than this program reads (1): update maxillo");
   EXPECT_NE(failure([](Json& j) { j["plan"]["moves"] = 4; }).find("artefact 9 (plan result) plan"), std::string::npos);

@@ -20,13 +20,18 @@ std::string reason_of(const std::string& text) {
 }
 
 TEST(PlanJson, RoundTripsEveryField) {
-  Plan plan = distraction_plan({.advancement_mm = 10, .vertical_mm = 2, .widening_mm = 6, .midline_shift_mm = -1.5,
-                                .rotation_deg = -2, .counter_rotation_deg = 1.5},
+  Plan plan = distraction_plan({.advancement_mm = 10,
+                                .vertical_mm = 2,
+                                .widening_mm = 6,
+                                .midline_shift_mm = -1.5,
+                                .rotation_deg = -2,
+                                .counter_rotation_deg = 1.5},
                                "must show");
   plan.osteotomies.le_fort_i->variant = LeFortVariant::Low;
   plan.osteotomies.genioplasty = CutSpec{CutSpec::Kind::Plane, LeFortVariant::High,
                                          CutPlane{Eigen::Vector3d(0, -20, -80), Eigen::Vector3d(0, -0.6, -0.8)}};
-  plan.moves.push_back({Segment::kChin, Pivot{"", Eigen::Vector3d(0, -15, -85)}, {.advancement_mm = 4, .pitch_deg = 3}});
+  plan.moves.push_back(
+      {Segment::kChin, Pivot{"", Eigen::Vector3d(0, -15, -85)}, {.advancement_mm = 4, .pitch_deg = 3}});
   plan.distraction->device.screw_length_mm = 28;
   plan.distraction->schedule.consolidation_days = 90;
   plan.distraction->entry_right = Eigen::Vector3d(-27, 20, -13);
@@ -68,9 +73,10 @@ TEST(PlanJson, RefusalsNameTheFieldAndTheReason) {
             "distraction.target.widening_mm: must lie in [0, 30], got -2");
   EXPECT_EQ(reason_of(R"({"format_version": 1, "moves": [{"segment": "cranium"}]})"),
             "moves[0].segment: the cranium is the fixed reference and cannot move");
-  EXPECT_NE(reason_of(R"({"format_version": 1, "osteotomies": {"le_fort_i": {"point": [0, 0, 0], "normal": [0, 0, 0]}}})")
-                .find("osteotomies.le_fort_i.normal"),
-            std::string::npos);
+  EXPECT_NE(
+      reason_of(R"({"format_version": 1, "osteotomies": {"le_fort_i": {"point": [0, 0, 0], "normal": [0, 0, 0]}}})")
+          .find("osteotomies.le_fort_i.normal"),
+      std::string::npos);
   EXPECT_NE(reason_of(R"({"format_version": 1, "moves": [{"segment": "maxilla", "advancement_mm": 5}],
                           "distraction": {"target": {"advancement_mm": 10}}})")
                 .find("must equal distraction.target"),
@@ -125,9 +131,11 @@ TEST(PlanOsteotomies, ACutGivenByThreePointsFacesTheMovingSegment) {
 }
 
 TEST(PlanOsteotomies, CollinearPointsAndOneSidedSplitsAreRefused) {
-  EXPECT_THROW(parse_plan(R"({"format_version": 1, "osteotomies": {"le_fort_i": {"points": [[0, 0, 0], [1, 0, 0], [2, 0, 0]]}}})",
-                          "plan.json"),
-               Error);
+  EXPECT_THROW(
+      parse_plan(
+          R"({"format_version": 1, "osteotomies": {"le_fort_i": {"points": [[0, 0, 0], [1, 0, 0], [2, 0, 0]]}}})",
+          "plan.json"),
+      Error);
   EXPECT_THROW(parse_plan(R"({"format_version": 1, "osteotomies": {"bsso_right": "default"}})", "plan.json"), Error);
 }
 

@@ -17,7 +17,8 @@ PlanResult two_moves() {
   maxilla.pivot = {1.25, -60.5, 3.0};
   maxilla.move.advancement_mm = 6;
   maxilla.move.pitch_deg = -2.5;
-  maxilla.transform = Eigen::Translation3d(0.1, -6.0, 0.3) * Eigen::AngleAxisd(-0.0436, Eigen::Vector3d(1, 0.2, 0).normalized());
+  maxilla.transform =
+      Eigen::Translation3d(0.1, -6.0, 0.3) * Eigen::AngleAxisd(-0.0436, Eigen::Vector3d(1, 0.2, 0).normalized());
   PlannedMove chin;
   chin.segment = Segment::kChin;
   chin.pivot = {0, -80, -40};
@@ -65,14 +66,18 @@ TEST(PlannedMovesJson, DamageIsAnErrorNamingTheArtefactAndTheKey) {
   const std::string missing_moves = damaged([](Json& j) { j.erase("moves"); });
   EXPECT_NE(missing_moves.find("artefact 7 (plan result)"), std::string::npos) << missing_moves;
   EXPECT_NE(missing_moves.find("moves: missing"), std::string::npos) << missing_moves;
-  EXPECT_NE(damaged([](Json& j) { j["moves"][1].erase("segment"); }).find("moves[1].segment: missing"), std::string::npos);
-  EXPECT_NE(damaged([](Json& j) { j["moves"][0]["segment"] = "jaw"; }).find("moves[0].segment: unknown segment \"jaw\""),
+  EXPECT_NE(damaged([](Json& j) { j["moves"][1].erase("segment"); }).find("moves[1].segment: missing"),
             std::string::npos);
+  EXPECT_NE(
+      damaged([](Json& j) { j["moves"][0]["segment"] = "jaw"; }).find("moves[0].segment: unknown segment \"jaw\""),
+      std::string::npos);
   EXPECT_NE(damaged([](Json& j) { j["moves"][0]["pivot"] = "ANS"; }).find("moves[0].pivot: must be an array of 3"),
             std::string::npos);
   EXPECT_NE(damaged([](Json& j) { j["moves"][0]["move"].erase("yaw_deg"); }).find("moves[0].move.yaw_deg: missing"),
             std::string::npos);
-  EXPECT_NE(damaged([](Json& j) { j["moves"][1]["move"]["roll_deg"] = "1"; }).find("moves[1].move.roll_deg: must be a number"),
+  EXPECT_NE(damaged([](Json& j) {
+              j["moves"][1]["move"]["roll_deg"] = "1";
+            }).find("moves[1].move.roll_deg: must be a number"),
             std::string::npos);
   EXPECT_NE(damaged([](Json& j) { j["moves"][0]["transform_lps"][0][0] = 2.0; }).find("is not a rigid transform"),
             std::string::npos);
@@ -80,7 +85,8 @@ TEST(PlannedMovesJson, DamageIsAnErrorNamingTheArtefactAndTheKey) {
             std::string::npos);
   EXPECT_NE(damaged([](Json& j) { j["moves"][0]["transform_lps"].erase(3); }).find("must be 4 rows of 4 numbers"),
             std::string::npos);
-  EXPECT_NE(damaged([](Json& j) { j["moves"][0]["extra"] = 1; }).find("moves[0].extra: unknown key"), std::string::npos);
+  EXPECT_NE(damaged([](Json& j) { j["moves"][0]["extra"] = 1; }).find("moves[0].extra: unknown key"),
+            std::string::npos);
   EXPECT_NE(failure(Json::array()).find("plan result: must be an object"), std::string::npos);
 }
 

@@ -8,8 +8,8 @@ namespace maxillo::render {
 namespace {
 
 void expect_near(const Eigen::Vector3d& actual, const Eigen::Vector3d& expected, double tolerance) {
-  EXPECT_LT((actual - expected).norm(), tolerance) << "actual " << actual.transpose() << " expected "
-                                                   << expected.transpose();
+  EXPECT_LT((actual - expected).norm(), tolerance)
+      << "actual " << actual.transpose() << " expected " << expected.transpose();
 }
 
 TEST(StandardView, NamesRoundTripAndUnknownIsRejected) {
@@ -21,7 +21,7 @@ TEST(StandardView, NamesRoundTripAndUnknownIsRejected) {
 
 class StandardCameraTest : public ::testing::Test {
  protected:
-  AnatomicalFrame frame_;  // patient axes
+  AnatomicalFrame frame_;                           // patient axes
   Bounds bounds_{{-40, -100, -30}, {40, 100, 50}};  // 80 wide, 200 deep, 80 high
   Eigen::Vector3d direction(const Camera& c) { return (c.focal_point - c.position).normalized(); }
   Eigen::Vector3d image_right(const Camera& c) { return direction(c).cross(c.view_up); }

@@ -18,8 +18,9 @@ inline TriangleMesh uv_sphere(const Eigen::Vector3d& centre, double radius, int 
     for (int s = 0; s < segments; ++s) {
       const double theta = std::numbers::pi * r / rings, phi = 2 * std::numbers::pi * s / segments;
       mesh.vertices.row(2 + (r - 1) * segments + s) =
-          (centre + radius * Eigen::Vector3d(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
-                                             std::cos(theta))).transpose();
+          (centre +
+           radius * Eigen::Vector3d(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)))
+              .transpose();
     }
   auto ring_vertex = [&](int r, int s) { return 2 + (r - 1) * segments + (s % segments); };
   mesh.faces.resize(2 * segments * (rings - 1), 3);
@@ -41,8 +42,7 @@ inline TriangleMesh box(const Eigen::Vector3d& min, const Eigen::Vector3d& max) 
   TriangleMesh mesh;
   mesh.vertices.resize(8, 3);
   for (int c = 0; c < 8; ++c)
-    mesh.vertices.row(c) << ((c & 1) ? max.x() : min.x()), ((c & 2) ? max.y() : min.y()),
-        ((c & 4) ? max.z() : min.z());
+    mesh.vertices.row(c) << ((c & 1) ? max.x() : min.x()), ((c & 2) ? max.y() : min.y()), ((c & 4) ? max.z() : min.z());
   mesh.faces.resize(12, 3);
   mesh.faces << 0, 2, 3, 0, 3, 1,  // -z
       4, 5, 7, 4, 7, 6,            // +z

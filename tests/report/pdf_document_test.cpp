@@ -18,7 +18,7 @@ class PdfDocumentTest : public ::testing::Test {
  protected:
   void SetUp() override {
     folder_ = fs::temp_directory_path() / ("maxillo-pdf-" + std::to_string(::getpid()) + "-" +
-                                          ::testing::UnitTest::GetInstance()->current_test_info()->name());
+                                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::create_directories(folder_);
     style_.regular_font = resolve_font("DejaVuSans.ttf");
     style_.bold_font = resolve_font("DejaVuSans-Bold.ttf");
@@ -59,7 +59,9 @@ TEST_F(PdfDocumentTest, TextExtractsThroughAValidToUnicodeMap) {
   EXPECT_NE(extraction.output.find("Ærø, Åsa · 1.00 × 0.50 mm ± 2° — Zürich"), std::string::npos) << extraction.output;
   EXPECT_NE(extraction.output.find("Distraction ≤ 10 mm, SNA 82.0°"), std::string::npos) << extraction.output;
   const auto qdf = folder_ / "unicode-qdf.pdf";
-  ASSERT_EQ(run_command("qpdf --qdf --object-streams=disable " + quote(folder_ / "unicode.pdf") + " " + quote(qdf)).exit_code, 0);
+  ASSERT_EQ(
+      run_command("qpdf --qdf --object-streams=disable " + quote(folder_ / "unicode.pdf") + " " + quote(qdf)).exit_code,
+      0);
   EXPECT_EQ(run_command("grep -a -c beginbfrange " + quote(qdf)).output, "6\n") << "3 blocks in each of 2 fonts";
 }
 
@@ -88,7 +90,8 @@ TEST_F(PdfDocumentTest, LongParagraphWrapsWithinTheMargins) {
   // Text that ran past the right margin would be cut by pdftotext's -x/-W crop box.
   const double text_right_pt = 595.276 - 20 * 72 / 25.4;
   const auto cropped = run_command("pdftotext -enc UTF-8 -x 0 -y 0 -W " + std::to_string(int(text_right_pt) + 1) +
-                           " -H 842 " + quote(folder_ / "wrap.pdf") + " - 2>/dev/null").output;
+                                   " -H 842 " + quote(folder_ / "wrap.pdf") + " - 2>/dev/null")
+                           .output;
   for (int i : {0, 199, 399}) EXPECT_NE(cropped.find("Łukasz" + std::to_string(i)), std::string::npos) << i;
   EXPECT_GE(pdf.page_count(), 2);
 }

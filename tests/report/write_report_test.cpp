@@ -46,13 +46,12 @@ ReportModel consultation_model(const std::vector<Figure>& figures) {
   Table measurements{{{"Point", 2, Align::Left}, {"Distance (mm)", 1, Align::Right}, {"Direction", 1.5, Align::Left}},
                      {}};
   for (int i = 1; i <= 90; ++i)
-    measurements.rows.push_back({"skin point " + std::to_string(i), std::to_string(i * 0.25).substr(0, 5),
-                                 i % 2 ? "anterior" : "inferior"});
+    measurements.rows.push_back(
+        {"skin point " + std::to_string(i), std::to_string(i * 0.25).substr(0, 5), i % 2 ? "anterior" : "inferior"});
   model.sections = {
       {"validation",
        {Paragraph{"Distances between the predicted and the post-operative skin surfaces."},
-        KeyValueBlock{{{"Mean distance", "0.8 mm"}, {"95th percentile", "2.1 mm"}}},
-        measurements,
+        KeyValueBlock{{{"Mean distance", "0.8 mm"}, {"95th percentile", "2.1 mm"}}}, measurements,
         Note{"Frame: patient LPS; distances in mm, positive outside."}}},
       {"views", {ImageGrid{figures, 3}}},
   };
@@ -63,7 +62,7 @@ class WriteReportTest : public ::testing::Test {
  protected:
   void SetUp() override {
     folder_ = fs::temp_directory_path() / ("maxillo-report-" + std::to_string(::getpid()) + "-" +
-                                          ::testing::UnitTest::GetInstance()->current_test_info()->name());
+                                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::create_directories(folder_);
   }
   void TearDown() override {
@@ -84,10 +83,10 @@ TEST_F(WriteReportTest, ConsultationReportIsARealPdfWithEverythingInIt) {
   EXPECT_EQ(pdf_image_count(pdf), 3) << run_command("pdfimages -list " + quote(pdf)).output;
 
   const auto text = pdf_text(pdf);
-  for (const char* expected : {"Müller-Łukasz", "Zoë", "Müller-Łukasz, Zoë", "PID-0042", "1986-02-14", "female",
-                               "Le Fort I advancement", "Head 0.5 mm bone kernel", "0.45 × 0.45 × 0.50",
-                               "skin point 1\n", "skin point 90", "frontal view", "lateral view", "oblique view",
-                               "Not a diagnosis: planning aid, verify clinically", "Consultation report"})
+  for (const char* expected :
+       {"Müller-Łukasz", "Zoë", "Müller-Łukasz, Zoë", "PID-0042", "1986-02-14", "female", "Le Fort I advancement",
+        "Head 0.5 mm bone kernel", "0.45 × 0.45 × 0.50", "skin point 1\n", "skin point 90", "frontal view",
+        "lateral view", "oblique view", "Not a diagnosis: planning aid, verify clinically", "Consultation report"})
     EXPECT_NE(text.find(expected), std::string::npos) << "missing: " << expected;
   EXPECT_NE(text.find("page " + std::to_string(pages) + " of " + std::to_string(pages)), std::string::npos);
   // Template order: patient, then views, then validation (cephalometry etc. absent: skipped).

@@ -138,10 +138,10 @@ TEST(PhantomAnatomy, SinusesAreAirEnclosedByBone) {
       }
   ASSERT_GT(count, 0);
   Eigen::Vector3d size = hi - lo + g.spacing;  // left sinus, mm
-  EXPECT_NEAR(size.x(), 25, 3);   // width
-  EXPECT_NEAR(size.y(), 35, 3);   // antero-posterior
-  EXPECT_NEAR(size.z(), 30, 3);   // height
-  EXPECT_GT(lo.x(), 12);          // lateral to the nasal cavity
+  EXPECT_NEAR(size.x(), 25, 3);                // width
+  EXPECT_NEAR(size.y(), 35, 3);                // antero-posterior
+  EXPECT_NEAR(size.z(), 30, 3);                // height
+  EXPECT_GT(lo.x(), 12);                       // lateral to the nasal cavity
 }
 
 TEST(PhantomAnatomy, SinusAirIsNotConnectedToOtherAirInTheCt) {

@@ -28,8 +28,8 @@ Phantom coarse_phantom(SkeletalClass c) {
 }
 
 TEST(PhantomCephalometry, EveryLandmarkPresentOnce) {
-  const char* expected[] = {"S",   "N",   "OrR", "OrL", "PoR", "PoL", "A",   "B",   "ANS", "PNS",
-                            "Pog", "Me",  "Gn",  "GoR", "GoL", "ArR", "ArL", "U1",  "L1",  "U6R",
+  const char* expected[] = {"S",   "N",   "OrR", "OrL", "PoR", "PoL", "A",   "B",    "ANS", "PNS",
+                            "Pog", "Me",  "Gn",  "GoR", "GoL", "ArR", "ArL", "U1",   "L1",  "U6R",
                             "U6L", "L6R", "L6L", "Prn", "Sn",  "Ls",  "Li",  "PogS", "NS"};
   const Phantom& ph = default_phantom();
   EXPECT_EQ(ph.landmarks.size(), std::size(expected));
@@ -64,7 +64,7 @@ TEST(PhantomCephalometry, AdultProportions) {
   EXPECT_NEAR(upper_face / (landmark(ph, "N").z() - landmark(ph, "Me").z()), 0.45, 0.04);
   EXPECT_NEAR((landmark(ph, "ANS") - landmark(ph, "PNS")).norm(), 52, 4);
   EXPECT_NEAR(std::abs(landmark(ph, "GoL").x() - landmark(ph, "GoR").x()), 95, 8);  // bigonial width
-  double overjet = landmark(ph, "L1").y() - landmark(ph, "U1").y();  // U1 anterior of L1
+  double overjet = landmark(ph, "L1").y() - landmark(ph, "U1").y();                 // U1 anterior of L1
   double overbite = landmark(ph, "L1").z() - landmark(ph, "U1").z();
   EXPECT_GT(overjet, 1.5);
   EXPECT_LT(overjet, 4.5);
@@ -94,8 +94,8 @@ TEST(PhantomCephalometry, LandmarksDoNotDependOnSpacing) {
 
 TEST(PhantomCephalometry, LandmarksMirrorAcrossMidSagittalPlane) {
   const Phantom& ph = default_phantom();
-  for (auto [right, left] : {std::pair{"OrR", "OrL"}, {"PoR", "PoL"}, {"GoR", "GoL"}, {"ArR", "ArL"},
-                             {"U6R", "U6L"}, {"L6R", "L6L"}}) {
+  for (auto [right, left] :
+       {std::pair{"OrR", "OrL"}, {"PoR", "PoL"}, {"GoR", "GoL"}, {"ArR", "ArL"}, {"U6R", "U6L"}, {"L6R", "L6L"}}) {
     Eigen::Vector3d r = landmark(ph, right), l = landmark(ph, left);
     EXPECT_LT(r.x(), 0) << right << " is on the patient's right (-x)";
     EXPECT_NEAR(r.x(), -l.x(), 1e-9);

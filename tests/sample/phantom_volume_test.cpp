@@ -19,7 +19,8 @@ TEST(PhantomVolume, GridCoversTheHeadAndIsCentredOnTheMidSagittalPlane) {
     for (int j = 0; j < g.size.y(); ++j)
       for (int i : {0, g.size.x() - 1}) {
         Tissue t = Tissue(ph.labels.labels[g.index(i, j, k)]);
-        EXPECT_TRUE(t == Tissue::kAir || t == Tissue::kTable || t == Tissue::kHeadRest) << "body touches the lateral face";
+        EXPECT_TRUE(t == Tissue::kAir || t == Tissue::kTable || t == Tissue::kHeadRest)
+            << "body touches the lateral face";
       }
 }
 
@@ -30,13 +31,13 @@ TEST(PhantomVolume, MaterialsHaveTheirHounsfieldUnits) {
     Eigen::Vector3i v = nearest_voxel(g, p);
     return ph.ct.hu[g.index(v.x(), v.y(), v.z())];
   };
-  EXPECT_EQ(hu({0, 20, 60}), 35);              // brain
-  EXPECT_EQ(hu({0, 20, 40 + 85 - 1}), 1500);   // outer table of the vault (cortical)
-  EXPECT_EQ(hu({0, 20, 40 + 85 - 3.5}), 450);  // diploe (cancellous)
-  EXPECT_EQ(hu({27.5, -40, -13}), -1000);      // sinus
+  EXPECT_EQ(hu({0, 20, 60}), 35);                                      // brain
+  EXPECT_EQ(hu({0, 20, 40 + 85 - 1}), 1500);                           // outer table of the vault (cortical)
+  EXPECT_EQ(hu({0, 20, 40 + 85 - 3.5}), 450);                          // diploe (cancellous)
+  EXPECT_EQ(hu({27.5, -40, -13}), -1000);                              // sinus
   EXPECT_EQ(hu(landmark(ph, "U1") + Eigen::Vector3d(0, 0, 2)), 2800);  // incisor enamel
-  EXPECT_EQ(hu({0, -110, 0}), -1000);          // air in front of the face
-  EXPECT_EQ(hu({0, 60, -100}), 40);            // neck soft tissue
+  EXPECT_EQ(hu({0, -110, 0}), -1000);                                  // air in front of the face
+  EXPECT_EQ(hu({0, 60, -100}), 40);                                    // neck soft tissue
   // Enamel, cortical bone, soft tissue and air are present in expected amounts.
   int64_t enamel = 0, bone = 0;
   for (int16_t v : ph.ct.hu) {

@@ -25,7 +25,8 @@ size_t count_files(const fs::path& folder) {
 TEST(SampleCommand, WritesSeriesAndLandmarksThatMatchThePhantom) {
   TemporaryFolder folder("maxillo-sample-cmd");
   const fs::path out = folder / "phantom";
-  auto run = run_command(std::string(MAXILLO_BINARY) + " --json sample --out " + quote(out) + " --spacing 3 --class III");
+  auto run =
+      run_command(std::string(MAXILLO_BINARY) + " --json sample --out " + quote(out) + " --spacing 3 --class III");
   ASSERT_EQ(run.exit_code, 0) << run.output;
   Json summary = Json::parse(run.output);
   EXPECT_EQ(summary["skeletal_class"], "III");
@@ -57,7 +58,8 @@ TEST(SampleCommand, WritesSeriesAndLandmarksThatMatchThePhantom) {
 TEST(SampleCommand, RejectsUnknownValues) {
   TemporaryFolder folder("maxillo-sample-cmd");
   for (const char* options : {"--class IV", "--class 2", "--spacing 0.1", "--spacing abc"}) {
-    auto run = run_command(std::string(MAXILLO_BINARY) + " sample --out " + quote(folder / "x") + " " + options + " 2>&1");
+    auto run =
+        run_command(std::string(MAXILLO_BINARY) + " sample --out " + quote(folder / "x") + " " + options + " 2>&1");
     EXPECT_EQ(run.exit_code, 2) << options << ": " << run.output;
     EXPECT_FALSE(fs::exists(folder / "x" / "ct")) << options;
   }

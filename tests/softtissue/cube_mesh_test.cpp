@@ -49,7 +49,7 @@ TEST_P(CubeMeshTest, CountsVolumeOrientationAndConformity) {
 INSTANTIATE_TEST_SUITE_P(Splits, CubeMeshTest, ::testing::Values(HexSplit::kFiveTets, HexSplit::kSixTets));
 
 TEST(CubeMesh, DivisionsHitTheTargetTetCount) {
-  EXPECT_EQ(cube_divisions_for_tets(105000, HexSplit::kSixTets), 26);  // 6 * 26^3 = 105456
+  EXPECT_EQ(cube_divisions_for_tets(105000, HexSplit::kSixTets), 26);   // 6 * 26^3 = 105456
   EXPECT_EQ(cube_divisions_for_tets(105000, HexSplit::kFiveTets), 28);  // 5 * 28^3 = 109760
   EXPECT_EQ(cube_divisions_for_tets(1, HexSplit::kSixTets), 1);
 }
@@ -90,7 +90,8 @@ TEST(NodeGraph, NeighboursAreSortedAndSymmetric) {
   TetMesh mesh = make_cube_mesh({10.0, 3, HexSplit::kFiveTets});
   NodeGraph graph = build_node_graph(mesh);
   for (int i = 0; i < mesh.node_count(); ++i) {
-    EXPECT_TRUE(std::is_sorted(graph.neighbours.begin() + graph.row_begin(i), graph.neighbours.begin() + graph.row_end(i)));
+    EXPECT_TRUE(
+        std::is_sorted(graph.neighbours.begin() + graph.row_begin(i), graph.neighbours.begin() + graph.row_end(i)));
     for (int e = graph.row_begin(i); e < graph.row_end(i); ++e) {
       int j = graph.neighbours[size_t(e)];
       EXPECT_EQ(graph.neighbours[size_t(graph.find(j, i))], i);
@@ -98,7 +99,7 @@ TEST(NodeGraph, NeighboursAreSortedAndSymmetric) {
   }
   // Corner node 0 of a Kuhn-split grid touches 3 edge neighbours and the diagonal ones.
   NodeGraph kuhn = build_node_graph(make_cube_mesh({10.0, 3, HexSplit::kSixTets}));
-  int interior = 1 + 4 * (1 + 4 * 1);  // node (1, 1, 1)
+  int interior = 1 + 4 * (1 + 4 * 1);                                // node (1, 1, 1)
   EXPECT_EQ(kuhn.row_end(interior) - kuhn.row_begin(interior), 15);  // 14 neighbours + itself
 }
 

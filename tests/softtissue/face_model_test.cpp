@@ -48,7 +48,8 @@ TEST(ShapeFunctionMapping, ReproducesALinearFieldInsideAndFollowsTheSurfaceOutsi
   auto mapping = init_shape_function_mapping(mesh, points, 2.0);
   EXPECT_EQ(mapping.bound_count(), 3);
   auto u = map_displacement(mesh, mapping, kField.on_nodes(mesh));
-  for (int i = 0; i < 2; ++i) EXPECT_LT((u.row(i).transpose() - kField.at(points.row(i).transpose())).norm(), 1e-9) << i;
+  for (int i = 0; i < 2; ++i)
+    EXPECT_LT((u.row(i).transpose() - kField.at(points.row(i).transpose())).norm(), 1e-9) << i;
   EXPECT_LT((u.row(2).transpose() - kField.at(Eigen::Vector3d(0, 10, 10))).norm(), 1e-9);
   EXPECT_EQ(u.row(3).norm(), 0.0);
   for (size_t i = 0; i < 3; ++i) EXPECT_NEAR(mapping.weights[i].sum(), 1.0, 1e-12);  // partition of unity
@@ -78,9 +79,9 @@ TEST(FaceRegion, KeepsSoftTissueOnTheKeptSideOfEveryPlane) {
   LabelVolume tissues;
   tissues.geometry.size = {10, 10, 10};
   tissues.labels.assign(1000, 1);
-  for (int i = 0; i < 100; ++i) tissues.labels[size_t(i)] = 2;  // slice k = 0 is bone
-  std::vector<RegionPlane> planes{{Eigen::Vector3d(0, 0, 6.5), -Eigen::Vector3d::UnitZ()},   // keep z < 6.5
-                                  {Eigen::Vector3d(2.5, 0, 0), Eigen::Vector3d::UnitX()}};   // keep x > 2.5
+  for (int i = 0; i < 100; ++i) tissues.labels[size_t(i)] = 2;                              // slice k = 0 is bone
+  std::vector<RegionPlane> planes{{Eigen::Vector3d(0, 0, 6.5), -Eigen::Vector3d::UnitZ()},  // keep z < 6.5
+                                  {Eigen::Vector3d(2.5, 0, 0), Eigen::Vector3d::UnitX()}};  // keep x > 2.5
   auto region = face_region(tissues, {1}, planes);
   int64_t kept = 0;
   for (auto v : region.labels) kept += v;

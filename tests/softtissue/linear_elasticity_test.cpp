@@ -69,7 +69,8 @@ TEST(StiffnessBlocks, AssemblyMatchesElementSumAndKillsRigidMotion) {
   for (int t = 0; t < mesh.tet_count(); ++t) {
     Eigen::Matrix<double, 12, 12> ke = element_stiffness(tet_corners(mesh, t), material);
     for (int a = 0; a < 4; ++a)
-      for (int b = 0; b < 4; ++b) dense.block<3, 3>(3 * mesh.tets(t, a), 3 * mesh.tets(t, b)) += ke.block<3, 3>(3 * a, 3 * b);
+      for (int b = 0; b < 4; ++b)
+        dense.block<3, 3>(3 * mesh.tets(t, a), 3 * mesh.tets(t, b)) += ke.block<3, 3>(3 * a, 3 * b);
   }
   EXPECT_LT((Eigen::MatrixXd(k) - dense).norm(), 1e-14 * dense.norm());
   // Rigid motion of the whole mesh: zero force on every node.

@@ -47,12 +47,15 @@ TEST(FactorisedElasticity, PatchTestAndFiniteRigidMotionAreExact) {
   ASSERT_EQ(precompute_factorisation(k, bc.constraint, CholeskyBackend::kEigenSimplicial, factorised),
             FactorisationStatus::kOk);
   Eigen::MatrixX3d u = solve_factorised(factorised, bc);
-  EXPECT_LT((u - affine_field(mesh, testing::general_gradient(), Eigen::Vector3d(1, 2, 3))).cwiseAbs().maxCoeff(), 1e-9);
+  EXPECT_LT((u - affine_field(mesh, testing::general_gradient(), Eigen::Vector3d(1, 2, 3))).cwiseAbs().maxCoeff(),
+            1e-9);
   // A plan moving all constrained nodes by one rigid transform (25 degrees and a shift) moves
   // every node by it: the boundary data is affine, so the linear answer is that same field.
   Eigen::Matrix3d rigid = testing::rotation_minus_identity(25.0);
   BoundaryConditions moved = affine_on_border(mesh, 40.0, rigid, Eigen::Vector3d(-4, 5, 6));
-  EXPECT_LT((solve_factorised(factorised, moved) - affine_field(mesh, rigid, Eigen::Vector3d(-4, 5, 6))).cwiseAbs().maxCoeff(),
+  EXPECT_LT((solve_factorised(factorised, moved) - affine_field(mesh, rigid, Eigen::Vector3d(-4, 5, 6)))
+                .cwiseAbs()
+                .maxCoeff(),
             1e-9);
 }
 
@@ -110,8 +113,8 @@ TEST(LinearStatic, ScaleInvariance) {
     scaled.nodes *= s;
     BoundaryConditions scaled_bc = bc;
     scaled_bc.displacement *= s;
-    StaticSolution solution =
-        solve_linear_static(assemble_stiffness_blocks(scaled, Material{}), scaled_bc, {Preconditioner::kJacobi, 1e-13, 5000});
+    StaticSolution solution = solve_linear_static(assemble_stiffness_blocks(scaled, Material{}), scaled_bc,
+                                                  {Preconditioner::kJacobi, 1e-13, 5000});
     ASSERT_EQ(solution.status, SolveStatus::kConverged);
     EXPECT_LT((solution.displacement / s - u).cwiseAbs().maxCoeff(), 1e-9);
   }
@@ -159,7 +162,9 @@ TEST(RigidPlanBasis, WeightedResponsesEqualTheDirectSolve) {
             FactorisationStatus::kOk);
   RigidPlanBasis basis = precompute_rigid_plan_basis(factorised, mesh, bc.constraint, segment, 2);
   std::vector<Eigen::Isometry3d> motion(2, Eigen::Isometry3d::Identity());
-  motion[0].rotate(Eigen::AngleAxisd(0.2, Eigen::Vector3d(0, 1, 1).normalized())).pretranslate(Eigen::Vector3d(1, 2, 3));
+  motion[0]
+      .rotate(Eigen::AngleAxisd(0.2, Eigen::Vector3d(0, 1, 1).normalized()))
+      .pretranslate(Eigen::Vector3d(1, 2, 3));
   motion[1].pretranslate(Eigen::Vector3d(0, 0, 5));
   BoundaryConditions plan = bc;
   for (int i = 0; i < mesh.node_count(); ++i)

@@ -26,8 +26,10 @@ TEST(MassTensorModel, TensorsAreTheFemBlocks) {
   MassTensorModel model = make_mass_tensor_model(cube.stiffness);
   for (int j : {0, 7, 500}) {
     int diagonal = cube.stiffness.graph.find(j, j);
-    EXPECT_LT((model.inverse_diagonal[size_t(j)] * cube.stiffness.blocks[size_t(diagonal)] - Eigen::Matrix3d::Identity()).norm(),
-              1e-12);
+    EXPECT_LT(
+        (model.inverse_diagonal[size_t(j)] * cube.stiffness.blocks[size_t(diagonal)] - Eigen::Matrix3d::Identity())
+            .norm(),
+        1e-12);
     EXPECT_EQ(model.offsets[size_t(j) + 1] - model.offsets[size_t(j)],
               cube.stiffness.graph.row_end(j) - cube.stiffness.graph.row_begin(j) - 1);
   }

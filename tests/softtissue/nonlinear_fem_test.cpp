@@ -45,10 +45,12 @@ double max_error(const TetMesh& mesh, const Eigen::MatrixX3d& u, Map&& map) {
 
 TEST(NonlinearFem, ALargeRigidRotationIsStressFreeAndReproduced) {
   const auto mesh = small_cube();
-  const Eigen::Isometry3d move = Eigen::Translation3d(3, -2, 5) * Eigen::AngleAxisd(1.0, Eigen::Vector3d(1, 1, 0).normalized());
+  const Eigen::Isometry3d move =
+      Eigen::Translation3d(3, -2, 5) * Eigen::AngleAxisd(1.0, Eigen::Vector3d(1, 1, 0).normalized());
   auto map = [&](const Eigen::Vector3d& p) { return Eigen::Vector3d(move * p); };
   Eigen::MatrixX3d rigid(mesh.node_count(), 3);
-  for (int i = 0; i < mesh.node_count(); ++i) rigid.row(i) = (map(mesh.nodes.row(i).transpose()) - mesh.nodes.row(i).transpose()).transpose();
+  for (int i = 0; i < mesh.node_count(); ++i)
+    rigid.row(i) = (map(mesh.nodes.row(i).transpose()) - mesh.nodes.row(i).transpose()).transpose();
   EXPECT_LT(internal_forces(mesh, {}, rigid).cwiseAbs().maxCoeff(), 1e-12);
   // Only the bottom face is moved; the rest of the cube is free and must follow rigidly.
   BoundaryConditions bc = all_free(mesh.node_count());
@@ -117,8 +119,9 @@ TEST_P(TangentOfEachLaw, IsTheLinearStiffnessAtRestAndTheForceDerivativeAway) {
   Eigen::MatrixX3d u(mesh.node_count(), 3), v(mesh.node_count(), 3);
   for (int i = 0; i < mesh.node_count(); ++i) {
     const Eigen::Vector3d p = mesh.nodes.row(i).transpose();
-    u.row(i) << 0.1 * p.y() + 0.002 * p.x() * p.z(), -0.05 * p.z(), 0.15 * p.x() - 0.003 * p.y() * p.y();  // ~25 % strain
-    v.row(i) << std::sin(0.3 * p.x()), std::cos(0.2 * p.y()), 0.1 * p.z() - 1;                            // any direction
+    u.row(i) << 0.1 * p.y() + 0.002 * p.x() * p.z(), -0.05 * p.z(),
+        0.15 * p.x() - 0.003 * p.y() * p.y();                                   // ~25 % strain
+    v.row(i) << std::sin(0.3 * p.x()), std::cos(0.2 * p.y()), 0.1 * p.z() - 1;  // any direction
   }
   const double h = 1e-5;
   const Eigen::MatrixX3d difference =

@@ -36,7 +36,8 @@ inline Eigen::Matrix3d general_gradient() {
 
 // R - I for a finite rotation of `degrees` about a tilted axis: u = (R - I) x + t is rigid.
 inline Eigen::Matrix3d rotation_minus_identity(double degrees) {
-  Eigen::Matrix3d r = Eigen::AngleAxisd(degrees * M_PI / 180.0, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  Eigen::Matrix3d r =
+      Eigen::AngleAxisd(degrees * M_PI / 180.0, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
   return r - Eigen::Matrix3d::Identity();
 }
 

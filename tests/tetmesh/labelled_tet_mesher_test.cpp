@@ -44,11 +44,11 @@ TEST(LabelledTetMesher, MeshesABallWithItsVolumeAndGoodTets) {
   const auto& mesh = result.mesh;
   ASSERT_GT(mesh.tet_count(), 500);
   EXPECT_EQ(softtissue::count_non_positive_tets(mesh), 0);
-  EXPECT_NEAR(total_volume(mesh), 4.0 / 3.0 * M_PI * std::pow(radius, 3), 0.04 * 4.0 / 3.0 * M_PI * std::pow(radius, 3));
+  EXPECT_NEAR(total_volume(mesh), 4.0 / 3.0 * M_PI * std::pow(radius, 3),
+              0.04 * 4.0 / 3.0 * M_PI * std::pow(radius, 3));
   // Every node lies inside the ball (to the facet distance): the frame mapping is right.
   const Eigen::Vector3d centre = volume.geometry.world(Eigen::Vector3d::Constant((volume.geometry.size.x() - 1) / 2.0));
-  for (int n = 0; n < mesh.node_count(); ++n)
-    ASSERT_LT((mesh.nodes.row(n).transpose() - centre).norm(), radius + 1.5);
+  for (int n = 0; n < mesh.node_count(); ++n) ASSERT_LT((mesh.nodes.row(n).transpose() - centre).norm(), radius + 1.5);
   auto quality = softtissue::mesh_quality(mesh);
   EXPECT_GT(quality.min_dihedral_deg, 5.0);
 }

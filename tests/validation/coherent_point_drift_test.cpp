@@ -77,11 +77,16 @@ TEST_F(SphereCpd, KnownOutcomeGivesItsKnownDistances) {
   }
   EXPECT_LT(sum / double(sphere().vertex_count()), 0.1);
   EXPECT_LT(worst, 0.3);
-  EXPECT_NEAR(distance_statistics(d).p5, percentile([&] {
-    std::vector<double> truth;
-    for (Eigen::Index v = 0; v < sphere().vertex_count(); ++v) truth.push_back(-bump_height(sphere().vertices.row(v).transpose()));
-    return truth;
-  }(), 5), 0.25);
+  EXPECT_NEAR(distance_statistics(d).p5,
+              percentile(
+                  [&] {
+                    std::vector<double> truth;
+                    for (Eigen::Index v = 0; v < sphere().vertex_count(); ++v)
+                      truth.push_back(-bump_height(sphere().vertices.row(v).transpose()));
+                    return truth;
+                  }(),
+                  5),
+              0.25);
 }
 
 TEST_F(SphereCpd, TheSameSurfaceGivesZero) {

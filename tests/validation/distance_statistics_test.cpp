@@ -16,13 +16,14 @@ TEST(DistanceStatistics, HandComputedSample) {
   EXPECT_EQ(s.count, 6);
   EXPECT_NEAR(s.mean_absolute, 12.0 / 6, 1e-12);
   EXPECT_NEAR(s.mean_signed, 4.0 / 6, 1e-12);
-  EXPECT_NEAR(s.standard_deviation, std::sqrt((3.0 + 2 / 3.0) * (3.0 + 2 / 3.0) + (5 / 3.0) * (5 / 3.0) + (2 / 3.0) * (2 / 3.0) +
-                                              (1 / 3.0) * (1 / 3.0) + (4 / 3.0) * (4 / 3.0) + (13 / 3.0) * (13 / 3.0)) /
-                                        std::sqrt(5.0),
+  EXPECT_NEAR(s.standard_deviation,
+              std::sqrt((3.0 + 2 / 3.0) * (3.0 + 2 / 3.0) + (5 / 3.0) * (5 / 3.0) + (2 / 3.0) * (2 / 3.0) +
+                        (1 / 3.0) * (1 / 3.0) + (4 / 3.0) * (4 / 3.0) + (13 / 3.0) * (13 / 3.0)) /
+                  std::sqrt(5.0),
               1e-12);
-  EXPECT_NEAR(s.p50, 0.5, 1e-12);   // between 0 and 1
-  EXPECT_NEAR(s.p25, -0.75, 1e-12); // rank 1.25: -1 + 0.25
-  EXPECT_NEAR(s.p95, 4.25, 1e-12);  // rank 4.75: 2 + 0.75 * 3
+  EXPECT_NEAR(s.p50, 0.5, 1e-12);    // between 0 and 1
+  EXPECT_NEAR(s.p25, -0.75, 1e-12);  // rank 1.25: -1 + 0.25
+  EXPECT_NEAR(s.p95, 4.25, 1e-12);   // rank 4.75: 2 + 0.75 * 3
   EXPECT_NEAR(s.max_absolute, 5, 1e-12);
   EXPECT_NEAR(s.within_tolerance_percent, 100.0 * 4 / 6, 1e-12);
 }

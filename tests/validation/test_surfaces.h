@@ -22,8 +22,8 @@ namespace maxillo::validation::test {
 // by the surface gives one triangle or two. A vertex sits where the linear interpolation along
 // a grid edge crosses zero and is shared by every cell around that edge, so the surface is
 // closed; faces are turned so their normals point outwards.
-inline TriangleMesh implicit_surface(const std::function<double(const Eigen::Vector3d&)>& inside_mm,
-                                     double half_extent, double spacing = 1.0) {
+inline TriangleMesh implicit_surface(const std::function<double(const Eigen::Vector3d&)>& inside_mm, double half_extent,
+                                     double spacing = 1.0) {
   const int n = int(std::ceil(2 * half_extent / spacing)) + 1;
   const double origin = -(n - 1) * spacing / 2;
   auto node = [n](int i, int j, int k) { return (int64_t(k) * n + j) * n + i; };
@@ -50,9 +50,12 @@ inline TriangleMesh implicit_surface(const std::function<double(const Eigen::Vec
     return it->second;
   };
   auto add_face = [&](int a, int b, int c, const Eigen::Vector3d& outward) {
-    const Eigen::Vector3d normal = (vertices[size_t(b)] - vertices[size_t(a)]).cross(vertices[size_t(c)] - vertices[size_t(a)]);
-    if (normal.dot(outward) >= 0) faces.emplace_back(a, b, c);
-    else faces.emplace_back(a, c, b);
+    const Eigen::Vector3d normal =
+        (vertices[size_t(b)] - vertices[size_t(a)]).cross(vertices[size_t(c)] - vertices[size_t(a)]);
+    if (normal.dot(outward) >= 0)
+      faces.emplace_back(a, b, c);
+    else
+      faces.emplace_back(a, c, b);
   };
   // The six tetrahedra of a cube around its diagonal 0-7 (corner bits: x = 1, y = 2, z = 4).
   static constexpr std::array<std::array<int, 4>, 6> kTetrahedra = {
