@@ -53,7 +53,7 @@ int run_simulate(const SimulateOptions& options, const GlobalOptions& global) {
   const auto result = pipeline::simulate_case(archive, case_id, request);
   const auto& p = result.prediction;
   if (global.json) {
-    std::cout << result.summary.dump(2) << "\n";
+    std::cout << pipeline::to_json(result.summary).dump(2) << "\n";
     return 0;
   }
   std::cout << "model: " << pipeline::model_title(request.options.model) << ", " << p.mesh.tet_count()

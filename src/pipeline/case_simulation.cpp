@@ -31,7 +31,8 @@ LandmarkSet soft_landmarks_of(const LandmarkSet& landmarks) {
 }
 
 // Writes the files and returns what simulation.json holds.
-Json write_outputs(SimulationResult& result, const std::filesystem::path& out, const SoftTissueOptions& options) {
+SimulationSummary write_outputs(SimulationResult& result, const std::filesystem::path& out,
+                                const SoftTissueOptions& options) {
   const auto& p = result.prediction;
   Eigen::MatrixXd magnitude = p.skin_displacement.rowwise().norm();
   std::vector<PointArray> arrays{{"displacement", p.skin_displacement}, {"displacement_magnitude", magnitude}};
@@ -46,33 +47,26 @@ Json write_outputs(SimulationResult& result, const std::filesystem::path& out, c
   write_mesh(p.skin_after, files[1]);
   write_mesh(p.skin_after, files[2]);
   softtissue::write_vtu(files[3], p.mesh, p.node_displacement, p.bc);
-  Json summary{{"model", model_name(options.model)},
-               {"plan_application", result.reused_plan_application ? "stored" : "applied"},
-               {"poisson_ratio", options.poisson_ratio},
-               {"tetrahedra", p.mesh.tet_count()},
-               {"nodes", p.mesh.node_count()},
-               {"cell_size_mm", p.meshing.cell_size_mm},
-               {"tet_budget", p.meshing.tet_budget},
-               {"over_tet_budget", p.meshing.over_budget(p.mesh)},
-               {"min_dihedral_deg", p.quality.min_dihedral_deg},
-               {"max_aspect_ratio", p.quality.max_aspect_ratio},
-               {"prescribed_nodes", softtissue::count_nodes(p.bc, softtissue::NodeConstraint::kPrescribed)},
-               {"fixed_nodes", softtissue::count_nodes(p.bc, softtissue::NodeConstraint::kFixed)},
-               {"free_nodes", softtissue::count_nodes(p.bc, softtissue::NodeConstraint::kFree)},
-               {"iterations", p.iterations},
-               {"max_skin_displacement_mm", magnitude.size() ? magnitude.maxCoeff() : 0.0},
-               {"seconds",
-                {{"region", p.seconds.region},
-                 {"meshing", p.seconds.meshing},
-                 {"attachment", p.seconds.attachment},
-                 {"assembly", p.seconds.assembly},
-                 {"solve", p.seconds.solve},
-                 {"mapping", p.seconds.mapping}}}};
+  SimulationSummary summary;
+  summary.model = std::string(model_name(options.model));
+  summary.poisson_ratio = options.poisson_ratio;
+  summary.plan_application_stored = result.reused_plan_application;
+  summary.tetrahedra = p.mesh.tet_count();
+  summary.nodes = p.mesh.node_count();
+  summary.cell_size_mm = p.meshing.cell_size_mm;
+  summary.tet_budget = p.meshing.tet_budget;
+  summary.over_tet_budget = p.meshing.over_budget(p.mesh);
+  summary.min_dihedral_deg = p.quality.min_dihedral_deg;
+  summary.max_aspect_ratio = p.quality.max_aspect_ratio;
+  summary.prescribed_nodes = softtissue::count_nodes(p.bc, softtissue::NodeConstraint::kPrescribed);
+  summary.fixed_nodes = softtissue::count_nodes(p.bc, softtissue::NodeConstraint::kFixed);
+  summary.free_nodes = softtissue::count_nodes(p.bc, softtissue::NodeConstraint::kFree);
+  summary.iterations = p.iterations;
+  summary.max_skin_displacement_mm = magnitude.size() ? magnitude.maxCoeff() : 0.0;
+  summary.seconds = p.seconds;
   if (result.uncertainty)
-    summary["uncertainty"] = {{"runs", result.uncertainty->runs},
-                              {"p95_mm", result.uncertainty->p95_mm},
-                              {"max_mm", result.uncertainty->max_mm}};
-  write_file_atomically(files[4], summary.dump(2) + "\n");
+    summary.uncertainty = {result.uncertainty->runs, result.uncertainty->p95_mm, result.uncertainty->max_mm};
+  write_file_atomically(files[4], to_json(summary).dump(2) + "\n");
   return summary;
 }
 

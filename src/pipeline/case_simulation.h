@@ -13,6 +13,7 @@
 #include "core/json.h"
 #include "pipeline/case_tissues.h"
 #include "pipeline/soft_tissue_prediction.h"
+#include "pipeline/simulation_summary.h"
 #include "pipeline/soft_tissue_section.h"
 #include "planning/plan.h"
 #include "report/report_model.h"
@@ -45,7 +46,7 @@ struct SimulationResult {
   SoftTissueViewFiles views;
   report::Section section;                   // "soft_tissue", ready for the report
   std::vector<std::filesystem::path> files;  // predicted skin (vtp, stl, ply), model (vtu), json
-  Json summary;                              // what simulation.json holds
+  SimulationSummary summary;                 // what simulation.json holds
   bool reused_plan_application = false;      // the plan's moves came from `plan apply`'s stored result
 };
 
