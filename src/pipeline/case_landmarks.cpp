@@ -9,6 +9,7 @@
 #include "core/json.h"
 #include "core/json_reader.h"
 #include "core/sha256.h"
+#include "pipeline/stored_artefact.h"
 
 namespace maxillo::pipeline {
 namespace {
@@ -44,7 +45,7 @@ LandmarkFrame read_frame(JsonReader& parameters) {
 // A stored set's facts, from its artefact's parameters (what attach_landmarks wrote): the
 // source, the frame, and the time point and date when it has one.
 StoredLandmarks read_landmark_record(const ArtefactRecord& record) {
-  const std::string source = "artefact " + std::to_string(record.id) + " (landmarks)";
+  const std::string source = artefact_source(record);
   Json parameters = Json::parse(record.parameters_json, nullptr, /*allow_exceptions=*/false);
   if (parameters.is_discarded()) parameters = nullptr;  // not JSON: refused below as not an object
   JsonReader r(parameters, "", source, ErrorCode::kArchiveCorrupt, "parameters");
@@ -62,9 +63,8 @@ StoredLandmarks read_landmark_record(const ArtefactRecord& record) {
 }
 
 LandmarkSet read_set(const Archive& archive, const ArtefactRecord& record) {
-  auto bytes = archive.read_object(record.object_sha256);
-  std::string text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
-  return parse_landmarks(text, LandmarkFormat::kSlicerMarkupsJson, "archive object " + record.object_sha256);
+  return parse_landmarks(artefact_text(archive, record), LandmarkFormat::kSlicerMarkupsJson,
+                         "archive object " + record.object_sha256);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include "ceph/landmark_io.h"
 #include "core/error.h"
 #include "core/sha256.h"
+#include "pipeline/stored_artefact.h"
 
 namespace maxillo::pipeline {
 namespace {
@@ -13,27 +14,12 @@ namespace {
 const std::string kPlanKind = kind_name(ArtefactKind::kPlan);
 const std::string kPlanResultKind = kind_name(ArtefactKind::kPlanResult);
 
-std::string object_text(const Archive& archive, const std::string& sha256) {
-  const auto bytes = archive.read_object(sha256);
-  return std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size());
-}
-
 std::vector<ArtefactRecord> artefacts_of_kind(const Archive& archive, int64_t case_id, const std::string& kind) {
   auto all = archive.artefacts(case_id);
   std::vector<ArtefactRecord> selected;
   std::copy_if(all.begin(), all.end(), std::back_inserter(selected), [&](const auto& a) { return a.kind == kind; });
   std::sort(selected.begin(), selected.end(), [](const auto& a, const auto& b) { return a.id < b.id; });
   return selected;
-}
-
-std::string plan_result_source(const ArtefactRecord& artefact) {
-  return "artefact " + std::to_string(artefact.id) + " (plan result)";
-}
-
-Json stored_json(const Archive& archive, const ArtefactRecord& artefact, const std::string& source) {
-  Json json = Json::parse(object_text(archive, artefact.object_sha256), nullptr, /*allow_exceptions=*/false);
-  if (json.is_discarded()) throw Error(ErrorCode::kArchiveCorrupt, source, "is not JSON");
-  return json;
 }
 
 }  // namespace
@@ -62,8 +48,7 @@ std::vector<StoredPlan> plan_history(const Archive& archive, int64_t case_id) {
     stored.created_at = record.created_at;
     stored.program_version = record.program_version;
     stored.sha256 = record.object_sha256;
-    stored.plan =
-        planning::parse_plan(object_text(archive, record.object_sha256), "plan artefact " + std::to_string(record.id));
+    stored.plan = planning::parse_plan(artefact_text(archive, record), "plan artefact " + std::to_string(record.id));
     history.push_back(std::move(stored));
   }
   return history;
@@ -105,15 +90,13 @@ std::optional<std::vector<planning::PlannedMove>> stored_plan_moves(const Archiv
   const auto newest =
       std::find_if(results.rbegin(), results.rend(), [&](const auto& a) { return a.inputs_hash == key; });
   if (newest == results.rend()) return std::nullopt;
-  const std::string source = plan_result_source(*newest);
-  return planning::planned_moves_from_json(stored_json(archive, *newest, source), source);
+  return planning::planned_moves_from_json(artefact_json(archive, *newest), artefact_source(*newest));
 }
 
 std::optional<PlanResultRecord> latest_plan_result(const Archive& archive, int64_t case_id) {
   const auto results = artefacts_of_kind(archive, case_id, kPlanResultKind);
   if (results.empty()) return std::nullopt;
-  const std::string source = plan_result_source(results.back());
-  return read_plan_result_record(stored_json(archive, results.back(), source), source);
+  return read_plan_result_record(artefact_json(archive, results.back()), artefact_source(results.back()));
 }
 
 }  // namespace maxillo::pipeline

@@ -4,6 +4,7 @@
 
 #include "archive/artefact_kind.h"
 #include "core/atomic_file.h"
+#include "pipeline/stored_artefact.h"
 
 namespace maxillo::pipeline {
 namespace {
@@ -28,11 +29,6 @@ Json face_distances_json(const CaseValidation& v) {
   return Json{{"closest_mm", closest}, {"region", regions}};
 }
 
-Json read_json_object(const Archive& archive, const std::string& sha) {
-  const auto bytes = archive.read_object(sha);
-  return Json::parse(std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
-}
-
 // The newest artefact of `kind` with this key (and, for images, this name).
 std::optional<ArtefactRecord> newest(const std::vector<ArtefactRecord>& artefacts, const std::string& kind,
                                      const std::string& key, const std::string& name = "") {
@@ -50,8 +46,8 @@ std::optional<StoredValidation> load(const Archive& archive, const std::vector<A
                                      const ArtefactRecord& summary) {
   StoredValidation stored;
   stored.case_id = summary.case_id;
-  stored.document = read_json_object(archive, summary.object_sha256);
-  stored.record = read_validation_record(stored.document, "artefact " + std::to_string(summary.id) + " (validation)");
+  stored.document = artefact_json(archive, summary);
+  stored.record = read_validation_record(stored.document, artefact_source(summary));
   for (const char* view : {"error-map-frontal", "error-map-lateral", "error-map-oblique"}) {
     auto image = newest(artefacts, kImageKind, summary.inputs_hash, view);
     if (!image) return std::nullopt;
@@ -61,7 +57,7 @@ std::optional<StoredValidation> load(const Archive& archive, const std::vector<A
   auto distances = newest(artefacts, kDistancesKind, summary.inputs_hash);
   if (!profile || !distances) return std::nullopt;
   stored.profile = archive.object_path(profile->object_sha256);
-  const Json face = read_json_object(archive, distances->object_sha256);
+  const Json face = artefact_json(archive, *distances);
   stored.face_closest_mm = face.at("closest_mm").get<std::vector<double>>();
   stored.face_regions = face.at("region").get<std::vector<std::string>>();
   return stored;

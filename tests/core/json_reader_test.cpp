@@ -3,22 +3,11 @@
 
 #include <gtest/gtest.h>
 
-#include <functional>
 #include <string>
+#include "support/error_of.h"
 
 namespace maxillo {
 namespace {
-
-std::string failure(const std::function<void()>& read) {
-  try {
-    read();
-  } catch (const Error& e) {
-    EXPECT_EQ(e.code(), ErrorCode::kArchiveCorrupt);
-    return e.what();
-  }
-  ADD_FAILURE() << "no error";
-  return {};
-}
 
 const Json kRecord = Json::parse(R"({"format_version": 2, "feasible": true, "name": "plan",
   "rows": [{"value_mm": 1.5, "point": [1, 2, 3]}, {"value_mm": "2"}], "nested": {"count": 7}})");
@@ -51,25 +40,25 @@ TEST(JsonReader, OptionalFieldsKeepTheirDefaultOnlyWhenAbsent) {
 
 TEST(JsonReader, FailuresNameTheSourceAndTheKeyPath) {
   auto reader = [] { return JsonReader(kRecord, "", "artefact 3", ErrorCode::kArchiveCorrupt, "validation"); };
-  EXPECT_EQ(failure([&] { reader().required_bool("missing"); }), "artefact 3: missing: missing");
-  EXPECT_EQ(failure([&] { reader().required_bool("name"); }), "artefact 3: name: must be true or false");
-  EXPECT_EQ(failure([&] { reader().required_integer("format_version", 3, 5); }),
+  EXPECT_EQ(testing::error_of([&] { reader().required_bool("missing"); }), "artefact 3: missing: missing");
+  EXPECT_EQ(testing::error_of([&] { reader().required_bool("name"); }), "artefact 3: name: must be true or false");
+  EXPECT_EQ(testing::error_of([&] { reader().required_integer("format_version", 3, 5); }),
             "artefact 3: format_version: must lie in [3, 5]");
-  EXPECT_EQ(failure([&] {
+  EXPECT_EQ(testing::error_of([&] {
               JsonReader r = reader();
               r.element(r.required_array("rows"), "rows", 1).required_number("value_mm");
             }),
             "artefact 3: rows[1].value_mm: must be a number");
-  EXPECT_EQ(failure([&] { reader().object("nested").required_text("count"); }),
+  EXPECT_EQ(testing::error_of([&] { reader().object("nested").required_text("count"); }),
             "artefact 3: nested.count: must be a string");
-  EXPECT_EQ(failure([&] {
+  EXPECT_EQ(testing::error_of([&] {
               JsonReader r = reader();
               r.required_bool("feasible");
               r.refuse_unknown_keys();
             }),
             "artefact 3: format_version: unknown key");
   const Json array = Json::array();
-  EXPECT_EQ(failure([&] { JsonReader(array, "", "artefact 3", ErrorCode::kArchiveCorrupt, "validation"); }),
+  EXPECT_EQ(testing::error_of([&] { JsonReader(array, "", "artefact 3", ErrorCode::kArchiveCorrupt, "validation"); }),
             "artefact 3: validation: must be an object");
 }
 

@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "pipeline/validation_json.h"
+#include "support/error_of.h"
 
 namespace maxillo::pipeline {
 namespace {
@@ -76,17 +77,9 @@ TEST(ValidationRecord, ReadsBackWhatWasStored) {
 
 TEST(ValidationRecord, DamageIsAnErrorNamingTheArtefactAndTheKey) {
   const Json good = stored_validation();
-  auto failure = [&](const std::function<void(Json&)>& damage) -> std::string {
-    Json damaged = good;
-    damage(damaged);
-    try {
-      read_validation_record(damaged, "artefact 31 (validation)");
-    } catch (const Error& e) {
-      EXPECT_EQ(e.code(), ErrorCode::kArchiveCorrupt);
-      return e.what();
-    }
-    ADD_FAILURE() << "damage not noticed";
-    return {};
+  auto failure = [&](const std::function<void(Json&)>& damage) {
+    return testing::error_after_damage(good, damage,
+                                       [](const Json& j) { read_validation_record(j, "artefact 31 (validation)"); });
   };
   EXPECT_EQ(failure([](Json& j) { j["registration"].erase("iterations"); }),
             "artefact 31 (validation): registration.iterations: missing");

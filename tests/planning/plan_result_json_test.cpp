@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "planning/plan_application.h"
+#include "support/error_of.h"
 
 namespace maxillo::planning {
 namespace {
@@ -28,16 +29,11 @@ PlanResult two_moves() {
   return result;
 }
 
-// The message of the error `read` throws on `json`, with its code.
-std::string failure(const Json& json, ErrorCode expected = ErrorCode::kArchiveCorrupt) {
-  try {
-    planned_moves_from_json(json, "artefact 7 (plan result)");
-  } catch (const Error& e) {
-    EXPECT_EQ(e.code(), expected);
-    return e.what();
-  }
-  ADD_FAILURE() << "no error for " << json.dump();
-  return {};
+void read_moves(const Json& json) { planned_moves_from_json(json, "artefact 7 (plan result)"); }
+
+// The message of the error reading `json`'s moves throws, with its code checked.
+std::string failure(const Json& json) {
+  return testing::error_of([&] { read_moves(json); });
 }
 
 TEST(PlannedMovesJson, RoundTripIsExact) {
@@ -59,9 +55,7 @@ TEST(PlannedMovesJson, RoundTripIsExact) {
 TEST(PlannedMovesJson, DamageIsAnErrorNamingTheArtefactAndTheKey) {
   const Json good = Json::parse(plan_result_json(two_moves()).dump());
   auto damaged = [&](const std::function<void(Json&)>& damage) {
-    Json json = good;
-    damage(json);
-    return failure(json);
+    return testing::error_after_damage(good, damage, read_moves);
   };
   const std::string missing_moves = damaged([](Json& j) { j.erase("moves"); });
   EXPECT_NE(missing_moves.find("artefact 7 (plan result)"), std::string::npos) << missing_moves;
