@@ -1,6 +1,11 @@
 #include "archive/artefact_kind.h"
 
+#include <iterator>
+
 namespace maxillo {
+
+// kAllArtefactKinds lists every kind: the last enumerator closes the list.
+static_assert(std::size(kAllArtefactKinds) == size_t(ArtefactKind::kReport) + 1);
 
 std::string kind_name(ArtefactKind kind) {
   switch (kind) {
