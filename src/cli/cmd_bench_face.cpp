@@ -79,8 +79,8 @@ void run_face_bench(const FaceBenchArguments& args) {
               meshing[meshing.size() / 2], base.mesh.tet_count(), base.mesh.node_count(), base.meshing.cell_size_mm,
               base.quality.min_dihedral_deg, base.quality.mean_aspect_ratio, base.quality.max_aspect_ratio);
 
-  for (auto model : {pipeline::SoftTissueModel::kMassTensor, pipeline::SoftTissueModel::kLinearFem,
-                     pipeline::SoftTissueModel::kMassSpring}) {
+  for (auto model : {softtissue::SoftTissueModel::kMassTensor, softtissue::SoftTissueModel::kLinearFem,
+                     softtissue::SoftTissueModel::kMassSpring}) {
     auto variant = options;
     variant.model = model;
     std::vector<double> solve, assembly;
@@ -93,7 +93,7 @@ void run_face_bench(const FaceBenchArguments& args) {
     std::sort(solve.begin(), solve.end());
     std::sort(assembly.begin(), assembly.end());
     std::printf("%-18s set-up %.3f s, solve %.3f s (%d iterations), largest skin move %.2f mm\n",
-                std::string(pipeline::model_title(model)).c_str(), assembly[assembly.size() / 2],
+                std::string(softtissue::model_title(model)).c_str(), assembly[assembly.size() / 2],
                 solve[solve.size() / 2], p.iterations, p.skin_displacement.rowwise().norm().maxCoeff());
   }
 

@@ -16,6 +16,7 @@
 #include "pipeline/cohort_archive.h"
 #include "pipeline/cohort_report.h"
 #include "pipeline/case_simulation.h"
+#include "pipeline/soft_tissue_section.h"
 #include "pipeline/consultation_report.h"
 #include "pipeline/phantom_occlusion.h"
 #include "pipeline/nightly.h"
@@ -24,6 +25,7 @@
 #include "pipeline/report_dicom.h"
 #include "pipeline/synthetic_postop_case.h"
 #include "pipeline/validation_archive.h"
+#include "pipeline/validation_json.h"
 #include "pipeline/sample_case.h"
 
 namespace maxillo::cli {
@@ -130,14 +132,14 @@ int run_demo(const DemoOptions& options, const GlobalOptions& global) {
   simulation.uncertainty = true;
   simulation.face_model = planned.face_model(simulation.options);
   auto predicted = pipeline::simulate_case(archive, case_id, simulation, &plan.tissues);
-  report_options.soft_tissue = predicted.section;
+  report_options.soft_tissue = pipeline::soft_tissue_section(predicted, simulation);
   clock.mark("soft tissue");
   // Validation (issue #7): a synthetic post-operative CT with a known error, registered, the
   // bone moves found by ICP, the face predicted for them and compared; then the nightly summary.
   auto postop = pipeline::make_synthetic_postop_case(archive, case_id, {}, options.out / "postop", true, "", &planned);
   clock.mark("synthetic post-operative CT");
   auto validation = pipeline::validate_case(archive, case_id, {}, options.out / "validation", &planned);
-  pipeline::store_validation(archive, validation);
+  pipeline::store_validation(archive, pipeline::validation_to_store(validation));
   clock.mark("validation");
   pipeline::NightlyOptions nightly_options;
   nightly_options.out = options.out / "nightly";

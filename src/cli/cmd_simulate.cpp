@@ -37,7 +37,7 @@ pipeline::SimulationRequest make_request(const SimulateOptions& o) {
     throw Error(ErrorCode::kUsage, "simulate",
                 "give a plan (--plan PLAN.json) or a Le Fort I advancement (--advance MM)");
   }
-  request.options.model = *pipeline::parse_model(o.model);
+  request.options.model = *softtissue::parse_model(o.model);
   request.options.poisson_ratio = o.poisson;
   request.options.meshing.max_tets = o.max_tets;
   request.options.meshing.cell_size_mm = o.cell_mm;
@@ -56,7 +56,7 @@ int run_simulate(const SimulateOptions& options, const GlobalOptions& global) {
     std::cout << pipeline::to_json(result.summary).dump(2) << "\n";
     return 0;
   }
-  std::cout << "model: " << pipeline::model_title(request.options.model) << ", " << p.mesh.tet_count()
+  std::cout << "model: " << softtissue::model_title(request.options.model) << ", " << p.mesh.tet_count()
             << " tetrahedra (smallest dihedral angle " << p.quality.min_dihedral_deg << " deg)\n"
             << "solve: " << p.seconds.solve << " s, " << p.iterations << " iterations; mesh " << p.seconds.meshing
             << " s; mapping " << p.seconds.mapping << " s\n"

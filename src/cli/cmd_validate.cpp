@@ -5,6 +5,7 @@
 #include "cli/command.h"
 #include "pipeline/case_validation.h"
 #include "pipeline/validation_archive.h"
+#include "pipeline/validation_json.h"
 #include "report/number_text.h"
 
 namespace maxillo::cli {
@@ -20,7 +21,7 @@ struct ValidateOptions {
 
 pipeline::ValidationOptions validation_options(const ValidateOptions& o) {
   pipeline::ValidationOptions options;
-  options.soft_tissue.model = *pipeline::parse_model(o.model);
+  options.soft_tissue.model = *softtissue::parse_model(o.model);
   options.corresponding_points = !o.no_correspondence;
   return options;
 }
@@ -63,7 +64,7 @@ int run_validate(const ValidateOptions& o, const GlobalOptions& global) {
     return 0;
   }
   const auto validation = pipeline::validate_case(archive, case_id, options, o.out);
-  pipeline::store_validation(archive, validation);
+  pipeline::store_validation(archive, pipeline::validation_to_store(validation));
   if (global.json)
     std::cout << validation.summary.dump(2) << "\n";
   else

@@ -94,7 +94,7 @@ Uncertainty prediction_uncertainty(const SoftTissuePrediction& base, const Trian
   std::snprintf(label, sizeof label, "%s nu=%.2f", std::string(model_name(options.model)).c_str(),
                 options.poisson_ratio);
   band.runs.push_back(label);
-  auto add = [&](SoftTissueModel model, double poisson) {
+  auto add = [&](softtissue::SoftTissueModel model, double poisson) {
     SoftTissueOptions variant = options;
     variant.model = model;
     variant.poisson_ratio = poisson;
@@ -105,13 +105,13 @@ Uncertainty prediction_uncertainty(const SoftTissuePrediction& base, const Trian
   // The mass-spring model is left out: on the face models its answer lies ~6 mm (P95) from the
   // mass tensor and FEM answers, which agree to 0.1 mm; until that is understood it would
   // dominate the band (docs/ARCHITECTURE.md, open questions).
-  for (auto model : {SoftTissueModel::kMassTensor, SoftTissueModel::kLinearFem})
+  for (auto model : {softtissue::SoftTissueModel::kMassTensor, softtissue::SoftTissueModel::kLinearFem})
     if (model != options.model) add(model, options.poisson_ratio);
   // The Poisson ratios with linear FEM: near incompressibility (0.49) the point-wise iterations
   // of the mass tensor and mass-spring models converge so slowly that their stop criterion
   // would end them far from rest, and the band would show the solver, not the tissue.
   for (double poisson : {0.45, 0.49})
-    if (poisson != options.poisson_ratio) add(SoftTissueModel::kLinearFem, poisson);
+    if (poisson != options.poisson_ratio) add(softtissue::SoftTissueModel::kLinearFem, poisson);
 
   Eigen::MatrixX3d mean = Eigen::MatrixX3d::Zero(base.skin_displacement.rows(), 3);
   for (const auto& a : answers) mean += a;
@@ -164,24 +164,12 @@ SimulationResult simulate_case(Archive& archive, int64_t case_id, const Simulati
     result.uncertainty = prediction_uncertainty(result.prediction, result.skin_before, request.options);
 
   std::filesystem::create_directories(request.out);
-  const auto frame = anatomical_frame(landmarks);
-  result.views = render_soft_tissue_views(result.skin_before, result.prediction, frame, request.out);
-  SoftTissueSummary summary{request.plan_text.empty() ? request.plan.description : request.plan_text, request.options,
-                            soft_landmarks_of(landmarks)};
-  result.section = soft_tissue_section(result.prediction, result.views, frame, summary);
-  if (result.uncertainty) {
-    auto spread =
-        render_uncertainty_views(result.prediction.skin_after, result.uncertainty->spread_mm, frame, request.out);
-    result.section.blocks.push_back(
-        report::Paragraph{"Uncertainty band: how far the predicted skin moves when the model "
-                          "or the Poisson ratio changes (largest distance from the runs' mean)."});
-    result.section.blocks.push_back(spread);
-    result.section.blocks.push_back(
-        report::Note{"Uncertainty band: across " + std::to_string(result.uncertainty->runs.size()) +
-                     " runs (other models, Poisson ratio 0.45-0.49) the predicted skin position spreads by up to " +
-                     std::to_string(result.uncertainty->max_mm).substr(0, 4) + " mm (95th percentile " +
-                     std::to_string(result.uncertainty->p95_mm).substr(0, 4) + " mm) from their mean."});
-  }
+  result.frame = anatomical_frame(landmarks);
+  result.views = render_soft_tissue_views(result.skin_before, result.prediction, result.frame, request.out);
+  result.soft_landmarks = soft_landmarks_of(landmarks);
+  if (result.uncertainty)
+    result.uncertainty_views = render_uncertainty_views(result.prediction.skin_after, result.uncertainty->spread_mm,
+                                                        result.frame, request.out);
   result.summary = write_outputs(result, request.out, request.options);
   return result;
 }

@@ -14,9 +14,9 @@
 #include "pipeline/case_tissues.h"
 #include "pipeline/soft_tissue_prediction.h"
 #include "pipeline/simulation_summary.h"
-#include "pipeline/soft_tissue_section.h"
+#include "pipeline/soft_tissue_views.h"
+#include "geometry/anatomical_frame.h"
 #include "planning/plan.h"
-#include "report/report_model.h"
 
 namespace maxillo::pipeline {
 
@@ -44,10 +44,12 @@ struct SimulationResult {
   TriangleMesh skin_before;
   std::optional<Uncertainty> uncertainty;
   SoftTissueViewFiles views;
-  report::Section section;                   // "soft_tissue", ready for the report
-  std::vector<std::filesystem::path> files;  // predicted skin (vtp, stl, ply), model (vtu), json
-  SimulationSummary summary;                 // what simulation.json holds
-  bool reused_plan_application = false;      // the plan's moves came from `plan apply`'s stored result
+  std::vector<std::filesystem::path> uncertainty_views;  // frontal, lateral; with `uncertainty` only
+  AnatomicalFrame frame;                                 // of the case's landmarks: the views' cameras
+  LandmarkSet soft_landmarks;                            // soft_tissue_landmark_labels() the case has
+  std::vector<std::filesystem::path> files;              // predicted skin (vtp, stl, ply), model (vtu), json
+  SimulationSummary summary;                             // what simulation.json holds
+  bool reused_plan_application = false;                  // the plan's moves came from `plan apply`'s stored result
 };
 
 // The uncertainty band: the same model re-solved with every other model and with Poisson

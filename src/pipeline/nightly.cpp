@@ -12,6 +12,7 @@
 #include "pipeline/nightly_summary.h"
 #include "pipeline/nightly_worker.h"
 #include "pipeline/validation_archive.h"
+#include "pipeline/validation_json.h"
 
 namespace maxillo::pipeline {
 namespace {
@@ -54,7 +55,7 @@ NightlyCase process_case(Archive& archive, const EligibleCase& c, const NightlyO
   const auto started = std::chrono::steady_clock::now();
   const auto validation =
       validate_case(archive, c.case_id, options.validation, options.out / ("case-" + std::to_string(c.case_id)));
-  store_validation(archive, validation);
+  store_validation(archive, validation_to_store(validation));
   stored = find_validation(archive, c.case_id, c.key);
   result.outcome = NightlyOutcome::kValidated;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

@@ -1,11 +1,11 @@
 #include "pipeline/nightly_summary.h"
+#include "validation/face_regions.h"
 
 #include <map>
 
 #include "core/error.h"
 #include "core/temporary_folder.h"
 #include "core/version.h"
-#include "pipeline/validation_json.h"
 #include "pipeline/validation_section.h"
 #include "render/chart.h"
 #include "report/report_template.h"

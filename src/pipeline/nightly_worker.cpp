@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "pipeline/validation_archive.h"
+#include "pipeline/validation_json.h"
 
 namespace maxillo::pipeline {
 namespace {
@@ -112,7 +113,7 @@ NightlyCase work_on(Archive& archive, const std::string& item, const NightlyOpti
       log::warning("case ", case_id, ": ", result.reason);
       return result;
     }
-    store_validation(archive, validation);
+    store_validation(archive, validation_to_store(validation));
     result.outcome = NightlyOutcome::kValidated;
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     finish("done", "");

@@ -37,7 +37,7 @@ CasePlanResult apply_case_plan(Archive& archive, int64_t case_id, const std::fil
 
   std::filesystem::create_directories(out_dir);
   out.result_json = out_dir / "plan-result.json";
-  const Json json = plan_result_record_json(out.result, outputs);
+  const Json json = plan_result_record_json(out.result, plan_outputs_json(outputs));
   write_file_atomically(out.result_json, json.dump(2) + "\n");
   store_plan_result(archive, case_id, out.plan, landmarks, json);
   return out;

@@ -2,7 +2,6 @@
 
 #include "core/error.h"
 #include "core/json_reader.h"
-#include "pipeline/plan_outputs.h"
 
 namespace maxillo::pipeline {
 namespace {
@@ -105,9 +104,9 @@ planning::Plan read_plan(const Json& json, const std::string& source) {
 
 }  // namespace
 
-Json plan_result_record_json(const planning::PlanResult& result, const PlanOutputs& outputs) {
+Json plan_result_record_json(const planning::PlanResult& result, Json osteotomy) {
   Json json = planning::plan_result_json(result);
-  json["osteotomy"] = plan_outputs_json(outputs);
+  json["osteotomy"] = std::move(osteotomy);
   json["format_version"] = PlanResultRecord::kFormatVersion;
   return json;
 }

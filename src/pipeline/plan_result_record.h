@@ -81,11 +81,9 @@ struct PlanResultRecord {
   std::optional<Osteotomy> osteotomy;
 };
 
-struct PlanOutputs;  // plan_outputs.h
-
-// The stored document: planning::plan_result_json, the osteotomy outputs under "osteotomy" and
-// "format_version" (kFormatVersion).
-Json plan_result_record_json(const planning::PlanResult& result, const PlanOutputs& outputs);
+// The stored document: planning::plan_result_json, the osteotomy outputs (plan_outputs_json of
+// plan_outputs.h) under "osteotomy" and "format_version" (kFormatVersion).
+Json plan_result_record_json(const planning::PlanResult& result, Json osteotomy);
 
 // Reads a stored plan result; `source` names it in errors ("artefact 12 (plan result)").
 PlanResultRecord read_plan_result_record(const Json& json, const std::string& source);

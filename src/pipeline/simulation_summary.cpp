@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "core/json_reader.h"
+#include "softtissue/soft_tissue_model.h"
 
 namespace maxillo::pipeline {
 namespace {
@@ -72,7 +73,7 @@ SimulationSummary read_simulation_summary(const Json& json, const std::string& s
   SimulationSummary s;
   s.format_version = r.format_version(SimulationSummary::kFormatVersion);
   s.model = r.required_text("model");
-  if (!parse_model(s.model)) r.fail("model", "unknown model \"" + s.model + "\"");
+  if (!softtissue::parse_model(s.model)) r.fail("model", "unknown model \"" + s.model + "\"");
   const std::string application = r.required_text("plan_application");
   if (application != "stored" && application != "applied")
     r.fail("plan_application", "must be \"stored\" or \"applied\"");

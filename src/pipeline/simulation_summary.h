@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core/json.h"
-#include "pipeline/soft_tissue_prediction.h"
+#include "pipeline/soft_tissue_timings.h"
 
 namespace maxillo::pipeline {
 

@@ -23,15 +23,6 @@ double seconds_since(Clock::time_point start) { return std::chrono::duration<dou
 
 constexpr double kBelowMentonMm = 15;
 
-struct ModelNames {
-  SoftTissueModel model;
-  std::string_view name, title;
-};
-constexpr std::array kModels = {ModelNames{SoftTissueModel::kMassTensor, "mtm", "mass tensor model"},
-                                ModelNames{SoftTissueModel::kLinearFem, "fem", "linear FEM"},
-                                ModelNames{SoftTissueModel::kMassSpring, "msm", "mass-spring model"},
-                                ModelNames{SoftTissueModel::kNonlinearFem, "nfem", "non-linear FEM (neo-Hookean)"}};
-
 struct Solved {
   Eigen::MatrixX3d displacement;
   int iterations = 0;
@@ -55,7 +46,7 @@ Solved solve(const softtissue::TetMesh& mesh, const softtissue::BoundaryConditio
   softtissue::LocalIterationOptions local;
   local.gradient_threshold_mm = o.gradient_threshold_mm;
   local.max_iterations = o.max_sweeps;
-  if (o.model == SoftTissueModel::kNonlinearFem) {
+  if (o.model == softtissue::SoftTissueModel::kNonlinearFem) {
     assembly_seconds = 0;  // the tangent is assembled inside every Newton step
     softtissue::NewtonOptions newton;
     newton.load_steps = 2;
@@ -63,7 +54,7 @@ Solved solve(const softtissue::TetMesh& mesh, const softtissue::BoundaryConditio
     if (!result.converged) throw Error(ErrorCode::kProcessing, "non-linear FEM", "Newton's method did not converge");
     return {result.displacement, result.newton_iterations};
   }
-  if (o.model == SoftTissueModel::kMassSpring) {
+  if (o.model == softtissue::SoftTissueModel::kMassSpring) {
     const auto model = softtissue::make_van_gelder_model(mesh, o.young_modulus_mpa);
     assembly_seconds = seconds_since(start);
     auto result = softtissue::solve_mass_spring(model, bc, local);
@@ -71,7 +62,7 @@ Solved solve(const softtissue::TetMesh& mesh, const softtissue::BoundaryConditio
     return {result.displacement, result.iterations};
   }
   const auto blocks = softtissue::assemble_stiffness_blocks(mesh, material);
-  if (o.model == SoftTissueModel::kLinearFem) {
+  if (o.model == softtissue::SoftTissueModel::kLinearFem) {
     assembly_seconds = seconds_since(start);
     auto result = softtissue::solve_linear_static(blocks, bc);
     if (result.status != softtissue::SolveStatus::kConverged)
@@ -96,24 +87,6 @@ void map_to_skin(SoftTissuePrediction& prediction, const TriangleMesh& skin, dou
 }
 
 }  // namespace
-
-std::string_view model_name(SoftTissueModel model) {
-  for (const auto& m : kModels)
-    if (m.model == model) return m.name;
-  return "?";
-}
-
-std::string_view model_title(SoftTissueModel model) {
-  for (const auto& m : kModels)
-    if (m.model == model) return m.title;
-  return "?";
-}
-
-std::optional<SoftTissueModel> parse_model(std::string_view name) {
-  for (const auto& m : kModels)
-    if (m.name == name) return m.model;
-  return std::nullopt;
-}
 
 std::vector<softtissue::RegionPlane> default_face_region_planes(const LandmarkSet& landmarks) {
   const auto frame = anatomical_frame(landmarks);

@@ -18,20 +18,17 @@
 #include "ceph/landmark.h"
 #include "core/triangle_mesh.h"
 #include "core/volume.h"
+#include "pipeline/soft_tissue_timings.h"
 #include "softtissue/bone_attachment.h"
+#include "softtissue/soft_tissue_model.h"
 #include "softtissue/element_quality.h"
 #include "softtissue/face_region.h"
 #include "tetmesh/labelled_tet_mesher.h"
 
 namespace maxillo::pipeline {
 
-enum class SoftTissueModel { kMassTensor, kLinearFem, kMassSpring, kNonlinearFem };
-std::string_view model_name(SoftTissueModel model);  // "mtm", "fem", "msm", "nfem"
-std::optional<SoftTissueModel> parse_model(std::string_view name);
-std::string_view model_title(SoftTissueModel model);  // "mass tensor model", ...
-
 struct SoftTissueOptions {
-  SoftTissueModel model = SoftTissueModel::kMassTensor;
+  softtissue::SoftTissueModel model = softtissue::SoftTissueModel::kMassTensor;
   double poisson_ratio = 0.46;
   double young_modulus_mpa = 0.003;     // scales forces only: the static answer does not depend on it
   double gradient_threshold_mm = 1e-3;  // local dynamic stop criterion (mass tensor, mass-spring)
@@ -48,11 +45,6 @@ struct SoftTissueInput {
   const TriangleMesh* skin = nullptr;          // dense pre-operative skin surface
   LandmarkSet landmarks;                       // for the region's planes
   std::map<uint8_t, Eigen::Isometry3d> moves;  // segment label -> planned rigid move
-};
-
-struct SoftTissueTimings {
-  double region = 0, meshing = 0, attachment = 0, assembly = 0, solve = 0, mapping = 0;
-  double total() const { return region + meshing + attachment + assembly + solve + mapping; }
 };
 
 // How the face's tet mesh met its budget (tetmesh::TetMeshingResult's numbers): a mesh over its

@@ -5,32 +5,12 @@
 #include <cmath>
 #include <cstdio>
 
-#include "render/render_views.h"
-#include "render/view_files.h"
-
 #include "report/number_text.h"
 
 namespace maxillo::pipeline {
 namespace {
 
-constexpr std::array kViews = {render::StandardView::Frontal, render::StandardView::Lateral,
-                               render::StandardView::Oblique};
-constexpr int kImagePixels = 640;
-
 using report::fixed;
-
-render::Bounds union_bounds(const TriangleMesh& a, const TriangleMesh& b) {
-  render::Scene both;
-  both.meshes.push_back({&a, render::kSkinTone, 1.0, {}});
-  both.meshes.push_back({&b, render::kSkinTone, 1.0, {}});
-  return render::scene_bounds(both);
-}
-
-std::vector<std::filesystem::path> pngs(const std::vector<render::ViewFile>& files) {
-  std::vector<std::filesystem::path> paths;
-  for (const auto& f : files) paths.push_back(f.png);
-  return paths;
-}
 
 std::string count_text(const softtissue::BoundaryConditions& bc) {
   using softtissue::NodeConstraint;
@@ -59,68 +39,6 @@ report::Table landmark_table(const SoftTissuePrediction& prediction, const Anato
 }
 
 }  // namespace
-
-const std::vector<std::string>& soft_tissue_landmark_labels() {
-  static const std::vector<std::string> labels{"NS", "Prn", "Sn", "Ls", "Li", "PogS"};
-  return labels;
-}
-
-SoftTissueViewFiles render_soft_tissue_views(const TriangleMesh& skin_before, const SoftTissuePrediction& prediction,
-                                             const AnatomicalFrame& frame, const std::filesystem::path& folder) {
-  std::filesystem::create_directories(folder);
-  const auto bounds = union_bounds(skin_before, prediction.skin_after);  // the same cameras for all
-  render::RenderSettings settings;
-  settings.size = {kImagePixels, kImagePixels};
-
-  SoftTissueViewFiles files;
-  render::VertexScalars magnitude;
-  magnitude.values.resize(size_t(prediction.skin_displacement.rows()));
-  for (Eigen::Index v = 0; v < prediction.skin_displacement.rows(); ++v) {
-    magnitude.values[size_t(v)] = prediction.skin_displacement.row(v).norm();
-    files.max_displacement_mm = std::max(files.max_displacement_mm, magnitude.values[size_t(v)]);
-  }
-  magnitude.range_min = 0;
-  // The colour scale ends at the 99.5th percentile: a few vertices inside the nostrils or at a
-  // cut may move more, and would otherwise wash out the face's colours.
-  std::vector<double> sorted = magnitude.values;
-  const auto rank = size_t(0.995 * double(sorted.size() ? sorted.size() - 1 : 0));
-  std::nth_element(sorted.begin(), sorted.begin() + long(rank), sorted.end());
-  magnitude.range_max = std::max(1.0, std::ceil(sorted.empty() ? 0.0 : sorted[rank]));
-  magnitude.map = render::ColourMap::Sequential;
-  magnitude.title = "displacement (mm)";
-
-  render::Scene before, after, displacement;
-  before.meshes.push_back({&skin_before, render::kSkinTone, 1.0, {}});
-  after.meshes.push_back({&prediction.skin_after, render::kSkinTone, 1.0, {}});
-  displacement.meshes.push_back({&prediction.skin_after, render::kSkinTone, 1.0, magnitude});
-  files.before =
-      pngs(render::render_view_files(before, frame, kViews, folder, "soft-tissue-before-", settings, bounds));
-  files.after = pngs(render::render_view_files(after, frame, kViews, folder, "soft-tissue-after-", settings, bounds));
-  files.displacement = pngs(
-      render::render_view_files(displacement, frame, kViews, folder, "soft-tissue-displacement-", settings, bounds));
-  return files;
-}
-
-report::ImageGrid render_uncertainty_views(const TriangleMesh& skin_after, const std::vector<double>& spread_mm,
-                                           const AnatomicalFrame& frame, const std::filesystem::path& folder) {
-  const std::array views{render::StandardView::Frontal, render::StandardView::Lateral};
-  render::VertexScalars spread;
-  spread.values = spread_mm;
-  spread.range_min = 0;
-  spread.range_max = std::max(0.5, std::ceil(2 * *std::max_element(spread_mm.begin(), spread_mm.end())) / 2);
-  spread.map = render::ColourMap::Sequential;
-  spread.title = "spread (mm)";
-  render::Scene scene;
-  scene.meshes.push_back({&skin_after, render::kSkinTone, 1.0, spread});
-  render::RenderSettings settings;
-  settings.size = {kImagePixels, kImagePixels};
-  const auto files = render::render_view_files(scene, frame, views, folder, "soft-tissue-uncertainty-", settings);
-  report::ImageGrid grid;
-  grid.per_row = 2;
-  const std::array<std::string, 2> names{"frontal", "right lateral"};
-  for (size_t v = 0; v < files.size(); ++v) grid.figures.push_back({files[v].png, "Uncertainty band, " + names[v]});
-  return grid;
-}
 
 report::Section soft_tissue_section(const SoftTissuePrediction& prediction, const SoftTissueViewFiles& views,
                                     const AnatomicalFrame& frame, const SoftTissueSummary& summary) {
@@ -170,6 +88,29 @@ report::Section soft_tissue_section(const SoftTissuePrediction& prediction, cons
                           "(forward, up and to the patient's left in the anatomical frame):"});
     section.blocks.push_back(landmark_table(prediction, frame, summary.soft_landmarks));
   }
+  return section;
+}
+
+report::Section soft_tissue_section(const SimulationResult& result, const SimulationRequest& request) {
+  const SoftTissueSummary summary{request.plan_text.empty() ? request.plan.description : request.plan_text,
+                                  request.options, result.soft_landmarks};
+  report::Section section = soft_tissue_section(result.prediction, result.views, result.frame, summary);
+  if (!result.uncertainty) return section;
+  const auto& band = *result.uncertainty;
+  section.blocks.push_back(
+      report::Paragraph{"Uncertainty band: how far the predicted skin moves when the model "
+                        "or the Poisson ratio changes (largest distance from the runs' mean)."});
+  report::ImageGrid grid;
+  grid.per_row = 2;
+  const std::array<std::string, 2> names{"frontal", "right lateral"};
+  for (size_t v = 0; v < result.uncertainty_views.size() && v < names.size(); ++v)
+    grid.figures.push_back({result.uncertainty_views[v], "Uncertainty band, " + names[v]});
+  section.blocks.push_back(grid);
+  section.blocks.push_back(
+      report::Note{"Uncertainty band: across " + std::to_string(band.runs.size()) +
+                   " runs (other models, Poisson ratio 0.45-0.49) the predicted skin position spreads by up to " +
+                   std::to_string(band.max_mm).substr(0, 4) + " mm (95th percentile " +
+                   std::to_string(band.p95_mm).substr(0, 4) + " mm) from their mean."});
   return section;
 }
 

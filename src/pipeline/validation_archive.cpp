@@ -19,12 +19,12 @@ void store_image(Archive& archive, int64_t case_id, const std::string& key, cons
       NewArtefact{case_id, kImageKind, sha, "image/png", key, Json{{"name", png.stem().string()}}.dump()});
 }
 
-Json face_distances_json(const CaseValidation& v) {
+Json face_distances_json(const ValidationToStore& v) {
   Json closest = Json::array(), regions = Json::array();
-  for (size_t i = 0; i < v.closest_mm.size(); ++i) {
-    if (std::isnan(v.closest_mm[i])) continue;
-    closest.push_back(std::round(v.closest_mm[i] * 1000) / 1000);  // micrometres are plenty
-    regions.push_back(validation::region_name(v.regions[i]));
+  for (size_t i = 0; i < v.face_closest_mm.size(); ++i) {
+    if (std::isnan(v.face_closest_mm[i])) continue;
+    closest.push_back(std::round(v.face_closest_mm[i] * 1000) / 1000);  // micrometres are plenty
+    regions.push_back(v.face_regions.at(i));
   }
   return Json{{"closest_mm", closest}, {"region", regions}};
 }
@@ -65,9 +65,8 @@ std::optional<StoredValidation> load(const Archive& archive, const std::vector<A
 
 }  // namespace
 
-void store_validation(Archive& archive, const CaseValidation& v) {
-  for (const auto& png : v.error_maps) store_image(archive, v.case_id, v.inputs_hash, png);
-  store_image(archive, v.case_id, v.inputs_hash, v.profile_png);
+void store_validation(Archive& archive, const ValidationToStore& v) {
+  for (const auto& png : v.pictures) store_image(archive, v.case_id, v.inputs_hash, png);
   archive.add_artefact(NewArtefact{v.case_id, kDistancesKind, archive.store_object(face_distances_json(v).dump()),
                                    "application/json", v.inputs_hash});
   archive.add_artefact(

@@ -12,7 +12,6 @@
 
 #include "archive/archive.h"
 #include "core/json.h"
-#include "pipeline/case_validation.h"
 #include "pipeline/validation_record.h"
 
 namespace maxillo::pipeline {
@@ -27,7 +26,18 @@ struct StoredValidation {
   std::vector<std::string> face_regions;  // the region of each
 };
 
-void store_validation(Archive& archive, const CaseValidation& validation);
+// What store_validation writes for one validation (validation_json.h validation_to_store makes
+// it from a case's validation).
+struct ValidationToStore {
+  int64_t case_id = 0;
+  std::string inputs_hash;                      // case_validation.h validation_inputs_hash
+  Json summary;                                 // validation.json's document
+  std::vector<std::filesystem::path> pictures;  // PNGs, each stored under its file's stem ("profile", ...)
+  std::vector<double> face_closest_mm;          // per face vertex; NaN (no distance) is left out
+  std::vector<std::string> face_regions;        // the region of each, by name
+};
+
+void store_validation(Archive& archive, const ValidationToStore& validation);
 
 // The validation of the case made from exactly these inputs, if stored.
 std::optional<StoredValidation> find_validation(const Archive& archive, int64_t case_id,

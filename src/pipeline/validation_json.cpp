@@ -63,4 +63,16 @@ Json validation_json(const CaseValidation& v, const CaseContents& contents) {
               {"seconds", v.seconds}};
 }
 
+ValidationToStore validation_to_store(const CaseValidation& validation) {
+  ValidationToStore stored;
+  stored.case_id = validation.case_id;
+  stored.inputs_hash = validation.inputs_hash;
+  stored.summary = validation.summary;
+  stored.pictures = validation.error_maps;
+  stored.pictures.push_back(validation.profile_png);
+  stored.face_closest_mm = validation.closest_mm;
+  for (const auto region : validation.regions) stored.face_regions.emplace_back(validation::region_name(region));
+  return stored;
+}
+
 }  // namespace maxillo::pipeline

@@ -6,11 +6,15 @@
 
 #include "core/json.h"
 #include "pipeline/case_validation.h"
+#include "pipeline/validation_archive.h"
 
 namespace maxillo::pipeline {
 
 Json validation_json(const CaseValidation& validation, const CaseContents& contents);
 
 Json to_json(const validation::DistanceStatistics& s);
+
+// What the archive keeps of `validation` (validation_archive.h store_validation).
+ValidationToStore validation_to_store(const CaseValidation& validation);
 
 }  // namespace maxillo::pipeline

@@ -1,6 +1,5 @@
 #include "pipeline/validation_section.h"
 
-#include "pipeline/validation_json.h"
 #include "report/number_text.h"
 
 namespace maxillo::pipeline {

@@ -134,7 +134,7 @@ TEST(PlanResultRecord, ReadsBackWhatTheReportShowsAndRefusesDamage) {
   PlanOutputs outputs;
   outputs.segments = {{planning::Segment::kMaxilla, 1234, 5.5}};
   outputs.bone_voxels = 5000;
-  const Json stored = plan_result_record_json(result, outputs);
+  const Json stored = plan_result_record_json(result, plan_outputs_json(outputs));
   store_plan_result(c.archive, c.case_id, plan, phantom.landmarks, stored);
 
   const auto record = latest_plan_result(c.archive, c.case_id);

@@ -36,7 +36,7 @@ const Case& phantom_case() {
   return c;
 }
 
-SoftTissuePrediction predict(SoftTissueModel model, double advancement_mm) {
+SoftTissuePrediction predict(softtissue::SoftTissueModel model, double advancement_mm) {
   const auto& c = phantom_case();
   SoftTissueInput input{&c.phantom.labels, &c.cut.segments, &c.skin, c.phantom.landmarks, {}};
   input.moves[uint8_t(planning::Segment::kMaxilla)] = Eigen::Translation3d(0, -advancement_mm, 0);  // anterior = -y
@@ -55,7 +55,7 @@ double forward_at(const SoftTissuePrediction& p, const std::string& label) {
 }
 
 TEST(PhantomPrediction, AdvancementMovesLipAndNoseBaseButNotForeheadOrChin) {
-  auto p = predict(SoftTissueModel::kLinearFem, 6);
+  auto p = predict(softtissue::SoftTissueModel::kLinearFem, 6);
   EXPECT_LE(p.mesh.tet_count(), 40000);
   EXPECT_EQ(softtissue::count_non_positive_tets(p.mesh), 0);
   EXPECT_GT(p.quality.min_dihedral_deg, 3.0);
@@ -70,9 +70,9 @@ TEST(PhantomPrediction, AdvancementMovesLipAndNoseBaseButNotForeheadOrChin) {
 }
 
 TEST(PhantomPrediction, ConvergedMassTensorMatchesLinearFem) {
-  auto fem = predict(SoftTissueModel::kLinearFem, 6);
+  auto fem = predict(softtissue::SoftTissueModel::kLinearFem, 6);
   auto options = SoftTissueOptions{};
-  options.model = SoftTissueModel::kMassTensor;
+  options.model = softtissue::SoftTissueModel::kMassTensor;
   options.gradient_threshold_mm = 1e-6;
   auto mtm = resolve_soft_tissue(fem, phantom_case().skin, options);
   EXPECT_LT((mtm.node_displacement - fem.node_displacement).rowwise().norm().maxCoeff(), 0.01);
@@ -81,9 +81,9 @@ TEST(PhantomPrediction, ConvergedMassTensorMatchesLinearFem) {
 // A point-wise model stopped by its sweep limit while points still move is not an answer: the
 // prediction is an error naming the model and how far from rest it was, never a face.
 TEST(PhantomPrediction, AModelNotAtRestIsAnErrorNotAFace) {
-  const auto fem = predict(SoftTissueModel::kLinearFem, 6);
-  for (auto [model, name] : {std::pair{SoftTissueModel::kMassTensor, "mass tensor model"},
-                             std::pair{SoftTissueModel::kMassSpring, "mass-spring model"}}) {
+  const auto fem = predict(softtissue::SoftTissueModel::kLinearFem, 6);
+  for (auto [model, name] : {std::pair{softtissue::SoftTissueModel::kMassTensor, "mass tensor model"},
+                             std::pair{softtissue::SoftTissueModel::kMassSpring, "mass-spring model"}}) {
     SoftTissueOptions options;
     options.model = model;
     options.max_sweeps = 2;
