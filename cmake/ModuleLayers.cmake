@@ -20,9 +20,18 @@ set(maxillo_allowed_links_mesh core geometry)
 set(maxillo_allowed_links_render core geometry)
 set(maxillo_allowed_links_report core)
 set(maxillo_allowed_links_tetmesh core geometry softtissue)
-set(maxillo_allowed_links_pipeline
-  core geometry ceph occlusion softtissue validation planning sample archive imaging mesh render
-  report tetmesh)
+# The workflows above the toolkits: the stored records, the casework shared by the three jobs,
+# the report sections, then the jobs themselves, the benchmarks and the demo.
+set(maxillo_below_records core geometry ceph occlusion softtissue validation planning sample archive net imaging mesh
+                          render report tetmesh)
+set(maxillo_allowed_links_records core geometry ceph archive imaging mesh planning softtissue validation)
+set(maxillo_allowed_links_casework ${maxillo_below_records} records)
+set(maxillo_allowed_links_sections ${maxillo_allowed_links_casework} casework)
+set(maxillo_allowed_links_consultation ${maxillo_allowed_links_sections} sections)
+set(maxillo_allowed_links_followup ${maxillo_allowed_links_sections} sections)
+set(maxillo_allowed_links_nightly ${maxillo_allowed_links_sections} sections)
+set(maxillo_allowed_links_bench ${maxillo_allowed_links_casework} casework)
+set(maxillo_allowed_links_demo ${maxillo_allowed_links_sections} sections consultation followup nightly)
 
 set(maxillo_numerical_modules core geometry ceph occlusion softtissue validation planning)
 # Anything whose name matches is a toolkit the numerical modules must not link.
@@ -68,7 +77,8 @@ endfunction()
 
 function(maxillo_check_module_layers)
   foreach(module IN ITEMS core geometry ceph occlusion softtissue validation planning sample archive net
-                          imaging mesh render report tetmesh pipeline)
+                          imaging mesh render report tetmesh records casework sections consultation followup
+                          nightly bench demo)
     if(NOT TARGET maxillo_${module})
       message(FATAL_ERROR "ModuleLayers: no target maxillo_${module}")
     endif()

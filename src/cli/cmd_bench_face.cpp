@@ -12,7 +12,7 @@
 
 #include "cli/command.h"
 #include "mesh/surface_extraction.h"
-#include "pipeline/soft_tissue_prediction.h"
+#include "casework/soft_tissue_prediction.h"
 #include "planning/osteotomy.h"
 #include "sample/phantom.h"
 #include "softtissue/gaussian_mapping.h"
@@ -63,15 +63,15 @@ void run_face_bench(const FaceBenchArguments& args) {
   std::printf("phantom %.1f mm voxels; skin %lld vertices; Le Fort I advancement %.1f mm; medians of %d runs\n",
               args.spacing_mm, (long long)skin.vertex_count(), args.advancement_mm, args.runs);
 
-  pipeline::SoftTissueInput input{&phantom.labels, &cut.segments, &skin, phantom.landmarks, {}};
+  casework::SoftTissueInput input{&phantom.labels, &cut.segments, &skin, phantom.landmarks, {}};
   input.moves[uint8_t(planning::Segment::kMaxilla)] = Eigen::Translation3d(0, -args.advancement_mm, 0);
-  pipeline::SoftTissueOptions options;
+  casework::SoftTissueOptions options;
   options.meshing.max_tets = args.max_tets;
   options.meshing.cell_size_mm = args.cell_mm;
-  pipeline::SoftTissuePrediction base;
+  casework::SoftTissuePrediction base;
   std::vector<double> meshing;
   for (int r = 0; r < args.runs; ++r) {
-    base = pipeline::predict_soft_tissue(input, options);
+    base = casework::predict_soft_tissue(input, options);
     meshing.push_back(base.seconds.meshing);
   }
   std::sort(meshing.begin(), meshing.end());
@@ -84,9 +84,9 @@ void run_face_bench(const FaceBenchArguments& args) {
     auto variant = options;
     variant.model = model;
     std::vector<double> solve, assembly;
-    pipeline::SoftTissuePrediction p;
+    casework::SoftTissuePrediction p;
     for (int r = 0; r < args.runs; ++r) {
-      p = pipeline::resolve_soft_tissue(base, skin, variant);
+      p = casework::resolve_soft_tissue(base, skin, variant);
       solve.push_back(p.seconds.solve);
       assembly.push_back(p.seconds.assembly);
     }

@@ -17,10 +17,10 @@
 #include "cli/command.h"
 #include "core/json.h"
 #include "core/log.h"
-#include "pipeline/case_landmarks.h"
-#include "pipeline/case_validation.h"
-#include "pipeline/nightly.h"
-#include "pipeline/plan_archive.h"
+#include "records/case_landmarks.h"
+#include "casework/case_validation.h"
+#include "nightly/nightly.h"
+#include "records/plan_archive.h"
 
 namespace maxillo::cli {
 namespace {
@@ -43,8 +43,8 @@ double seconds_of(const std::function<void()>& work) {
 void make_every_case_eligible(Archive& archive) {
   const auto plan = planning::distraction_plan(planning::MaxillaryTarget{}, "bench");
   for (const auto& c : archive.cases()) {
-    pipeline::store_plan(archive, c.id, plan);
-    pipeline::attach_landmarks(archive, c.id, {{"S", {0, 0, 0}}, {"N", {0, -70, 10}}}, "bench");
+    records::store_plan(archive, c.id, plan);
+    records::attach_landmarks(archive, c.id, {{"S", {0, 0, 0}}, {"N", {0, -70, 10}}}, "bench");
   }
 }
 
@@ -71,12 +71,12 @@ void run_bench_index(const IndexArguments& args, CommandContext& ctx) {
       {"resolve Patient ID", [&] { (void)archive.resolve("P000001"); }},
       {"nightly scan",
        [&] {  // `nightly --summary-only`: the scan of every case, nothing to validate or summarise
-         pipeline::NightlyOptions nightly;
+         nightly::NightlyOptions nightly;
          nightly.out = workdir / "nightly";
          nightly.summary_only = true;
          const auto shown = log::level();
          log::set_level(std::min(shown, log::Level::Warning));  // not a line per case
-         eligible = pipeline::run_nightly(archive, nightly).cases.size();
+         eligible = nightly::run_nightly(archive, nightly).cases.size();
          log::set_level(shown);
        }},
   };

@@ -16,7 +16,7 @@
 #include "core/temporary_folder.h"
 #include "imaging/rigid_registration.h"
 #include "imaging/volume_resample.h"
-#include "pipeline/registration_benchmark.h"
+#include "bench/registration_benchmark.h"
 
 namespace maxillo::cli {
 namespace {
@@ -53,7 +53,7 @@ Spread spread_of(const std::vector<Eigen::Isometry3d>& results, const Eigen::Mat
   for (const auto& result : results) {
     const Eigen::AngleAxisd between(result.linear() * results.front().linear().transpose());
     spread.degrees = std::max(spread.degrees, std::abs(between.angle()) * 180 / M_PI);
-    spread.mm = std::max(spread.mm, pipeline::rms_error_mm(skin, result, results.front().inverse()));
+    spread.mm = std::max(spread.mm, bench::rms_error_mm(skin, result, results.front().inverse()));
   }
   return spread;
 }
@@ -75,12 +75,12 @@ void run_register_bench(const RegisterBenchArguments& args, CommandContext& ctx)
               << " (set MAXILLO_SHARED_DATA or --data to the folder holding cthead-stanford)\n";
     return;
   }
-  const Volume fixed = pipeline::read_cadaver_head(folder);
-  const Eigen::Isometry3d known = pipeline::known_rigid_move(fixed.geometry, args.rotation_deg, args.translation_mm);
+  const Volume fixed = bench::read_cadaver_head(folder);
+  const Eigen::Isometry3d known = bench::known_rigid_move(fixed.geometry, args.rotation_deg, args.translation_mm);
   const Volume moving = resample_rigid(fixed, known, fixed.geometry);
-  const Eigen::MatrixX3d skin = pipeline::skin_vertices(fixed);
+  const Eigen::MatrixX3d skin = bench::skin_vertices(fixed);
   const RegistrationBox box = cranial_registration_box(fixed);
-  const bool with_elastix = args.elastix && pipeline::elastix_available();
+  const bool with_elastix = args.elastix && bench::elastix_available();
   if (!ctx.global.json) {
     std::printf("cadaver head %dx%dx%d, moved by %.1f deg and %.1f mm; %ld skin vertices; box z %.1f..%.1f mm\n",
                 fixed.geometry.size.x(), fixed.geometry.size.y(), fixed.geometry.size.z(), args.rotation_deg,
@@ -99,15 +99,15 @@ void run_register_bench(const RegisterBenchArguments& args, CommandContext& ctx)
     const RigidRegistrationResult result = register_rigid(fixed, moving, options);
     answers.push_back(result.moving_to_fixed);
     ours.seconds.push_back(result.seconds);
-    ours.rms_mm.push_back(pipeline::rms_error_mm(skin, result.moving_to_fixed, known));
+    ours.rms_mm.push_back(bench::rms_error_mm(skin, result.moving_to_fixed, known));
     iterations.push_back(result.iterations);
     if (!ctx.global.json)
       std::printf("run %d: ours %.2f s, %d iterations, RMS %.4f mm", run + 1, ours.seconds.back(), result.iterations,
                   ours.rms_mm.back());
     if (with_elastix) {
-      const auto e = pipeline::run_elastix(fixed, moving, box, scratch / ("elastix" + std::to_string(run)));
+      const auto e = bench::run_elastix(fixed, moving, box, scratch / ("elastix" + std::to_string(run)));
       elastix.seconds.push_back(e->seconds);
-      elastix.rms_mm.push_back(pipeline::rms_error_mm(skin, e->moving_to_fixed, known));
+      elastix.rms_mm.push_back(bench::rms_error_mm(skin, e->moving_to_fixed, known));
       if (!ctx.global.json) std::printf("; elastix %.2f s, RMS %.4f mm", e->seconds, elastix.rms_mm.back());
     }
     if (!ctx.global.json) std::printf("\n");

@@ -10,8 +10,8 @@
 #include "core/error.h"
 #include "core/json.h"
 #include "imaging/volume_assembly.h"
-#include "pipeline/registration_benchmark.h"
-#include "pipeline/surface_benchmark.h"
+#include "bench/registration_benchmark.h"
+#include "bench/surface_benchmark.h"
 #include "sample/phantom.h"
 
 namespace maxillo::cli {
@@ -35,7 +35,7 @@ Volume load(const SurfacesBenchArguments& args, std::string& name, double& secon
   Volume volume;
   if (args.cadaver) {
     name = "cadaver head";
-    volume = pipeline::read_cadaver_head(cadaver_slices());
+    volume = bench::read_cadaver_head(cadaver_slices());
   } else if (!args.series.empty()) {
     name = args.series.string();
     std::vector<std::filesystem::path> files;
@@ -53,7 +53,7 @@ Volume load(const SurfacesBenchArguments& args, std::string& name, double& secon
   return volume;
 }
 
-Json pair_json(const pipeline::SurfacePair& p) {
+Json pair_json(const bench::SurfacePair& p) {
   return {{"skin_seconds", p.skin_seconds},
           {"bone_seconds", p.bone_seconds},
           {"skin_triangles", p.skin_triangles},
@@ -69,7 +69,7 @@ Json distances_json(const validation::DistanceStatistics& d) {
           {"max_abs_mm", d.max_absolute}};
 }
 
-void print(const std::string& name, const pipeline::SurfaceBenchmark& b) {
+void print(const std::string& name, const bench::SurfaceBenchmark& b) {
   const auto& g = b.geometry;
   std::printf("%s: %d x %d x %d voxels (%.1f million), %.2f x %.2f x %.2f mm; read in %.2f s\n", name.c_str(),
               g.size.x(), g.size.y(), g.size.z(), double(g.voxel_count()) / 1e6, g.spacing.x(), g.spacing.y(),
@@ -94,7 +94,7 @@ void run(const SurfacesBenchArguments& args, CommandContext& ctx) {
   std::string name;
   double seconds = 0;
   const Volume volume = load(args, name, seconds);
-  const auto result = pipeline::benchmark_surfaces(volume, seconds, args.compare_native);
+  const auto result = bench::benchmark_surfaces(volume, seconds, args.compare_native);
   if (!ctx.global.json) {
     print(name, result);
     return;

@@ -9,8 +9,8 @@
 #include "cli/command.h"
 #include "core/error.h"
 #include "core/atomic_file.h"
-#include "pipeline/case_landmarks.h"
-#include "pipeline/ceph_sample_cohort.h"
+#include "records/case_landmarks.h"
+#include "followup/ceph_sample_cohort.h"
 
 namespace maxillo::cli {
 namespace {
@@ -37,13 +37,13 @@ int run_measure(const MeasureOptions& options, const GlobalOptions& global) {
 struct AddOptions {
   std::string case_text;
   std::filesystem::path file;
-  pipeline::TimePoint time_point;
+  records::TimePoint time_point;
   GeometryOptions geometry;
 };
 
 int run_add(const AddOptions& options, const GlobalOptions& global) {
   auto landmarks = read_landmarks(options.file);
-  pipeline::LandmarkFrame frame{options.geometry.geometry, options.geometry.axes()};
+  records::LandmarkFrame frame{options.geometry.geometry, options.geometry.axes()};
   if (frame.geometry == LandmarkGeometry::kAuto) {
     bool planar = !landmarks.empty();
     for (const auto& lm : landmarks) planar = planar && lm.position.z() == 0;
@@ -51,9 +51,9 @@ int run_add(const AddOptions& options, const GlobalOptions& global) {
   }
   auto archive = Archive::open(resolve_archive_dir(global));
   auto case_id = archive.resolve_case(options.case_text);
-  pipeline::attach_landmarks(archive, case_id, landmarks, options.file.filename().string(), options.time_point, frame);
+  records::attach_landmarks(archive, case_id, landmarks, options.file.filename().string(), options.time_point, frame);
   int version = 0;
-  for (const auto& stored : pipeline::landmark_history(archive, case_id))
+  for (const auto& stored : records::landmark_history(archive, case_id))
     if (stored.time_point.label == options.time_point.label) version = stored.version;
   if (global.json)
     std::cout << Json{{"case", case_id},
@@ -95,8 +95,8 @@ int run_classify_isbi(const std::filesystem::path& table, const GlobalOptions& g
 }
 
 int run_sample_cohort(const std::filesystem::path& out, const GlobalOptions& global) {
-  auto cohort = pipeline::sample_cohort();
-  write_file_atomically(out, pipeline::format_cohort_csv(cohort));
+  auto cohort = followup::sample_cohort();
+  write_file_atomically(out, followup::format_cohort_csv(cohort));
   if (global.json)
     std::cout << Json{{"cohort", out.string()}, {"patients", cohort.size()}}.dump(2) << "\n";
   else
@@ -129,7 +129,7 @@ void attach_ceph(CLI::App& app, CommandContext& ctx) {
       ->check(CLI::ExistingFile);
   add->add_option("--time-point", add_options->time_point.label, "free label: pre, post, 6M, 12M, ...")->required();
   add->add_option("--date", add_options->time_point.date, "date of the image, YYYY-MM-DD")
-      ->check(CLI::Validator([](std::string& s) { return pipeline::is_iso_date(s) ? "" : "date must be YYYY-MM-DD"; },
+      ->check(CLI::Validator([](std::string& s) { return records::is_iso_date(s) ? "" : "date must be YYYY-MM-DD"; },
                              "YYYY-MM-DD"));
   add_geometry_options(*add, add_options->geometry);
   add->callback([add_options, &ctx] { ctx.exit_code = run_add(*add_options, ctx.global); });

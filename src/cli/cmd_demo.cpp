@@ -11,22 +11,22 @@
 #include "core/temporary_folder.h"
 #include "net/loopback_server.h"
 #include "net/store_client.h"
-#include "pipeline/case_landmarks.h"
-#include "pipeline/ceph_sample_cohort.h"
-#include "pipeline/cohort_archive.h"
-#include "pipeline/cohort_report.h"
-#include "pipeline/case_simulation.h"
-#include "pipeline/soft_tissue_section.h"
-#include "pipeline/consultation_report.h"
-#include "pipeline/phantom_occlusion.h"
-#include "pipeline/nightly.h"
-#include "pipeline/plan_case.h"
-#include "pipeline/planned_case.h"
-#include "pipeline/report_dicom.h"
-#include "pipeline/synthetic_postop_case.h"
-#include "pipeline/validation_archive.h"
-#include "pipeline/validation_json.h"
-#include "pipeline/sample_case.h"
+#include "records/case_landmarks.h"
+#include "followup/ceph_sample_cohort.h"
+#include "records/cohort_archive.h"
+#include "followup/cohort_report.h"
+#include "casework/case_simulation.h"
+#include "sections/soft_tissue_section.h"
+#include "consultation/consultation_report.h"
+#include "demo/phantom_occlusion.h"
+#include "nightly/nightly.h"
+#include "casework/plan_case.h"
+#include "casework/planned_case.h"
+#include "consultation/report_dicom.h"
+#include "casework/synthetic_postop_case.h"
+#include "records/validation_archive.h"
+#include "casework/validation_json.h"
+#include "casework/sample_case.h"
 
 namespace maxillo::cli {
 namespace {
@@ -94,7 +94,7 @@ net::StorageServerCounts push_over_dicom(const std::vector<std::filesystem::path
 int run_demo(const DemoOptions& options, const GlobalOptions& global) {
   StageClock clock;
   std::filesystem::create_directories(options.out);
-  auto sample = pipeline::write_sample_case(options.skeletal_class, 1.0, options.out / "sample");
+  auto sample = casework::write_sample_case(options.skeletal_class, 1.0, options.out / "sample");
   clock.mark("generate phantom");
 
   // The phantom arrives as a patient's CT does in a clinic: pushed by the scanner (C-STORE) to
@@ -104,59 +104,59 @@ int run_demo(const DemoOptions& options, const GlobalOptions& global) {
   auto archive = Archive::open(archive_dir);
   clock.mark("receive over DICOM");
 
-  auto case_id = archive.resolve_case(pipeline::kPhantomPatientId);
+  auto case_id = archive.resolve_case(casework::kPhantomPatientId);
   // Dated follow-up (the sample cohort's first patient) for the follow-up table and Wits chart;
   // attached first so the phantom's own set stays the newest (it frames the views).
-  pipeline::CohortImportReport follow_up;
-  pipeline::attach_cohort_time_points(archive, case_id,
-                                      pipeline::sample_patient_follow_up(pipeline::sample_cohort_patients()[0], 2001),
-                                      {}, "sample cohort P01 (phantoms)", follow_up);
-  pipeline::attach_landmarks(archive, case_id, sample.landmarks, "phantom (analytic)");
-  pipeline::ConsultationOptions report_options;
-  report_options.occlusion = pipeline::phantom_occlusion_section(archive, case_id, options.skeletal_class,
-                                                                 sample.landmarks, options.out / "occlusion");
+  records::CohortImportReport follow_up;
+  records::attach_cohort_time_points(archive, case_id,
+                                     followup::sample_patient_follow_up(followup::sample_cohort_patients()[0], 2001),
+                                     {}, "sample cohort P01 (phantoms)", follow_up);
+  records::attach_landmarks(archive, case_id, sample.landmarks, "phantom (analytic)");
+  consultation::ConsultationOptions report_options;
+  report_options.occlusion = demo::phantom_occlusion_section(archive, case_id, options.skeletal_class, sample.landmarks,
+                                                             options.out / "occlusion");
   clock.mark("occlusion");
   // The issue #4 must-show plan: two trans-sinusal distractors, 10 mm advancement, 6 mm widening.
-  pipeline::store_plan(archive, case_id,
-                       planning::distraction_plan({.advancement_mm = 10, .widening_mm = 6},
-                                                  "TS-MD distraction: 10 mm advancement, 6 mm widening"));
-  auto plan = pipeline::apply_case_plan(archive, case_id, options.out / "plan");
+  records::store_plan(archive, case_id,
+                      planning::distraction_plan({.advancement_mm = 10, .widening_mm = 6},
+                                                 "TS-MD distraction: 10 mm advancement, 6 mm widening"));
+  auto plan = casework::apply_case_plan(archive, case_id, options.out / "plan");
   clock.mark("plan");
   // The face for the planned move (issue #3): the plan's maxillary move, mass tensor model. The
   // face's tet model is built once here and serves the synthetic post-operative CT and the
   // validation too.
-  const auto planned = pipeline::load_planned_case(archive, case_id, &plan.tissues);
-  pipeline::SimulationRequest simulation;
+  const auto planned = casework::load_planned_case(archive, case_id, &plan.tissues);
+  casework::SimulationRequest simulation;
   simulation.plan = plan.plan.plan;
   simulation.out = options.out / "soft-tissue";
   simulation.uncertainty = true;
   simulation.face_model = planned.face_model(simulation.options);
-  auto predicted = pipeline::simulate_case(archive, case_id, simulation, &plan.tissues);
-  report_options.soft_tissue = pipeline::soft_tissue_section(predicted, simulation);
+  auto predicted = casework::simulate_case(archive, case_id, simulation, &plan.tissues);
+  report_options.soft_tissue = sections::soft_tissue_section(predicted, simulation);
   clock.mark("soft tissue");
   // Validation (issue #7): a synthetic post-operative CT with a known error, registered, the
   // bone moves found by ICP, the face predicted for them and compared; then the nightly summary.
-  auto postop = pipeline::make_synthetic_postop_case(archive, case_id, {}, options.out / "postop", true, "", &planned);
+  auto postop = casework::make_synthetic_postop_case(archive, case_id, {}, options.out / "postop", true, "", &planned);
   clock.mark("synthetic post-operative CT");
-  auto validation = pipeline::validate_case(archive, case_id, {}, options.out / "validation", &planned);
-  pipeline::store_validation(archive, pipeline::validation_to_store(validation));
+  auto validation = casework::validate_case(archive, case_id, {}, options.out / "validation", &planned);
+  records::store_validation(archive, casework::validation_to_store(validation));
   clock.mark("validation");
-  pipeline::NightlyOptions nightly_options;
+  nightly::NightlyOptions nightly_options;
   nightly_options.out = options.out / "nightly";
-  auto nightly = pipeline::run_nightly(archive, nightly_options);
+  auto nightly = nightly::run_nightly(archive, nightly_options);
   clock.mark("nightly summary");
-  auto report = pipeline::write_consultation_report(archive, case_id, options.out / "report.pdf", report_options);
+  auto report = consultation::write_consultation_report(archive, case_id, options.out / "report.pdf", report_options);
   clock.mark("volume, surfaces, views, report");
   // The report back to the PACS (a second server of ours standing in for it), as Encapsulated
   // PDF in the patient's study, as `maxillo send --report` does.
-  const auto report_dicom = pipeline::write_report_dicom(archive, case_id, report.pdf, options.out / "report.dcm",
-                                                         pipeline::StoreInArchive::Yes);
+  const auto report_dicom = consultation::write_report_dicom(archive, case_id, report.pdf, options.out / "report.dcm",
+                                                             consultation::StoreInArchive::Yes);
   const auto pacs = push_over_dicom({report_dicom.file}, "MAXILLO", "DEMO-PACS", options.out / "pacs");
   clock.mark("report sent to the PACS");
-  auto cohort = pipeline::analyse_cohort(pipeline::sample_cohort(), {}, ceph::Sex::kUnknown, "sample cohort");
+  auto cohort = followup::analyse_cohort(followup::sample_cohort(), {}, ceph::Sex::kUnknown, "sample cohort");
   auto cohort_pdf = options.out / "cohort-followup.pdf";
   int cohort_pages =
-      pipeline::write_cohort_report(cohort, pipeline::consecutive_pairs(pipeline::cohort_time_point_labels(cohort)),
+      followup::write_cohort_report(cohort, followup::consecutive_pairs(followup::cohort_time_point_labels(cohort)),
                                     "sample cohort (synthetic)", cohort_pdf);
   clock.mark("cohort follow-up");
 

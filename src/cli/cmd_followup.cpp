@@ -11,9 +11,9 @@
 #include "cli/ceph_options.h"
 #include "cli/command.h"
 #include "core/error.h"
-#include "pipeline/case_landmarks.h"
-#include "pipeline/cohort_archive.h"
-#include "pipeline/cohort_report.h"
+#include "records/case_landmarks.h"
+#include "records/cohort_archive.h"
+#include "followup/cohort_report.h"
 
 namespace maxillo::cli {
 namespace {
@@ -59,19 +59,19 @@ void print_case_csv(const ceph::CaseFollowUp& c, bool header) {
 }
 
 std::vector<ceph::CaseFollowUp> cohort_from_csv(const FollowupOptions& options) {
-  return pipeline::analyse_cohort(ceph::read_cohort_csv(options.cohort),
+  return followup::analyse_cohort(ceph::read_cohort_csv(options.cohort),
                                   {options.geometry.geometry, options.geometry.axes()}, options.geometry.sex,
                                   options.cohort.string());
 }
 
 int run_cohort(const std::vector<ceph::CaseFollowUp>& cohort, const std::string& cohort_label,
                const FollowupOptions& options, const GlobalOptions& global) {
-  auto labels = pipeline::cohort_time_point_labels(cohort);
+  auto labels = followup::cohort_time_point_labels(cohort);
   std::vector<std::pair<std::string, std::string>> pairs;
   if (!options.from.empty())
     pairs.push_back({options.from, options.to});
   else
-    pairs = pipeline::consecutive_pairs(labels);
+    pairs = followup::consecutive_pairs(labels);
 
   Json json_changes = Json::array();
   if (options.csv) std::printf("from,to,measurement,unit,n,mean,sd\n");
@@ -92,7 +92,7 @@ int run_cohort(const std::vector<ceph::CaseFollowUp>& cohort, const std::string&
     }
   }
   if (!options.pdf.empty()) {
-    int pages = pipeline::write_cohort_report(cohort, pairs, cohort_label, options.pdf);
+    int pages = followup::write_cohort_report(cohort, pairs, cohort_label, options.pdf);
     if (!global.json && !options.csv) std::printf("report: %s (%d pages)\n", options.pdf.string().c_str(), pages);
   }
   Json wits = Json::array();
@@ -125,9 +125,8 @@ int run_import_cohort(const FollowupOptions& options, const GlobalOptions& globa
   const std::string name = options.cohort_name.empty() ? options.import_cohort.stem().string() : options.cohort_name;
   auto archive = Archive::open(resolve_archive_dir(global), OpenMode::CreateIfMissing);
   const auto cohort = ceph::read_cohort_csv(options.import_cohort);
-  pipeline::LandmarkFrame frame{options.geometry.geometry, options.geometry.axes()};
-  const auto imported =
-      pipeline::import_cohort(archive, cohort, name, frame, options.import_cohort.filename().string());
+  records::LandmarkFrame frame{options.geometry.geometry, options.geometry.axes()};
+  const auto imported = records::import_cohort(archive, cohort, name, frame, options.import_cohort.filename().string());
   if (global.json)
     std::cout << Json{{"cohort", name},
                       {"cases", imported.cases},
@@ -147,7 +146,7 @@ int run_followup(const FollowupOptions& options, const GlobalOptions& global) {
     return run_cohort(cohort_from_csv(options), "cohort " + options.cohort.filename().string(), options, global);
   if (!options.cohort_archive.empty()) {
     auto archive = Archive::open(resolve_archive_dir(global));
-    return run_cohort(pipeline::archived_cohort_follow_up(archive, options.cohort_archive, options.geometry.sex),
+    return run_cohort(records::archived_cohort_follow_up(archive, options.cohort_archive, options.geometry.sex),
                       "cohort " + options.cohort_archive, options, global);
   }
   if (options.case_text.empty())
@@ -156,7 +155,7 @@ int run_followup(const FollowupOptions& options, const GlobalOptions& global) {
   auto archive = Archive::open(resolve_archive_dir(global));
   auto case_id = archive.resolve_case(options.case_text);
   auto follow_up =
-      pipeline::archived_case_follow_up(archive, case_id, "case " + std::to_string(case_id), options.geometry.sex);
+      records::archived_case_follow_up(archive, case_id, "case " + std::to_string(case_id), options.geometry.sex);
   if (follow_up.time_points.empty())
     throw Error(ErrorCode::kNotFound, "case " + std::to_string(case_id),
                 "no landmark set with a time point (maxillo ceph add CASE --time-point LABEL ...)");

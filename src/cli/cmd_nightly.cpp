@@ -4,7 +4,7 @@
 
 #include "cli/command.h"
 #include "core/error.h"
-#include "pipeline/nightly.h"
+#include "nightly/nightly.h"
 
 namespace maxillo::cli {
 namespace {
@@ -21,24 +21,24 @@ struct NightlyArguments {
 
 int run(const NightlyArguments& a, const GlobalOptions& global) {
   auto archive = Archive::open(resolve_archive_dir(global));
-  pipeline::NightlyOptions options;
+  nightly::NightlyOptions options;
   options.out = a.out;
-  options.shard = pipeline::parse_shard(a.shard);
+  options.shard = nightly::parse_shard(a.shard);
   options.summary_only = a.summary_only;
   options.validation.corresponding_points = !a.no_correspondence;
   options.claim = a.claim;
   options.lease_seconds = a.lease_seconds;
   options.worker = a.worker;
-  const auto report = pipeline::run_nightly(archive, options);
+  const auto report = nightly::run_nightly(archive, options);
   for (const auto& c : report.cases) {
-    std::cout << "case " << c.case_id << ": " << pipeline::to_string(c.outcome);
-    if (c.outcome == pipeline::NightlyOutcome::kValidated) std::cout << " (" << c.seconds << " s)";
+    std::cout << "case " << c.case_id << ": " << nightly::to_string(c.outcome);
+    if (c.outcome == nightly::NightlyOutcome::kValidated) std::cout << " (" << c.seconds << " s)";
     if (!c.reason.empty()) std::cout << ": " << c.reason;
     std::cout << "\n";
   }
-  std::cout << report.count(pipeline::NightlyOutcome::kValidated) << " validated, "
-            << report.count(pipeline::NightlyOutcome::kUpToDate) << " up to date, "
-            << report.count(pipeline::NightlyOutcome::kFailed) << " failed\n";
+  std::cout << report.count(nightly::NightlyOutcome::kValidated) << " validated, "
+            << report.count(nightly::NightlyOutcome::kUpToDate) << " up to date, "
+            << report.count(nightly::NightlyOutcome::kFailed) << " failed\n";
   if (options.claim && !options.summary_only)
     std::cout << "worker done: every case is finished; `nightly --summary-only` writes the summary\n";
   else if (report.summary_written)
@@ -47,7 +47,7 @@ int run(const NightlyArguments& a, const GlobalOptions& global) {
     std::cout << "summary up to date: " << report.summary_pdf.string() << "\n";
   else
     std::cout << "no validated case: no summary\n";
-  return report.count(pipeline::NightlyOutcome::kFailed) ? exit_code_for(ErrorCode::kBatchPartlyFailed) : 0;
+  return report.count(nightly::NightlyOutcome::kFailed) ? exit_code_for(ErrorCode::kBatchPartlyFailed) : 0;
 }
 
 }  // namespace

@@ -16,8 +16,8 @@
 #include "occlusion/occlusion_files.h"
 #include "core/atomic_file.h"
 #include "core/sha256.h"
-#include "pipeline/occlusion_run.h"
-#include "pipeline/occlusion_section.h"
+#include "casework/occlusion_run.h"
+#include "sections/occlusion_section.h"
 
 namespace maxillo::cli {
 namespace {
@@ -27,11 +27,11 @@ using namespace maxillo::occlusion;
 struct OccludeOptions {
   std::filesystem::path upper, lower, pairs, start, out;
   std::string case_text;  // --case: store the outputs as artefacts of this archived case
-  pipeline::OcclusionRunOptions run;
+  casework::OcclusionRunOptions run;
   bool no_splint = false;
 };
 
-void print_summary(const pipeline::OcclusionRun& run, const OccludeOptions& options) {
+void print_summary(const casework::OcclusionRun& run, const OccludeOptions& options) {
   for (const auto& note : run.upper_repair.notes) std::cout << "upper arch: " << note << "\n";
   for (const auto& note : run.lower_repair.notes) std::cout << "lower arch: " << note << "\n";
   std::cout << "guided alignment " << run.summary["status"].get<std::string>() << " after " << run.aligned.iterations
@@ -41,7 +41,7 @@ void print_summary(const pipeline::OcclusionRun& run, const OccludeOptions& opti
   std::cout << "\ncontact vertices < " << options.run.contact_threshold_mm << " mm: upper "
             << run.gram.upper.contact_vertices << ", lower " << run.gram.lower.contact_vertices << "\n";
   if (run.splint) {
-    const pipeline::SplintReport& s = run.splint->report;
+    const casework::SplintReport& s = run.splint->report;
     std::printf(
         "splint: %s, %d component(s), %lld triangles, %.0f mm3, thickness %.2f mm where no tooth is (%d columns); "
         "distance to upper %.3f mm, lower %.3f mm; triangles crossing the arches: %lld, %lld (%.1f s)\n",
@@ -61,13 +61,13 @@ int run_occlude(OccludeOptions options, const GlobalOptions& global) {
   options.run.splint = !options.no_splint;
   options.run.upper_label = options.upper.string();
   options.run.lower_label = options.lower.string();
-  const pipeline::OcclusionRun run = pipeline::run_occlusion(read_mesh(options.upper), read_mesh(options.lower), pairs,
+  const casework::OcclusionRun run = casework::run_occlusion(read_mesh(options.upper), read_mesh(options.lower), pairs,
                                                              start, options.out, options.run);
   if (!options.case_text.empty()) {
     auto archive = Archive::open(resolve_archive_dir(global));
     const std::vector<std::string> inputs = {sha256_hex(read_file(options.upper)), sha256_hex(read_file(options.lower)),
                                              sha256_hex(read_file(options.pairs))};
-    pipeline::store_occlusion_artefacts(archive, archive.resolve_case(options.case_text), run, inputs);
+    sections::store_occlusion_artefacts(archive, archive.resolve_case(options.case_text), run, inputs);
   }
   if (global.json)
     std::cout << run.summary.dump(2) << "\n";

@@ -12,9 +12,9 @@
 #include "cli/command.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
-#include "pipeline/case_simulation.h"
-#include "pipeline/plan_archive.h"
-#include "pipeline/plan_case.h"
+#include "casework/case_simulation.h"
+#include "records/plan_archive.h"
+#include "casework/plan_case.h"
 
 namespace maxillo::cli {
 namespace {
@@ -56,7 +56,7 @@ int run_create(const CreateOptions& options, const GlobalOptions& global) {
   const Plan plan = plan_from_options(options);
   auto archive = Archive::open(resolve_archive_dir(global));
   const int64_t case_id = archive.resolve_case(options.case_text);
-  const pipeline::StoredPlan stored = pipeline::store_plan(archive, case_id, plan);
+  const records::StoredPlan stored = records::store_plan(archive, case_id, plan);
   if (global.json)
     std::cout << Json{{"case", case_id},
                       {"version", stored.version},
@@ -73,12 +73,12 @@ int run_create(const CreateOptions& options, const GlobalOptions& global) {
 int run_show(const std::string& case_text, int version, const GlobalOptions& global) {
   auto archive = Archive::open(resolve_archive_dir(global));
   const int64_t case_id = archive.resolve_case(case_text);
-  const auto history = pipeline::plan_history(archive, case_id);
+  const auto history = records::plan_history(archive, case_id);
   if (history.empty())
     throw Error(ErrorCode::kNotFound, case_text, "the case has no plan: make one with `maxillo plan create`");
   if (version > static_cast<int>(history.size()))
     throw Error(ErrorCode::kNotFound, case_text, "the case has " + std::to_string(history.size()) + " plan versions");
-  const pipeline::StoredPlan& shown = version > 0 ? history[version - 1] : history.back();
+  const records::StoredPlan& shown = version > 0 ? history[version - 1] : history.back();
   if (global.json) {
     Json versions = Json::array();
     for (const auto& s : history)
@@ -139,13 +139,13 @@ int run_apply(const std::string& case_text, const std::filesystem::path& out, bo
               const GlobalOptions& global) {
   auto archive = Archive::open(resolve_archive_dir(global));
   const int64_t case_id = archive.resolve_case(case_text);
-  const pipeline::CasePlanResult applied = pipeline::apply_case_plan(archive, case_id, out);
+  const casework::CasePlanResult applied = casework::apply_case_plan(archive, case_id, out);
   if (predict_face && !applied.result.moves.empty()) {
     // The face for the planned moves (soft tissue engine, pipeline/case_simulation.h).
-    pipeline::SimulationRequest simulation;
+    casework::SimulationRequest simulation;
     simulation.plan = applied.plan.plan;
     simulation.out = out / "soft-tissue";
-    const auto predicted = pipeline::simulate_case(archive, case_id, simulation, &applied.tissues);
+    const auto predicted = casework::simulate_case(archive, case_id, simulation, &applied.tissues);
     if (!global.json)
       std::printf("predicted face: largest skin displacement %.1f mm (%s)\n", predicted.views.max_displacement_mm,
                   simulation.out.string().c_str());

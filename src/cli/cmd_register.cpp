@@ -18,8 +18,8 @@
 #include "imaging/rigid_registration.h"
 #include "imaging/volume_assembly.h"
 #include "occlusion/occlusion_files.h"
-#include "pipeline/archived_series.h"
-#include "pipeline/case_landmarks.h"
+#include "records/archived_series.h"
+#include "records/case_landmarks.h"
 
 namespace maxillo::cli {
 namespace {
@@ -71,7 +71,7 @@ LoadedSeries load_input(const std::string& text, LazyArchive& archive) {
   }
   Archive& a = archive.get();
   const int64_t series = a.resolve_series(text);
-  loaded.volume = pipeline::load_archived_series(a, series);
+  loaded.volume = records::load_archived_series(a, series);
   loaded.series = series;
   loaded.source = {{"series", series}, {"series_uid", a.series_by_id(series)->series_uid}};
   return loaded;
@@ -96,7 +96,7 @@ std::optional<int64_t> case_of_series(const Archive& archive, int64_t series) {
 std::optional<LandmarkSet> case_landmarks_of(const Archive& archive, int64_t series) {
   const auto case_id = case_of_series(archive, series);
   if (!case_id) return std::nullopt;
-  const auto history = pipeline::landmark_history(archive, *case_id);
+  const auto history = records::landmark_history(archive, *case_id);
   for (auto it = history.rbegin(); it != history.rend(); ++it)
     if (it->frame.geometry == LandmarkGeometry::kVolumeLps && !it->landmarks.empty()) return it->landmarks;
   return std::nullopt;

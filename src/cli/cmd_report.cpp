@@ -3,8 +3,8 @@
 
 #include "cli/command.h"
 #include "core/json.h"
-#include "pipeline/consultation_report.h"
-#include "pipeline/report_dicom.h"
+#include "consultation/consultation_report.h"
+#include "consultation/report_dicom.h"
 
 namespace maxillo::cli {
 namespace {
@@ -20,16 +20,16 @@ struct ReportOptions {
 int run_report(const ReportOptions& options, const GlobalOptions& global) {
   auto archive = Archive::open(resolve_archive_dir(global));
   auto case_id = archive.resolve_case(options.case_text);
-  pipeline::ConsultationOptions consultation;
+  consultation::ConsultationOptions consultation;
   consultation.template_resource = options.template_resource;
-  auto result = pipeline::write_consultation_report(archive, case_id, options.out, consultation);
-  std::optional<pipeline::ReportDicom> dicom;
+  auto result = consultation::write_consultation_report(archive, case_id, options.out, consultation);
+  std::optional<consultation::ReportDicom> dicom;
   if (!options.dicom_out.empty() || options.store_dicom) {
     auto file =
         options.dicom_out.empty() ? std::filesystem::path(options.out).replace_extension(".dcm") : options.dicom_out;
-    dicom = pipeline::write_report_dicom(
+    dicom = consultation::write_report_dicom(
         archive, case_id, options.out, file,
-        options.store_dicom ? pipeline::StoreInArchive::Yes : pipeline::StoreInArchive::No);
+        options.store_dicom ? consultation::StoreInArchive::Yes : consultation::StoreInArchive::No);
   }
   if (global.json) {
     std::cout << Json{{"report", result.pdf.string()},

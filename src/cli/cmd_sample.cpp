@@ -7,7 +7,7 @@
 
 #include "cli/command.h"
 #include "core/json.h"
-#include "pipeline/sample_case.h"
+#include "casework/sample_case.h"
 
 namespace maxillo::cli {
 namespace {
@@ -16,15 +16,15 @@ struct SampleOptions {
   std::filesystem::path out;
   double spacing_mm = 1.0;
   SkeletalClass skeletal_class = SkeletalClass::I;
-  std::string patient_id = pipeline::kPhantomPatientId;
+  std::string patient_id = casework::kPhantomPatientId;
 };
 
 void run_sample(const SampleOptions& options, CommandContext& ctx) {
-  const pipeline::SampleCase sample =
-      pipeline::write_sample_case(options.skeletal_class, options.spacing_mm, options.out, options.patient_id);
+  const casework::SampleCase sample =
+      casework::write_sample_case(options.skeletal_class, options.spacing_mm, options.out, options.patient_id);
   const PhantomSpec spec = phantom_spec_for_class(options.skeletal_class);
   const VolumeGeometry& g = sample.geometry;
-  const std::string class_name(pipeline::name_of(options.skeletal_class));
+  const std::string class_name(casework::name_of(options.skeletal_class));
   if (ctx.global.json) {
     Json result = {{"folder", options.out.string()},
                    {"skeletal_class", class_name},

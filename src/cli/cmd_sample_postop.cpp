@@ -3,7 +3,7 @@
 #include <iostream>
 
 #include "cli/command.h"
-#include "pipeline/synthetic_postop_case.h"
+#include "casework/synthetic_postop_case.h"
 
 namespace maxillo::cli {
 namespace {
@@ -11,7 +11,7 @@ namespace {
 struct SamplePostopArguments {
   std::string case_text;
   std::filesystem::path out;
-  pipeline::SyntheticPostopOptions options;
+  casework::SyntheticPostopOptions options;
   std::string date;
   bool import = false;
 };
@@ -19,7 +19,7 @@ struct SamplePostopArguments {
 int run(const SamplePostopArguments& a, const GlobalOptions& global) {
   auto archive = Archive::open(resolve_archive_dir(global));
   const int64_t case_id = archive.resolve_case(a.case_text);
-  const auto result = pipeline::make_synthetic_postop_case(archive, case_id, a.options, a.out, a.import, a.date);
+  const auto result = casework::make_synthetic_postop_case(archive, case_id, a.options, a.out, a.import, a.date);
   if (global.json) {
     std::cout << result.truth.dump(2) << "\n";
     return 0;

@@ -5,7 +5,7 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/json.h"
-#include "pipeline/case_simulation.h"
+#include "casework/case_simulation.h"
 
 namespace maxillo::cli {
 namespace {
@@ -27,12 +27,12 @@ struct SimulateOptions {
   std::filesystem::path out = "simulation";
 };
 
-pipeline::SimulationRequest make_request(const SimulateOptions& o) {
-  pipeline::SimulationRequest request;
+casework::SimulationRequest make_request(const SimulateOptions& o) {
+  casework::SimulationRequest request;
   if (!o.plan_file.empty()) {
     request.plan = planning::parse_plan(text_of(o.plan_file), o.plan_file.string());
   } else if (o.advance_mm != 0) {
-    request.plan = pipeline::le_fort_advancement_plan(o.advance_mm);
+    request.plan = casework::le_fort_advancement_plan(o.advance_mm);
   } else {
     throw Error(ErrorCode::kUsage, "simulate",
                 "give a plan (--plan PLAN.json) or a Le Fort I advancement (--advance MM)");
@@ -50,10 +50,10 @@ int run_simulate(const SimulateOptions& options, const GlobalOptions& global) {
   const auto request = make_request(options);  // usage first: before the archive is looked at
   auto archive = Archive::open(resolve_archive_dir(global));
   const auto case_id = archive.resolve_case(options.case_text);
-  const auto result = pipeline::simulate_case(archive, case_id, request);
+  const auto result = casework::simulate_case(archive, case_id, request);
   const auto& p = result.prediction;
   if (global.json) {
-    std::cout << pipeline::to_json(result.summary).dump(2) << "\n";
+    std::cout << records::to_json(result.summary).dump(2) << "\n";
     return 0;
   }
   std::cout << "model: " << softtissue::model_title(request.options.model) << ", " << p.mesh.tet_count()

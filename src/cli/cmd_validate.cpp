@@ -3,9 +3,9 @@
 #include <iostream>
 
 #include "cli/command.h"
-#include "pipeline/case_validation.h"
-#include "pipeline/validation_archive.h"
-#include "pipeline/validation_json.h"
+#include "casework/case_validation.h"
+#include "records/validation_archive.h"
+#include "casework/validation_json.h"
 #include "report/number_text.h"
 
 namespace maxillo::cli {
@@ -19,14 +19,14 @@ struct ValidateOptions {
   bool force = false;
 };
 
-pipeline::ValidationOptions validation_options(const ValidateOptions& o) {
-  pipeline::ValidationOptions options;
+casework::ValidationOptions validation_options(const ValidateOptions& o) {
+  casework::ValidationOptions options;
   options.soft_tissue.model = *softtissue::parse_model(o.model);
   options.corresponding_points = !o.no_correspondence;
   return options;
 }
 
-void print_summary(const pipeline::CaseValidation& v) {
+void print_summary(const casework::CaseValidation& v) {
   using report::fixed;
   std::cout << "registration: " << v.registration.iterations << " iterations, " << fixed(v.registration.seconds, 1)
             << " s; cranium ICP residual " << fixed(v.cranium_icp_rms_mm, 3) << " mm\n";
@@ -54,8 +54,8 @@ int run_validate(const ValidateOptions& o, const GlobalOptions& global) {
   auto archive = Archive::open(resolve_archive_dir(global));
   const int64_t case_id = archive.resolve_case(o.case_text);
   const auto options = validation_options(o);
-  const auto key = pipeline::validation_inputs_hash(archive, case_id, options);
-  const auto stored = o.force || !key ? std::nullopt : pipeline::find_validation(archive, case_id, *key);
+  const auto key = casework::validation_inputs_hash(archive, case_id, options);
+  const auto stored = o.force || !key ? std::nullopt : records::find_validation(archive, case_id, *key);
   if (stored) {
     if (global.json)
       std::cout << stored->document.dump(2) << "\n";
@@ -63,8 +63,8 @@ int run_validate(const ValidateOptions& o, const GlobalOptions& global) {
       std::cout << "case " << case_id << ": validation up to date (inputs unchanged); --force recomputes it\n";
     return 0;
   }
-  const auto validation = pipeline::validate_case(archive, case_id, options, o.out);
-  pipeline::store_validation(archive, pipeline::validation_to_store(validation));
+  const auto validation = casework::validate_case(archive, case_id, options, o.out);
+  records::store_validation(archive, casework::validation_to_store(validation));
   if (global.json)
     std::cout << validation.summary.dump(2) << "\n";
   else

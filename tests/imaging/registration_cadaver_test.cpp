@@ -9,7 +9,7 @@
 #include "imaging/converted_copy.h"
 #include "imaging/rigid_registration.h"
 #include "imaging/volume_resample.h"
-#include "pipeline/registration_benchmark.h"
+#include "bench/registration_benchmark.h"
 #include "support/temporary_folder.h"
 
 namespace maxillo {
@@ -27,10 +27,10 @@ struct MovedHead {
 };
 MovedHead moved_head() {
   MovedHead head;
-  head.fixed = pipeline::read_cadaver_head(kSlices);
-  head.known = pipeline::known_rigid_move(head.fixed.geometry, 4, 7);
+  head.fixed = bench::read_cadaver_head(kSlices);
+  head.known = bench::known_rigid_move(head.fixed.geometry, 4, 7);
   head.moving = resample_rigid(head.fixed, head.known, head.fixed.geometry);
-  head.skin = pipeline::skin_vertices(head.fixed);
+  head.skin = bench::skin_vertices(head.fixed);
   head.options.box = cranial_registration_box(head.fixed);
   return head;
 }
@@ -41,8 +41,8 @@ TEST(CadaverRegistration, RecoversFourDegreesAndSevenMillimetresWithinFiftyMicro
   EXPECT_NEAR(Eigen::AngleAxisd(known.linear()).angle() * 180 / M_PI, 4, 1e-9);
   const RigidRegistrationResult result = register_rigid(fixed, moving, options);
   ASSERT_GT(skin.rows(), 10000);
-  const double rms = pipeline::rms_error_mm(skin, result.moving_to_fixed, known);
-  const double start_rms = pipeline::rms_error_mm(skin, Eigen::Isometry3d::Identity(), known);
+  const double rms = bench::rms_error_mm(skin, result.moving_to_fixed, known);
+  const double start_rms = bench::rms_error_mm(skin, Eigen::Isometry3d::Identity(), known);
   std::cout << "[cadaver registration] " << result.seconds << " s, " << result.iterations << " iterations, RMS " << rms
             << " mm over " << skin.rows() << " skin vertices (start " << start_rms << " mm)\n";
   EXPECT_GT(start_rms, 7);
@@ -56,7 +56,7 @@ struct Apart {
 };
 Apart apart(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b, const Eigen::MatrixX3d& skin) {
   return {Eigen::AngleAxisd(a.linear() * b.linear().transpose()).angle() * 180 / M_PI,
-          pipeline::rms_error_mm(skin, a, b.inverse())};
+          bench::rms_error_mm(skin, a, b.inverse())};
 }
 
 // Issue 14, defect 12: a validation tool gives one answer. The default registration (as many
@@ -119,7 +119,7 @@ TEST(CadaverRegistration, ElastixEulerTransformIsReadAsMovingToFixed) {
   std::ofstream(file) << "(Transform \"EulerTransform\")\n(NumberOfParameters 6)\n"
                          "(TransformParameters 0.1 -0.2 0.3 1.5 -2 4)\n(CenterOfRotationPoint 10 20 30)\n"
                          "(ComputeZYX \"false\")\n";
-  const Eigen::Isometry3d moving_to_fixed = pipeline::read_elastix_euler(file);
+  const Eigen::Isometry3d moving_to_fixed = bench::read_elastix_euler(file);
   std::filesystem::remove(file);
   const Eigen::Matrix3d r =
       (Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(0.1, Eigen::Vector3d::UnitX()) *

@@ -1,0 +1,178 @@
+#include "casework/occlusion_run.h"
+
+#include <cstdio>
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "mesh/mesh_io.h"
+#include "occlusion/occlusion_files.h"
+#include "render/render_views.h"
+
+namespace maxillo::casework {
+namespace {
+
+using namespace maxillo::occlusion;
+
+Json repair_json(const ArchRepairReport& r) {
+  return {{"shells", r.shells},
+          {"shells_flipped", r.shells_flipped},
+          {"degenerate_faces_removed", r.degenerate_faces_removed},
+          {"open_edges", r.open_edges},
+          {"notes", r.notes}};
+}
+
+Json teeth_json(const ArchDistances& arch) {
+  Json teeth = Json::array();
+  for (const ToothContacts& t : arch.teeth)
+    teeth.push_back({{"component", t.component},
+                     {"vertices", t.vertices},
+                     {"contact_vertices", t.contact_vertices},
+                     {"contact_area_mm2", t.contact_area_mm2},
+                     {"min_distance_mm", t.min_distance_mm}});
+  return {{"contact_vertices", arch.contact_vertices}, {"contact_area_mm2", arch.contact_area_mm2}, {"teeth", teeth}};
+}
+
+Json splint_json(const Splint& s, const SplintOptions& o) {
+  const SplintReport& r = s.report;
+  return {{"file", "splint.stl"},
+          {"minimum_thickness_mm", o.thickness_mm},
+          {"imprint_depth_mm", o.imprint_depth_mm},
+          {"clearance_mm", o.clearance_mm},
+          {"voxel_mm", o.voxel_mm},
+          {"thickness_mm", r.thickness_mm},
+          {"thickness_columns", r.thickness_columns},
+          {"volume_mm3", r.volume_mm3},
+          {"triangles", r.triangles},
+          {"watertight", r.watertight},
+          {"components", r.components},
+          {"min_distance_upper_mm", r.min_distance_upper_mm},
+          {"min_distance_lower_mm", r.min_distance_lower_mm},
+          {"intersecting_pairs_upper", r.intersecting_pairs_upper},
+          {"intersecting_pairs_lower", r.intersecting_pairs_lower},
+          {"seconds", r.seconds}};
+}
+
+void write_distances(const TriangleMesh& mesh, const Eigen::Isometry3d& to_common, const ArchDistances& arch,
+                     const std::filesystem::path& path) {
+  std::string text = "vertex,x_mm,y_mm,z_mm,distance_mm,tooth\n";
+  char line[160];
+  for (Eigen::Index v = 0; v < mesh.vertex_count(); ++v) {
+    const Eigen::Vector3d x = to_common * Eigen::Vector3d(mesh.vertices.row(v).transpose());
+    std::snprintf(line, sizeof line, "%lld,%.4f,%.4f,%.4f,%.4f,%d\n", (long long)v, x.x(), x.y(), x.z(),
+                  arch.distance_mm[size_t(v)], arch.tooth_of_vertex[size_t(v)]);
+    text += line;
+  }
+  write_file_atomically(path, text);
+}
+
+TriangleMesh placed(const TriangleMesh& mesh, const Eigen::Isometry3d& pose) {
+  TriangleMesh out = mesh;
+  for (Eigen::Index v = 0; v < mesh.vertex_count(); ++v)
+    out.vertices.row(v) = (pose * Eigen::Vector3d(mesh.vertices.row(v).transpose())).transpose();
+  return out;
+}
+
+// One arch seen from the occlusal side (lower: from above, upper: from below), anterior up.
+render::RgbImage render_arch(const TriangleMesh& mesh, const std::vector<double>& distances, double threshold,
+                             double from_z) {
+  render::Scene scene;
+  render::SceneMesh item;
+  item.mesh = &mesh;
+  item.scalars = render::VertexScalars{distances, 0.0, 2 * threshold, render::ColourMap::Sequential,
+                                       "distance to opposing arch (mm)"};
+  scene.meshes.push_back(item);
+  const render::Bounds bounds = render::scene_bounds(scene);
+  render::Camera camera;
+  camera.focal_point = bounds.centre();
+  camera.position = bounds.centre() + Eigen::Vector3d(0, 0, from_z * 300);
+  camera.view_up = -Eigen::Vector3d::UnitY();
+  camera.parallel_scale_mm = 0.6 * std::max(bounds.max.x() - bounds.min.x(), bounds.max.y() - bounds.min.y());
+  render::RenderSettings settings;
+  settings.size = {900, 900};
+  return render::render_scene(scene, std::span(&camera, 1), settings).front();
+}
+
+render::RgbImage side_by_side(const render::RgbImage& left, const render::RgbImage& right) {
+  render::RgbImage out;
+  out.width = left.width + right.width;
+  out.height = std::max(left.height, right.height);
+  out.pixels.assign(size_t(out.width) * size_t(out.height) * 3, 255);
+  for (int y = 0; y < out.height; ++y) {
+    if (y < left.height) std::copy_n(left.at(0, y), 3 * left.width, &out.pixels[3 * size_t(y) * size_t(out.width)]);
+    if (y < right.height)
+      std::copy_n(right.at(0, y), 3 * right.width,
+                  &out.pixels[3 * (size_t(y) * size_t(out.width) + size_t(left.width))]);
+  }
+  return out;
+}
+
+}  // namespace
+
+OcclusionRun run_occlusion(TriangleMesh upper, TriangleMesh lower, const std::vector<SpringPair>& pairs,
+                           const Eigen::Isometry3d& start, const std::filesystem::path& folder,
+                           const OcclusionRunOptions& options) {
+  OcclusionRun run;
+  run.folder = folder;
+  run.upper_repair = repair_arch(upper);
+  run.lower_repair = repair_arch(lower);
+  std::filesystem::create_directories(folder);
+  run.upper = upper;
+  run.start = start;
+  run.lower = lower;
+
+  MotionOptions motion;
+  motion.penetration_tolerance_mm = options.tolerance_mm;
+  const DistanceField upper_field(upper), lower_field(lower);
+  MotionEngine engine(upper_field, lower_field, start, motion);
+  run.aligned = align_guided(engine, pairs);
+  run.allowed_penetration_mm = engine.allowed_penetration_mm();
+  OcclusionogramOptions gram_options;
+  gram_options.contact_threshold_mm = options.contact_threshold_mm;
+  run.contact_threshold_mm = options.contact_threshold_mm;
+  run.gram = compute_occlusionogram(upper_field, lower_field, run.aligned.pose, gram_options);
+  run.intersecting_triangle_pairs = lower_field.tree().intersecting_faces(upper_field.tree(), run.aligned.pose).size();
+
+  write_distances(upper, run.aligned.pose, run.gram.upper, folder / "upper_distances.csv");
+  write_distances(lower, Eigen::Isometry3d::Identity(), run.gram.lower, folder / "lower_distances.csv");
+  const TriangleMesh upper_placed = placed(upper, run.aligned.pose);
+  render::write_png(
+      side_by_side(render_arch(upper_placed, run.gram.upper.distance_mm, options.contact_threshold_mm, -1),
+                   render_arch(lower, run.gram.lower.distance_mm, options.contact_threshold_mm, +1)),
+      folder / "occlusionogram.png");
+  run.files = {"occlusionogram.png", "upper_distances.csv", "lower_distances.csv"};
+
+  Json splint = nullptr;
+  if (options.splint) {
+    try {
+      run.splint = make_splint(upper_field, lower_field, run.aligned.pose, options.splint_options);
+      write_mesh(run.splint->mesh, folder / "splint.stl");
+      run.files.push_back("splint.stl");
+      splint = splint_json(*run.splint, options.splint_options);
+    } catch (const Error& e) {
+      run.splint_error = e.what();
+      splint = {{"error", run.splint_error}};
+    }
+  }
+
+  run.summary = {{"upper_file", options.upper_label},
+                 {"lower_file", options.lower_label},
+                 {"frame", "lower file coordinates (mm); upper_transform maps upper file coordinates into it"},
+                 {"upper_transform", transform_to_json(run.aligned.pose)},
+                 {"start_transform", transform_to_json(start)},
+                 {"status", run.aligned.status == AlignmentStatus::Converged ? "converged" : "iteration_limit"},
+                 {"iterations", run.aligned.iterations},
+                 {"residual_spring_mm", run.aligned.residual_spring_mm},
+                 {"penetration_mm", run.aligned.penetration_mm},
+                 {"allowed_penetration_mm", run.allowed_penetration_mm},
+                 {"intersecting_triangle_pairs", run.intersecting_triangle_pairs},
+                 {"contact_threshold_mm", options.contact_threshold_mm},
+                 {"upper", teeth_json(run.gram.upper)},
+                 {"lower", teeth_json(run.gram.lower)},
+                 {"repairs", {{"upper", repair_json(run.upper_repair)}, {"lower", repair_json(run.lower_repair)}}},
+                 {"splint", splint},
+                 {"files", run.files}};
+  write_file_atomically(folder / "occlusion.json", run.summary.dump(2) + "\n");
+  return run;
+}
+
+}  // namespace maxillo::casework

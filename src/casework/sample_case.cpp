@@ -1,0 +1,95 @@
+#include "casework/sample_case.h"
+
+#include <unistd.h>
+
+#include <cstdio>
+
+#include "archive/dicom_uid.h"
+#include "ceph/landmark_io.h"
+#include "core/error.h"
+#include "core/log.h"
+#include "core/progress.h"
+
+namespace maxillo::casework {
+namespace {
+namespace fs = std::filesystem;
+
+// Writes the series into a fresh sibling folder, then swaps it in for `folder`, so that neither
+// a half-written series nor stale slices of an earlier run (another spacing) stay behind.
+WrittenSeries write_series_replacing(const Volume& ct, const SeriesMetadata& metadata, const fs::path& folder) {
+  const std::string suffix = "." + std::to_string(::getpid());
+  const fs::path fresh = folder.string() + ".new" + suffix, old = folder.string() + ".old" + suffix;
+  fs::remove_all(fresh);
+  WrittenSeries written = write_ct_series(ct, metadata, fresh);
+  std::error_code error;
+  if (fs::exists(folder)) fs::rename(folder, old, error);
+  if (!error) fs::rename(fresh, folder, error);
+  if (error) {
+    fs::remove_all(fresh);
+    throw Error(ErrorCode::kWriteFailed, folder.string(), "cannot replace the CT folder: " + error.message());
+  }
+  fs::remove_all(old, error);
+  for (auto& file : written.files) file = folder / file.filename();
+  return written;
+}
+
+}  // namespace
+
+std::string_view name_of(SkeletalClass skeletal_class) {
+  switch (skeletal_class) {
+    case SkeletalClass::I: return "I";
+    case SkeletalClass::II: return "II";
+    case SkeletalClass::III: return "III";
+  }
+  return "?";
+}
+
+SeriesMetadata phantom_series_metadata(const PhantomSpec& spec, SkeletalClass skeletal_class,
+                                       const std::string& patient_id) {
+  SeriesMetadata metadata;
+  metadata.patient_name = "Phantom^Maxillo";
+  metadata.patient_id = patient_id;
+  metadata.patient_sex = "O";
+  metadata.study_date = "20240521";
+  metadata.study_description = "Synthetic craniofacial phantom";
+  char description[96];
+  std::snprintf(description, sizeof description, "Phantom CT %.2f mm, skeletal Class %s", spec.spacing_mm,
+                std::string(name_of(skeletal_class)).c_str());
+  metadata.series_description = description;
+  // UIDs derived from the description: the same phantom is the same scan, so regenerating it
+  // re-imports as "already archived" instead of piling up copies.
+  const std::string patient = patient_id == kPhantomPatientId ? "" : " of " + patient_id;
+  metadata.study_instance_uid = derived_uid("maxillo phantom study" + patient);
+  metadata.series_instance_uid = derived_uid(std::string("maxillo phantom series: ") + description + patient);
+  return metadata;
+}
+
+SampleCase write_sample_case(SkeletalClass skeletal_class, double spacing_mm, const fs::path& out_dir,
+                             const std::string& patient_id) {
+  PhantomSpec spec = phantom_spec_for_class(skeletal_class);
+  spec.spacing_mm = spacing_mm;
+  std::error_code error;
+  fs::create_directories(out_dir, error);
+  if (error) throw Error(ErrorCode::kWriteFailed, out_dir.string(), "cannot create the folder: " + error.message());
+
+  Progress progress("sample", 3);
+  const Phantom phantom = make_phantom(spec);
+  progress.advance();
+  const SeriesMetadata metadata = phantom_series_metadata(spec, skeletal_class, patient_id);
+  log::debug("sample: patient '", metadata.patient_name, "' id '", metadata.patient_id, "'");
+  SampleCase sample;
+  sample.ct_folder = out_dir / "ct";
+  sample.series = write_series_replacing(phantom.ct, metadata, sample.ct_folder);
+  progress.advance();
+  sample.markups_file = out_dir / "landmarks.mrk.json";
+  sample.csv_file = out_dir / "landmarks.csv";
+  write_landmarks(sample.markups_file, phantom.landmarks);
+  write_landmarks(sample.csv_file, phantom.landmarks);
+  progress.advance();
+  progress.finish();
+  sample.landmarks = phantom.landmarks;
+  sample.geometry = phantom.ct.geometry;
+  return sample;
+}
+
+}  // namespace maxillo::casework

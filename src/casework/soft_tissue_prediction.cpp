@@ -1,0 +1,198 @@
+#include "casework/soft_tissue_prediction.h"
+
+#include <array>
+#include <chrono>
+#include <cstdio>
+
+#include "ceph/landmark_frame.h"
+#include "core/error.h"
+#include "core/sha256.h"
+#include "render/anatomical_views.h"
+#include "softtissue/linear_static_solve.h"
+#include "softtissue/mass_spring_model.h"
+#include "softtissue/mass_tensor_model.h"
+#include "softtissue/nonlinear_fem.h"
+#include "softtissue/shape_function_mapping.h"
+#include "softtissue/stiffness_blocks.h"
+
+namespace maxillo::casework {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+constexpr double kBelowMentonMm = 15;
+
+struct Solved {
+  Eigen::MatrixX3d displacement;
+  int iterations = 0;
+};
+
+// The local iterations stop at their sweep limit with points still moving: that face is not
+// the model's answer, so it is an error naming the model and how far from rest it was.
+void require_at_rest(const softtissue::LocalIterationResult& result, const softtissue::LocalIterationOptions& options,
+                     const char* model) {
+  if (result.status == softtissue::IterationStatus::kConverged) return;
+  throw Error(ErrorCode::kProcessing, model,
+              "did not come to rest: after " + std::to_string(result.iterations) + " sweeps a point still moved " +
+                  std::to_string(result.last_max_move_mm) + " mm per sweep (threshold " +
+                  std::to_string(options.gradient_threshold_mm) + " mm)");
+}
+
+Solved solve(const softtissue::TetMesh& mesh, const softtissue::BoundaryConditions& bc, const SoftTissueOptions& o,
+             double& assembly_seconds) {
+  auto start = Clock::now();
+  const softtissue::Material material{o.young_modulus_mpa, o.poisson_ratio};
+  softtissue::LocalIterationOptions local;
+  local.gradient_threshold_mm = o.gradient_threshold_mm;
+  local.max_iterations = o.max_sweeps;
+  if (o.model == softtissue::SoftTissueModel::kNonlinearFem) {
+    assembly_seconds = 0;  // the tangent is assembled inside every Newton step
+    softtissue::NewtonOptions newton;
+    newton.load_steps = 2;
+    auto result = softtissue::solve_nonlinear_static(mesh, material, bc, newton);
+    if (!result.converged) throw Error(ErrorCode::kProcessing, "non-linear FEM", "Newton's method did not converge");
+    return {result.displacement, result.newton_iterations};
+  }
+  if (o.model == softtissue::SoftTissueModel::kMassSpring) {
+    const auto model = softtissue::make_van_gelder_model(mesh, o.young_modulus_mpa);
+    assembly_seconds = seconds_since(start);
+    auto result = softtissue::solve_mass_spring(model, bc, local);
+    require_at_rest(result, local, "mass-spring model");
+    return {result.displacement, result.iterations};
+  }
+  const auto blocks = softtissue::assemble_stiffness_blocks(mesh, material);
+  if (o.model == softtissue::SoftTissueModel::kLinearFem) {
+    assembly_seconds = seconds_since(start);
+    auto result = softtissue::solve_linear_static(blocks, bc);
+    if (result.status != softtissue::SolveStatus::kConverged)
+      throw Error(ErrorCode::kProcessing, "linear FEM", "the conjugate gradient did not converge");
+    return {result.displacement, result.iterations};
+  }
+  const auto model = softtissue::make_mass_tensor_model(blocks);
+  assembly_seconds = seconds_since(start);
+  auto result = softtissue::solve_mass_tensor(model, bc, local);
+  require_at_rest(result, local, "mass tensor model");
+  return {result.displacement, result.iterations};
+}
+
+void map_to_skin(SoftTissuePrediction& prediction, const TriangleMesh& skin, double binding_mm) {
+  auto start = Clock::now();
+  const auto mapping = softtissue::init_shape_function_mapping(prediction.mesh, skin.vertices, binding_mm);
+  prediction.skin_displacement = softtissue::map_displacement(prediction.mesh, mapping, prediction.node_displacement);
+  prediction.skin_vertices_bound = mapping.bound_count();
+  prediction.skin_after = skin;
+  prediction.skin_after.vertices += prediction.skin_displacement;
+  prediction.seconds.mapping = seconds_since(start);
+}
+
+}  // namespace
+
+std::vector<softtissue::RegionPlane> default_face_region_planes(const LandmarkSet& landmarks) {
+  const auto frame = anatomical_frame(landmarks);
+  const auto orbitale = bilateral_mean(landmarks, "Or"), porion = bilateral_mean(landmarks, "Po");
+  if (!orbitale || !porion)
+    throw Error(ErrorCode::kBadValue, "face region", "needs the landmarks Or and Po (or their R/L)");
+  const Eigen::Vector3d menton = require_landmark(landmarks, "Me", "face region");
+  return {{*orbitale, -frame.superior},                                // below the orbits
+          {menton - kBelowMentonMm * frame.superior, frame.superior},  // above a plane under the chin
+          {*porion, frame.anterior}};                                  // in front of the ears
+}
+
+std::string face_model_key(const LabelVolume& tissues, const LandmarkSet& landmarks, const SoftTissueOptions& options) {
+  // Every field of the meshing options is in the key: a new field must be added here too.
+  static_assert(sizeof(tetmesh::TetMeshingOptions) == 64, "update face_model_key for the new meshing option");
+  Sha256 hash;
+  hash.update(std::string_view(reinterpret_cast<const char*>(tissues.labels.data()), tissues.labels.size()));
+  char text[512];
+  const auto& g = tissues.geometry;
+  std::snprintf(text, sizeof text, "grid %d %d %d %.17g %.17g %.17g %.17g %.17g %.17g\n", g.size.x(), g.size.y(),
+                g.size.z(), g.spacing.x(), g.spacing.y(), g.spacing.z(), g.origin.x(), g.origin.y(), g.origin.z());
+  hash.update(text);
+  for (const auto& plane : default_face_region_planes(landmarks)) {
+    std::snprintf(text, sizeof text, "plane %.17g %.17g %.17g %.17g %.17g %.17g\n", plane.point.x(), plane.point.y(),
+                  plane.point.z(), plane.normal.x(), plane.normal.y(), plane.normal.z());
+    hash.update(text);
+  }
+  for (uint8_t label : options.soft_labels) hash.update("label " + std::to_string(label) + "\n");
+  const auto& m = options.meshing;
+  std::snprintf(text, sizeof text, "meshing %.17g %.17g %.17g %.17g %d %.17g %.17g %d\n", m.cell_size_mm,
+                m.facet_distance_mm, m.facet_angle_deg, m.radius_edge_ratio, m.max_tets, m.optimise_seconds,
+                m.sliver_bound_deg, m.random_seed);
+  hash.update(text);
+  return hash.hex_digest();
+}
+
+FaceModel build_face_model(const LabelVolume& tissues, const LandmarkSet& landmarks, const SoftTissueOptions& options) {
+  FaceModel model;
+  model.key = face_model_key(tissues, landmarks, options);
+  auto start = Clock::now();
+  model.planes = default_face_region_planes(landmarks);
+  const auto region = softtissue::face_region(tissues, options.soft_labels, model.planes);
+  model.region_seconds = seconds_since(start);
+
+  start = Clock::now();
+  auto meshed = tetmesh::mesh_label(region, 1, options.meshing);
+  model.mesh = std::move(meshed.mesh);
+  model.meshing = {meshed.cell_size_mm, meshed.attempts, meshed.tet_budget};
+  model.quality = softtissue::mesh_quality(model.mesh);
+  model.meshing_seconds = seconds_since(start);
+  return model;
+}
+
+SoftTissuePrediction predict_soft_tissue(const SoftTissueInput& input, const SoftTissueOptions& options,
+                                         const FaceModel* given) {
+  const FaceModel built = given ? FaceModel{} : build_face_model(*input.tissues, input.landmarks, options);
+  if (given && given->key != face_model_key(*input.tissues, input.landmarks, options))
+    throw Error(ErrorCode::kProcessing, "soft tissue model",
+                "the face model given was built from other tissues, landmarks or meshing options");
+  const FaceModel& model = given ? *given : built;
+  SoftTissuePrediction prediction;
+  prediction.mesh = model.mesh;
+  prediction.meshing = model.meshing;
+  prediction.quality = model.quality;
+  prediction.seconds.region = given ? 0 : model.region_seconds;
+  prediction.seconds.meshing = given ? 0 : model.meshing_seconds;
+
+  auto start = Clock::now();
+  auto attachment =
+      softtissue::attach_to_bone(prediction.mesh, *input.segments, input.moves, model.planes, options.attachment);
+  prediction.bc = std::move(attachment.bc);
+  prediction.seconds.attachment = seconds_since(start);
+  if (softtissue::count_nodes(prediction.bc, softtissue::NodeConstraint::kFixed) == 0)
+    throw Error(ErrorCode::kProcessing, "soft tissue model",
+                "no node touches unmoved bone or a cut: the model would float");
+
+  start = Clock::now();
+  auto solved = solve(prediction.mesh, prediction.bc, options, prediction.seconds.assembly);
+  prediction.node_displacement = std::move(solved.displacement);
+  prediction.iterations = solved.iterations;
+  prediction.seconds.solve = seconds_since(start) - prediction.seconds.assembly;
+
+  map_to_skin(prediction, *input.skin, options.skin_binding_mm);
+  return prediction;
+}
+
+SoftTissuePrediction resolve_soft_tissue(const SoftTissuePrediction& base, const TriangleMesh& skin,
+                                         const SoftTissueOptions& options) {
+  SoftTissuePrediction prediction;
+  prediction.mesh = base.mesh;
+  prediction.quality = base.quality;
+  prediction.bc = base.bc;
+  prediction.meshing = base.meshing;
+  auto start = Clock::now();
+  auto solved = solve(prediction.mesh, prediction.bc, options, prediction.seconds.assembly);
+  prediction.node_displacement = std::move(solved.displacement);
+  prediction.iterations = solved.iterations;
+  prediction.seconds.solve = seconds_since(start) - prediction.seconds.assembly;
+  map_to_skin(prediction, skin, options.skin_binding_mm);
+  return prediction;
+}
+
+Eigen::MatrixX3d displacement_at(const SoftTissuePrediction& prediction, const VertexMatrix& points,
+                                 double max_distance_mm) {
+  const auto mapping = softtissue::init_shape_function_mapping(prediction.mesh, points, max_distance_mm);
+  return softtissue::map_displacement(prediction.mesh, mapping, prediction.node_displacement);
+}
+
+}  // namespace maxillo::casework

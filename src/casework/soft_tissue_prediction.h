@@ -1,0 +1,107 @@
+#pragma once
+// Soft tissue prediction for a planned bone move (thesis ch. 6), from labelled volumes to the
+// predicted skin:
+//   1. the face region: soft tissue below the orbits, above a plane under the chin, in front of
+//      the ears (softtissue/face_region.h, planes from landmarks);
+//   2. a tet mesh of it (CGAL, tetmesh/labelled_tet_mesher.h) within the tet budget;
+//   3. join points from the bone segments and their planned moves, fixed nodes on the cuts
+//      (softtissue/bone_attachment.h);
+//   4. the static solve with the chosen model (mass tensor, linear FEM or mass-spring);
+//   5. the displacement mapped onto the dense skin by the shape functions (eq. 13).
+#include <Eigen/Geometry>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "ceph/landmark.h"
+#include "core/triangle_mesh.h"
+#include "core/volume.h"
+#include "records/soft_tissue_timings.h"
+#include "softtissue/bone_attachment.h"
+#include "softtissue/soft_tissue_model.h"
+#include "softtissue/element_quality.h"
+#include "softtissue/face_region.h"
+#include "tetmesh/labelled_tet_mesher.h"
+
+namespace maxillo::casework {
+
+struct SoftTissueOptions {
+  softtissue::SoftTissueModel model = softtissue::SoftTissueModel::kMassTensor;
+  double poisson_ratio = 0.46;
+  double young_modulus_mpa = 0.003;     // scales forces only: the static answer does not depend on it
+  double gradient_threshold_mm = 1e-3;  // local dynamic stop criterion (mass tensor, mass-spring)
+  int max_sweeps = 100000;              // their sweep limit: a model still moving after it is an error, not an answer
+  tetmesh::TetMeshingOptions meshing;
+  softtissue::AttachmentOptions attachment;
+  double skin_binding_mm = 4.0;         // skin farther from the model keeps its place
+  std::vector<uint8_t> soft_labels{1};  // phantom and CT segmentation both use 1 for soft tissue
+};
+
+struct SoftTissueInput {
+  const LabelVolume* tissues = nullptr;        // tissue labels (soft tissue = options.soft_labels)
+  const LabelVolume* segments = nullptr;       // bone segments (planning/osteotomy.h), same geometry
+  const TriangleMesh* skin = nullptr;          // dense pre-operative skin surface
+  LandmarkSet landmarks;                       // for the region's planes
+  std::map<uint8_t, Eigen::Isometry3d> moves;  // segment label -> planned rigid move
+};
+
+// How the face's tet mesh met its budget (tetmesh::TetMeshingResult's numbers): a mesh over its
+// budget is kept, and the report and simulation.json say so.
+struct MeshingOutcome {
+  double cell_size_mm = 0;  // of the meshing kept
+  int attempts = 0;         // meshings run, each coarser than the last
+  int tet_budget = 0;       // the most tetrahedra asked for
+  bool over_budget(const softtissue::TetMesh& mesh) const { return mesh.tet_count() > tet_budget; }
+};
+
+struct SoftTissuePrediction {
+  softtissue::TetMesh mesh;
+  softtissue::MeshQuality quality;
+  softtissue::BoundaryConditions bc;
+  Eigen::MatrixX3d node_displacement;  // n x 3, mm
+  int iterations = 0;                  // sweeps (MTM, MSM) or Krylov iterations (FEM)
+  TriangleMesh skin_after;             // the skin's vertices moved, same faces
+  Eigen::MatrixX3d skin_displacement;  // per skin vertex, mm
+  int skin_vertices_bound = 0;
+  MeshingOutcome meshing;
+  records::SoftTissueTimings seconds;
+};
+
+// Region planes from landmarks: below the orbitales, 15 mm below menton and in front of the
+// porions (each needs the landmark; missing ones -> Error naming them).
+std::vector<softtissue::RegionPlane> default_face_region_planes(const LandmarkSet& landmarks);
+
+// Steps 1-2, which look at no move: the face region and its tet mesh. Built once for a case, one
+// model serves every move on the same tissues and landmarks (the planned move, the moves found after
+// surgery); `key` names what it was built from, and predict_soft_tissue refuses a model whose key
+// is not its input's.
+struct FaceModel {
+  std::vector<softtissue::RegionPlane> planes;
+  softtissue::TetMesh mesh;
+  softtissue::MeshQuality quality;
+  MeshingOutcome meshing;
+  double region_seconds = 0, meshing_seconds = 0;
+  std::string key;
+};
+FaceModel build_face_model(const LabelVolume& tissues, const LandmarkSet& landmarks, const SoftTissueOptions& options);
+// SHA-256 over the tissue labels, the region's planes, the soft labels and the meshing options.
+std::string face_model_key(const LabelVolume& tissues, const LandmarkSet& landmarks, const SoftTissueOptions& options);
+
+// `model`: the case's face model when the caller has it (build_face_model with the same tissues,
+// landmarks and options; Error(kProcessing) otherwise), else it is built here. The same answer
+// either way.
+SoftTissuePrediction predict_soft_tissue(const SoftTissueInput& input, const SoftTissueOptions& options = {},
+                                         const FaceModel* model = nullptr);
+
+// Re-solves an existing model (same mesh and boundary nodes) with another model or material,
+// for the uncertainty band; fills node_displacement, skin_after and skin_displacement.
+SoftTissuePrediction resolve_soft_tissue(const SoftTissuePrediction& base, const TriangleMesh& skin,
+                                         const SoftTissueOptions& options);
+
+// The displacement at arbitrary points (e.g. soft tissue landmarks), by the shape functions.
+Eigen::MatrixX3d displacement_at(const SoftTissuePrediction& prediction, const VertexMatrix& points,
+                                 double max_distance_mm);
+
+}  // namespace maxillo::casework

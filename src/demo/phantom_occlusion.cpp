@@ -1,0 +1,104 @@
+#include "demo/phantom_occlusion.h"
+
+#include <algorithm>
+
+#include "ceph/landmark_frame.h"
+#include "core/error.h"
+#include "mesh/surface_extraction.h"
+#include "occlusion/arch_contacts.h"
+#include "occlusion/occlusion_benchmark.h"
+#include "sections/occlusion_section.h"
+#include "render/anatomical_views.h"
+
+namespace maxillo::demo {
+namespace {
+
+// The labels' sub-volume around the voxels of `first` and `second`, with a margin of 2 voxels
+// (extracting from the whole head would cost seconds for a few thousand voxels of teeth).
+LabelVolume crop_to_labels(const LabelVolume& labels, uint8_t first, uint8_t second) {
+  const VolumeGeometry& g = labels.geometry;
+  Eigen::Vector3i lo = g.size, hi = Eigen::Vector3i::Constant(-1);
+  for (int k = 0; k < g.size.z(); ++k)
+    for (int j = 0; j < g.size.y(); ++j)
+      for (int i = 0; i < g.size.x(); ++i) {
+        const uint8_t l = labels.labels[size_t(g.index(i, j, k))];
+        if (l != first && l != second) continue;
+        lo = lo.cwiseMin(Eigen::Vector3i(i, j, k));
+        hi = hi.cwiseMax(Eigen::Vector3i(i, j, k));
+      }
+  if (hi.x() < 0) throw Error(ErrorCode::kProcessing, "phantom", "the phantom has no teeth");
+  lo = (lo - Eigen::Vector3i::Constant(2)).cwiseMax(Eigen::Vector3i::Zero());
+  hi = (hi + Eigen::Vector3i::Constant(2)).cwiseMin(g.size - Eigen::Vector3i::Ones());
+  LabelVolume crop;
+  crop.geometry = g;
+  crop.geometry.size = hi - lo + Eigen::Vector3i::Ones();
+  crop.geometry.origin = g.world(lo.cast<double>());
+  crop.labels.resize(size_t(crop.geometry.voxel_count()));
+  for (int k = 0; k < crop.geometry.size.z(); ++k)
+    for (int j = 0; j < crop.geometry.size.y(); ++j)
+      for (int i = 0; i < crop.geometry.size.x(); ++i)
+        crop.labels[size_t(crop.geometry.index(i, j, k))] =
+            labels.labels[size_t(g.index(lo.x() + i, lo.y() + j, lo.z() + k))];
+  return crop;
+}
+
+}  // namespace
+
+PhantomArches phantom_arches(const Phantom& phantom) {
+  const auto upper = uint8_t(Tissue::kUpperTooth), lower = uint8_t(Tissue::kLowerTooth);
+  const LabelVolume teeth = crop_to_labels(phantom.labels, upper, lower);
+  SurfaceOptions options;
+  options.keep_largest_components = 0;  // every tooth
+  return {extract_surface(teeth, upper, options), extract_surface(teeth, lower, options)};
+}
+
+Eigen::Isometry3d phantom_start_pose(const TriangleMesh& upper) {
+  const Eigen::Vector3d centre = upper.vertices.colwise().mean().transpose();
+  Eigen::Isometry3d start = Eigen::Isometry3d::Identity();
+  start.translate(centre + Eigen::Vector3d(0.8, -1.0, 1.5))
+      .rotate(Eigen::AngleAxisd(2.0 * M_PI / 180, Eigen::Vector3d(1, 2, 0.5).normalized()))
+      .translate(-centre);
+  return start;
+}
+
+casework::OcclusionRun phantom_occlusion(const PhantomArches& arches, const std::filesystem::path& folder) {
+  const DistanceField upper(arches.upper), lower(arches.lower);
+  auto pairs = occlusion::contact_spring_pairs(upper, lower, Eigen::Isometry3d::Identity(), 4, 1.0);
+  // Smoothing leaves the phantom's label surfaces up to ~1 mm apart where the teeth touch: each
+  // spring ends where its upper point lies in the phantom's occlusion, not on the lower
+  // surface, so the phantom's occlusion is the springs' rest position.
+  for (occlusion::SpringPair& pair : pairs) pair.lower = pair.upper;
+  if (pairs.size() < 4)
+    throw Error(ErrorCode::kProcessing, "phantom", "the phantom's arches have fewer than 4 contacts");
+  casework::OcclusionRunOptions options;
+  options.upper_label = "phantom upper teeth";
+  options.lower_label = "phantom lower teeth";
+  // Surfaces of 1 mm voxels keep ridges sharper than the splint's 0.25 mm grid resolves; a
+  // wider clearance keeps the imprints off them.
+  options.splint_options.clearance_mm = 0.2;
+  // As the benchmark does: the displaced arch is brought down into contact as deep as the
+  // arches touch in the phantom (label surfaces of touching teeth overlap a little), so the
+  // engine's "no deeper than the start" rule admits the phantom's own occlusion.
+  const double natural_penetration =
+      occlusion::assess_contacts(upper, lower, Eigen::Isometry3d::Identity(), 2.0).max_penetration_mm;
+  const Eigen::Isometry3d start =
+      occlusion::place_in_contact(upper, lower, phantom_start_pose(arches.upper), natural_penetration);
+  return casework::run_occlusion(arches.upper, arches.lower, pairs, start, folder, options);
+}
+
+report::Section phantom_occlusion_section(Archive& archive, int64_t case_id, SkeletalClass skeletal_class,
+                                          const LandmarkSet& landmarks, const std::filesystem::path& folder) {
+  PhantomSpec spec = phantom_spec_for_class(skeletal_class);
+  spec.noise_sigma_hu = 0;  // only the labels are used
+  const casework::OcclusionRun run = phantom_occlusion(phantom_arches(make_phantom(spec)), folder);
+  sections::store_occlusion_artefacts(archive, case_id, run, {});
+  const AnatomicalFrame frame = anatomical_frame(landmarks);
+  std::filesystem::path splint_png;
+  if (run.splint) {
+    splint_png = folder / "splint.png";
+    sections::render_splint(run, frame, splint_png);
+  }
+  return sections::occlusion_section(run, frame, splint_png);
+}
+
+}  // namespace maxillo::demo

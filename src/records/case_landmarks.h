@@ -1,0 +1,64 @@
+#pragma once
+// Landmark sets attached to a case, stored in the archive as 3D Slicer markups (LPS) objects,
+// one "landmarks" artefact per stored set. A set may belong to a time point (pre-operative, end
+// of distraction, 6 months, ...: a free label and an ISO date), recorded in the artefact's
+// parameters JSON: {"source", "count", "frame", "time_point", "date"}. Nothing is overwritten:
+// attaching a set again for a time point adds a newer version; the history keeps every one.
+//
+// A set whose coordinates came from a 2D cephalogram is stored as given (x, y in the image
+// plane, z = 0; see ceph/sagittal_projection.h): "frame" then says "cephalogram" and the
+// parameters carry the CephalogramAxes used to read it.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "archive/archive.h"
+#include "ceph/landmark.h"
+#include "ceph/sagittal_projection.h"
+
+namespace maxillo::records {
+
+struct TimePoint {
+  std::string label;  // free text, e.g. "pre", "post-distraction", "6M"; "" = no time point
+  std::string date;   // "YYYY-MM-DD" or "" (unknown)
+};
+
+// How the stored coordinates are to be read.
+struct LandmarkFrame {
+  LandmarkGeometry geometry = LandmarkGeometry::kVolumeLps;
+  CephalogramAxes axes;  // used when geometry is kCephalogram
+};
+
+// Stores the set and records it as a "landmarks" artefact of the case; `source` says where the
+// points came from (a file name, "phantom (analytic)", ...).
+void attach_landmarks(Archive& archive, int64_t case_id, const LandmarkSet& landmarks, const std::string& source);
+// The same for a time point. Error(kBadValue, date) when the date is not "YYYY-MM-DD" or empty.
+void attach_landmarks(Archive& archive, int64_t case_id, const LandmarkSet& landmarks, const std::string& source,
+                      const TimePoint& time_point, const LandmarkFrame& frame = {});
+
+// The newest landmark set attached to the case; empty when there is none.
+LandmarkSet latest_landmarks(const Archive& archive, int64_t case_id);
+// The same, among the case's artefacts already read (archive.artefacts(case_id)).
+LandmarkSet latest_landmarks(const Archive& archive, const std::vector<ArtefactRecord>& artefacts);
+
+struct StoredLandmarks {
+  int64_t artefact_id = 0;
+  TimePoint time_point;
+  LandmarkFrame frame;
+  std::string source;
+  std::string created_at;
+  int version = 1;  // 1 = first set stored for this time point, 2 = its first revision, ...
+  LandmarkSet landmarks;
+};
+
+// Every stored set of the case, oldest first (the history).
+std::vector<StoredLandmarks> landmark_history(const Archive& archive, int64_t case_id);
+// The newest version of each time point (sets without a time point are left out), ordered by
+// date (undated last), then label.
+std::vector<StoredLandmarks> landmark_time_points(const Archive& archive, int64_t case_id);
+
+// "YYYY-MM-DD" with a month 01-12 and a day 01-31.
+bool is_iso_date(const std::string& text);
+
+}  // namespace maxillo::records

@@ -1,0 +1,43 @@
+#pragma once
+// What a face prediction reports (simulate's simulation.json, `maxillo --json simulate`): one
+// struct with one writer and one strict reader. The reader fails with Error(kArchiveCorrupt)
+// naming the document and the key path on a missing or mistyped field; a document without
+// "format_version" has version 1's layout, a newer one is refused.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/json.h"
+#include "records/soft_tissue_timings.h"
+
+namespace maxillo::records {
+
+struct SimulationSummary {
+  static constexpr int kFormatVersion = 1;
+
+  struct UncertaintyBand {
+    std::vector<std::string> runs;  // "mtm nu=0.46", ...
+    double p95_mm = 0, max_mm = 0;  // spread of the runs about their mean, skin that moved
+  };
+
+  int format_version = kFormatVersion;
+  std::string model;  // model_name: "mtm", "fem", "msm", "nfem"
+  double poisson_ratio = 0;
+  bool plan_application_stored = false;  // the moves came from `plan apply`'s stored result
+  int tetrahedra = 0, nodes = 0;
+  double cell_size_mm = 0;
+  int tet_budget = 0;
+  bool over_tet_budget = false;
+  double min_dihedral_deg = 0, max_aspect_ratio = 0;
+  int prescribed_nodes = 0, fixed_nodes = 0, free_nodes = 0;
+  int iterations = 0;
+  double max_skin_displacement_mm = 0;
+  SoftTissueTimings seconds;
+  std::optional<UncertaintyBand> uncertainty;
+};
+
+Json to_json(const SimulationSummary& summary);
+// `source` names the document in errors (its file, or "artefact N").
+SimulationSummary read_simulation_summary(const Json& json, const std::string& source);
+
+}  // namespace maxillo::records

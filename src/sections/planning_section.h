@@ -1,0 +1,14 @@
+#pragma once
+// The "planning" section of the consultation report (template heading "Surgical plan"), built
+// from a stored plan result (plan_result_record.h, as `maxillo plan apply` stores it): the
+// planned moves in the anatomical frame, the distraction vectors, their checks, the activation
+// schedule, the forward simulation, the renders listed in the result's files (PNG) and the
+// osteotomy outputs.
+#include "records/plan_result_record.h"
+#include "report/report_model.h"
+
+namespace maxillo::sections {
+
+report::Section planning_section(const records::PlanResultRecord& plan_result);
+
+}  // namespace maxillo::sections

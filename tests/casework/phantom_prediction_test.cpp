@@ -1,0 +1,102 @@
+// The whole soft tissue prediction on the phantom: a 6 mm Le Fort I advancement moves the upper
+// lip and the nose base forward and leaves the forehead and the chin in place.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <utility>
+
+#include "core/error.h"
+
+#include "mesh/surface_extraction.h"
+#include "casework/soft_tissue_prediction.h"
+#include "planning/osteotomy.h"
+#include "sample/phantom.h"
+
+namespace maxillo::casework {
+namespace {
+
+struct Case {
+  Phantom phantom;
+  planning::OsteotomyResult cut;
+  TriangleMesh skin;
+};
+
+const Case& phantom_case() {
+  static const Case c = [] {
+    PhantomSpec spec;
+    spec.spacing_mm = 1.5;
+    spec.noise_sigma_hu = 0;
+    Case made{make_phantom(spec), {}, {}};
+    made.cut = planning::cut_skeleton(made.phantom.labels, planning::default_osteotomies(made.phantom.landmarks, {}));
+    SurfaceOptions surface;
+    surface.target_triangles = 60000;
+    made.skin = extract_surface(made.phantom.ct, -400, surface);
+    return made;
+  }();
+  return c;
+}
+
+SoftTissuePrediction predict(softtissue::SoftTissueModel model, double advancement_mm) {
+  const auto& c = phantom_case();
+  SoftTissueInput input{&c.phantom.labels, &c.cut.segments, &c.skin, c.phantom.landmarks, {}};
+  input.moves[uint8_t(planning::Segment::kMaxilla)] = Eigen::Translation3d(0, -advancement_mm, 0);  // anterior = -y
+  SoftTissueOptions options;
+  options.model = model;
+  options.meshing.cell_size_mm = 5;
+  options.meshing.max_tets = 40000;
+  return predict_soft_tissue(input, options);
+}
+
+// Anterior displacement (mm) of a soft tissue landmark.
+double forward_at(const SoftTissuePrediction& p, const std::string& label) {
+  VertexMatrix point(1, 3);
+  point.row(0) = find_landmark(phantom_case().phantom.landmarks, label)->transpose();
+  return -displacement_at(p, point, 4.0)(0, 1);
+}
+
+TEST(PhantomPrediction, AdvancementMovesLipAndNoseBaseButNotForeheadOrChin) {
+  auto p = predict(softtissue::SoftTissueModel::kLinearFem, 6);
+  EXPECT_LE(p.mesh.tet_count(), 40000);
+  EXPECT_EQ(softtissue::count_non_positive_tets(p.mesh), 0);
+  EXPECT_GT(p.quality.min_dihedral_deg, 3.0);
+  EXPECT_GT(softtissue::count_nodes(p.bc, softtissue::NodeConstraint::kPrescribed), 50);
+  const double lip = forward_at(p, "Ls"), subnasale = forward_at(p, "Sn");
+  EXPECT_GT(lip, 3.0);
+  EXPECT_LT(lip, 6.5);  // soft tissue follows the bone by less than 1:1 ... never more
+  EXPECT_GT(subnasale, 2.0);
+  EXPECT_LT(std::abs(forward_at(p, "NS")), 0.3);  // soft nasion lies above the region
+  EXPECT_LT(std::abs(forward_at(p, "PogS")), 1.5);
+  EXPECT_GT(p.skin_vertices_bound, 1000);
+}
+
+TEST(PhantomPrediction, ConvergedMassTensorMatchesLinearFem) {
+  auto fem = predict(softtissue::SoftTissueModel::kLinearFem, 6);
+  auto options = SoftTissueOptions{};
+  options.model = softtissue::SoftTissueModel::kMassTensor;
+  options.gradient_threshold_mm = 1e-6;
+  auto mtm = resolve_soft_tissue(fem, phantom_case().skin, options);
+  EXPECT_LT((mtm.node_displacement - fem.node_displacement).rowwise().norm().maxCoeff(), 0.01);
+}
+
+// A point-wise model stopped by its sweep limit while points still move is not an answer: the
+// prediction is an error naming the model and how far from rest it was, never a face.
+TEST(PhantomPrediction, AModelNotAtRestIsAnErrorNotAFace) {
+  const auto fem = predict(softtissue::SoftTissueModel::kLinearFem, 6);
+  for (auto [model, name] : {std::pair{softtissue::SoftTissueModel::kMassTensor, "mass tensor model"},
+                             std::pair{softtissue::SoftTissueModel::kMassSpring, "mass-spring model"}}) {
+    SoftTissueOptions options;
+    options.model = model;
+    options.max_sweeps = 2;
+    try {
+      resolve_soft_tissue(fem, phantom_case().skin, options);
+      ADD_FAILURE() << name << ": no error";
+    } catch (const Error& e) {
+      const std::string message = e.what();
+      EXPECT_NE(message.find(name), std::string::npos) << message;
+      EXPECT_NE(message.find("did not come to rest: after 2 sweeps"), std::string::npos) << message;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace maxillo::casework

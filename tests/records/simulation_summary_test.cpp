@@ -1,0 +1,71 @@
+// simulate's summary: written and read back as one record; damage is an error naming the key.
+#include "records/simulation_summary.h"
+
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <string>
+
+#include "core/error.h"
+#include "support/error_of.h"
+
+namespace maxillo::records {
+namespace {
+
+SimulationSummary example() {
+  SimulationSummary s;
+  s.model = "mtm";
+  s.poisson_ratio = 0.46;
+  s.plan_application_stored = true;
+  s.tetrahedra = 41234;
+  s.nodes = 9012;
+  s.cell_size_mm = 4.25;
+  s.tet_budget = 40000;
+  s.over_tet_budget = true;
+  s.min_dihedral_deg = 11.5;
+  s.max_aspect_ratio = 6.25;
+  s.prescribed_nodes = 300;
+  s.fixed_nodes = 1200;
+  s.free_nodes = 7512;
+  s.iterations = 332;
+  s.max_skin_displacement_mm = 10.625;
+  s.seconds = {0.5, 6.0, 0.25, 0.125, 0.0625, 0.75};
+  s.uncertainty = SimulationSummary::UncertaintyBand{{"mtm nu=0.46", "fem nu=0.46"}, 0.5, 1.25};
+  return s;
+}
+
+TEST(SimulationSummary, RoundTripsThroughItsText) {
+  const SimulationSummary written = example();
+  const SimulationSummary read = read_simulation_summary(Json::parse(to_json(written).dump(2)), "test");
+  EXPECT_EQ(to_json(read), to_json(written));  // every field, compared through the one writer
+  EXPECT_EQ(read.tetrahedra, 41234);
+  EXPECT_TRUE(read.over_tet_budget);
+  EXPECT_TRUE(read.plan_application_stored);
+  ASSERT_TRUE(read.uncertainty);
+  EXPECT_EQ(read.uncertainty->runs.size(), 2u);
+  SimulationSummary without_band = written;
+  without_band.uncertainty.reset();
+  EXPECT_FALSE(read_simulation_summary(to_json(without_band), "test").uncertainty);
+}
+
+TEST(SimulationSummary, DamageIsAnErrorNamingTheKey) {
+  const Json good = to_json(example());
+  auto failure = [&](const std::function<void(Json&)>& damage) {
+    return testing::error_after_damage(good, damage,
+                                       [](const Json& j) { read_simulation_summary(j, "sim/simulation.json"); });
+  };
+  EXPECT_EQ(failure([](Json& j) { j.erase("over_tet_budget"); }), "sim/simulation.json: over_tet_budget: missing");
+  EXPECT_EQ(failure([](Json& j) { j["model"] = "springs"; }), "sim/simulation.json: model: unknown model \"springs\"");
+  EXPECT_EQ(failure([](Json& j) { j["plan_application"] = "maybe"; }),
+            "sim/simulation.json: plan_application: must be \"stored\" or \"applied\"");
+  EXPECT_EQ(failure([](Json& j) { j["seconds"].erase("solve"); }), "sim/simulation.json: seconds.solve: missing");
+  EXPECT_EQ(failure([](Json& j) { j["uncertainty"]["runs"][1] = 3; }),
+            "sim/simulation.json: uncertainty.runs[1]: must be a string");
+  EXPECT_EQ(failure([](Json& j) { j["tetrahedra"] = -1; }),
+            "sim/simulation.json: tetrahedra: must lie in [0, 2147483647]");
+  EXPECT_EQ(failure([](Json& j) { j["format_version"] = 2; }),
+            "sim/simulation.json: format_version: is 2, newer than this program reads (1): update maxillo");
+}
+
+}  // namespace
+}  // namespace maxillo::records
