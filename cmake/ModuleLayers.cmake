@@ -24,7 +24,7 @@ set(maxillo_allowed_links_tetmesh core geometry softtissue)
 # the report sections, then the jobs themselves, the benchmarks and the demo.
 set(maxillo_below_records core geometry ceph occlusion softtissue validation planning sample archive net imaging mesh
                           render report tetmesh)
-set(maxillo_allowed_links_records core geometry ceph archive imaging mesh planning softtissue validation)
+set(maxillo_allowed_links_records core geometry ceph archive imaging mesh occlusion planning softtissue validation)
 set(maxillo_allowed_links_casework ${maxillo_below_records} records)
 set(maxillo_allowed_links_sections ${maxillo_allowed_links_casework} casework)
 set(maxillo_allowed_links_consultation ${maxillo_allowed_links_sections} sections)

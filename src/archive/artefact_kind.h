@@ -23,6 +23,8 @@ enum class ArtefactKind {
   kOcclusion,            // the final occlusion's numbers (JSON)
   kOcclusionogram,       // its occlusionogram (PNG)
   kSplint,               // the surgical splint (STL)
+  kSimulation,           // a face prediction's summary (JSON, simulation_summary.h)
+  kSimulationImage,      // its pictures (PNG)
   kValidation,           // a validation's numbers (JSON)
   kValidationDistances,  // the face's per-vertex distances of a validation (JSON)
   kValidationImage,      // a validation's pictures (PNG)
@@ -45,6 +47,8 @@ inline constexpr ArtefactKind kAllArtefactKinds[] = {ArtefactKind::kLandmarks,
                                                      ArtefactKind::kOcclusion,
                                                      ArtefactKind::kOcclusionogram,
                                                      ArtefactKind::kSplint,
+                                                     ArtefactKind::kSimulation,
+                                                     ArtefactKind::kSimulationImage,
                                                      ArtefactKind::kValidation,
                                                      ArtefactKind::kValidationDistances,
                                                      ArtefactKind::kValidationImage,

@@ -8,10 +8,13 @@
 #include "core/error.h"
 #include "core/json.h"
 #include "core/log.h"
+#include "core/sha256.h"
 #include "mesh/mesh_io.h"
 #include "records/case_landmarks.h"
 #include "casework/case_surfaces.h"
 #include "records/derivation.h"
+#include "records/plan_archive.h"
+#include "records/simulation_archive.h"
 #include "casework/planned_case.h"
 #include "planning/osteotomy.h"
 #include "planning/plan_application.h"
@@ -30,9 +33,55 @@ LandmarkSet soft_landmarks_of(const LandmarkSet& landmarks) {
   return found;
 }
 
-// Writes the files and returns what simulation.json holds.
-records::SimulationSummary write_outputs(SimulationResult& result, const std::filesystem::path& out,
-                                         const SoftTissueOptions& options) {
+// The moves of the case's soft tissue landmarks, in the anatomical frame.
+std::vector<records::SimulationSummary::LandmarkMove> landmark_moves(const SoftTissuePrediction& prediction,
+                                                                     const AnatomicalFrame& frame,
+                                                                     const LandmarkSet& landmarks) {
+  constexpr double kLandmarkBindingMm = 4.0;  // a landmark farther from the model is not moved
+  VertexMatrix points(Eigen::Index(landmarks.size()), 3);
+  for (size_t i = 0; i < landmarks.size(); ++i) points.row(Eigen::Index(i)) = landmarks[i].position.transpose();
+  const auto u = displacement_at(prediction, points, kLandmarkBindingMm);
+  std::vector<records::SimulationSummary::LandmarkMove> moves;
+  for (size_t i = 0; i < landmarks.size(); ++i) {
+    const Eigen::Vector3d d = u.row(Eigen::Index(i)).transpose();
+    moves.push_back({landmarks[i].label, d.dot(frame.anterior), d.dot(frame.superior), d.dot(frame.left), d.norm()});
+  }
+  return moves;
+}
+
+// What simulation.json holds, and the archive keeps, of a prediction.
+records::SimulationSummary summarise(const SimulationResult& result, const SimulationRequest& request,
+                                     const LandmarkSet& landmarks) {
+  const auto& p = result.prediction;
+  const SoftTissueOptions& options = request.options;
+  records::SimulationSummary summary;
+  summary.plan_text = request.plan_text.empty() ? request.plan.description : request.plan_text;
+  summary.model = std::string(model_name(options.model));
+  summary.poisson_ratio = options.poisson_ratio;
+  summary.plan_application_stored = result.reused_plan_application;
+  summary.tetrahedra = p.mesh.tet_count();
+  summary.nodes = p.mesh.node_count();
+  summary.cell_size_mm = p.meshing.cell_size_mm;
+  summary.meshing_attempts = p.meshing.attempts;
+  summary.tet_budget = p.meshing.tet_budget;
+  summary.over_tet_budget = p.meshing.over_budget(p.mesh);
+  summary.min_dihedral_deg = p.quality.min_dihedral_deg;
+  summary.mean_aspect_ratio = p.quality.mean_aspect_ratio;
+  summary.max_aspect_ratio = p.quality.max_aspect_ratio;
+  summary.prescribed_nodes = softtissue::count_nodes(p.bc, softtissue::NodeConstraint::kPrescribed);
+  summary.fixed_nodes = softtissue::count_nodes(p.bc, softtissue::NodeConstraint::kFixed);
+  summary.free_nodes = softtissue::count_nodes(p.bc, softtissue::NodeConstraint::kFree);
+  summary.iterations = p.iterations;
+  summary.max_skin_displacement_mm = p.skin_displacement.rows() ? p.skin_displacement.rowwise().norm().maxCoeff() : 0;
+  summary.seconds = p.seconds;
+  if (result.uncertainty)
+    summary.uncertainty = {result.uncertainty->runs, result.uncertainty->p95_mm, result.uncertainty->max_mm};
+  summary.soft_landmarks = landmark_moves(p, result.frame, soft_landmarks_of(landmarks));
+  return summary;
+}
+
+// Writes the predicted skin, the model and simulation.json into `out`.
+void write_outputs(SimulationResult& result, const std::filesystem::path& out) {
   const auto& p = result.prediction;
   Eigen::MatrixXd magnitude = p.skin_displacement.rowwise().norm();
   std::vector<PointArray> arrays{{"displacement", p.skin_displacement}, {"displacement_magnitude", magnitude}};
@@ -47,27 +96,31 @@ records::SimulationSummary write_outputs(SimulationResult& result, const std::fi
   write_mesh(p.skin_after, files[1]);
   write_mesh(p.skin_after, files[2]);
   softtissue::write_vtu(files[3], p.mesh, p.node_displacement, p.bc);
-  records::SimulationSummary summary;
-  summary.model = std::string(model_name(options.model));
-  summary.poisson_ratio = options.poisson_ratio;
-  summary.plan_application_stored = result.reused_plan_application;
-  summary.tetrahedra = p.mesh.tet_count();
-  summary.nodes = p.mesh.node_count();
-  summary.cell_size_mm = p.meshing.cell_size_mm;
-  summary.tet_budget = p.meshing.tet_budget;
-  summary.over_tet_budget = p.meshing.over_budget(p.mesh);
-  summary.min_dihedral_deg = p.quality.min_dihedral_deg;
-  summary.max_aspect_ratio = p.quality.max_aspect_ratio;
-  summary.prescribed_nodes = softtissue::count_nodes(p.bc, softtissue::NodeConstraint::kPrescribed);
-  summary.fixed_nodes = softtissue::count_nodes(p.bc, softtissue::NodeConstraint::kFixed);
-  summary.free_nodes = softtissue::count_nodes(p.bc, softtissue::NodeConstraint::kFree);
-  summary.iterations = p.iterations;
-  summary.max_skin_displacement_mm = magnitude.size() ? magnitude.maxCoeff() : 0.0;
-  summary.seconds = p.seconds;
-  if (result.uncertainty)
-    summary.uncertainty = {result.uncertainty->runs, result.uncertainty->p95_mm, result.uncertainty->max_mm};
-  write_file_atomically(files[4], to_json(summary).dump(2) + "\n");
-  return summary;
+  write_file_atomically(files[4], to_json(result.summary).dump(2) + "\n");
+}
+
+// The prediction's summary and pictures into the archive, keyed by what it was made from: the
+// case's CT, the plan and landmarks, the face model and the model's settings.
+void store_outputs(Archive& archive, int64_t case_id, int64_t series, const SimulationResult& result,
+                   const SimulationRequest& request, const LabelVolume& tissues, const LandmarkSet& landmarks) {
+  const std::string plan_key =
+      records::plan_application_key(sha256_hex(planning::serialise_plan(request.plan)), landmarks);
+  const Json settings{{"face_model", face_model_key(tissues, landmarks, request.options)},
+                      {"model", result.summary.model},
+                      {"poisson_ratio", request.options.poisson_ratio},
+                      {"gradient_threshold_mm", request.options.gradient_threshold_mm},
+                      {"skin_binding_mm", request.options.skin_binding_mm},
+                      {"uncertainty", request.uncertainty},
+                      {"plan_text", result.summary.plan_text}};
+  records::SimulationToStore stored{
+      case_id,
+      records::derivation_key({records::series_content_hash(archive, series), plan_key}, settings),
+      result.summary,
+      {}};
+  for (const auto* pictures :
+       {&result.views.before, &result.views.after, &result.views.displacement, &result.uncertainty_views})
+    stored.pictures.insert(stored.pictures.end(), pictures->begin(), pictures->end());
+  records::store_simulation(archive, stored);
 }
 
 }  // namespace
@@ -166,11 +219,12 @@ SimulationResult simulate_case(Archive& archive, int64_t case_id, const Simulati
   std::filesystem::create_directories(request.out);
   result.frame = anatomical_frame(landmarks);
   result.views = render_soft_tissue_views(result.skin_before, result.prediction, result.frame, request.out);
-  result.soft_landmarks = soft_landmarks_of(landmarks);
   if (result.uncertainty)
     result.uncertainty_views = render_uncertainty_views(result.prediction.skin_after, result.uncertainty->spread_mm,
                                                         result.frame, request.out);
-  result.summary = write_outputs(result, request.out, request.options);
+  result.summary = summarise(result, request, landmarks);
+  write_outputs(result, request.out);
+  store_outputs(archive, case_id, series, result, request, tissues, landmarks);
   return result;
 }
 

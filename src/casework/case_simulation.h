@@ -2,7 +2,8 @@
 // `maxillo simulate` for a case of the archive: the CT of the case segmented and its jaws told
 // apart (planning/jaw_separation.h), the plan's osteotomies and moves applied to the bone
 // segments, the face predicted (soft_tissue_prediction.h), optionally the uncertainty across
-// models and Poisson ratios, and the results written as files and pictures.
+// models and Poisson ratios, and the results written as files and pictures and stored in the
+// archive (records/simulation_archive.h), where the consultation report finds the newest.
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -46,9 +47,8 @@ struct SimulationResult {
   SoftTissueViewFiles views;
   std::vector<std::filesystem::path> uncertainty_views;  // frontal, lateral; with `uncertainty` only
   AnatomicalFrame frame;                                 // of the case's landmarks: the views' cameras
-  LandmarkSet soft_landmarks;                            // soft_tissue_landmark_labels() the case has
   std::vector<std::filesystem::path> files;              // predicted skin (vtp, stl, ply), model (vtu), json
-  records::SimulationSummary summary;                    // what simulation.json holds
+  records::SimulationSummary summary;                    // what simulation.json holds, and the archive keeps
   bool reused_plan_application = false;                  // the plan's moves came from `plan apply`'s stored result
 };
 

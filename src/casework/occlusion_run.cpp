@@ -13,43 +13,53 @@ namespace {
 
 using namespace maxillo::occlusion;
 
-Json repair_json(const ArchRepairReport& r) {
-  return {{"shells", r.shells},
-          {"shells_flipped", r.shells_flipped},
-          {"degenerate_faces_removed", r.degenerate_faces_removed},
-          {"open_edges", r.open_edges},
-          {"notes", r.notes}};
+records::OcclusionRecord::Arch arch_record(const ArchDistances& arch) {
+  return {arch.contact_vertices, arch.contact_area_mm2, arch.teeth};
 }
 
-Json teeth_json(const ArchDistances& arch) {
-  Json teeth = Json::array();
-  for (const ToothContacts& t : arch.teeth)
-    teeth.push_back({{"component", t.component},
-                     {"vertices", t.vertices},
-                     {"contact_vertices", t.contact_vertices},
-                     {"contact_area_mm2", t.contact_area_mm2},
-                     {"min_distance_mm", t.min_distance_mm}});
-  return {{"contact_vertices", arch.contact_vertices}, {"contact_area_mm2", arch.contact_area_mm2}, {"teeth", teeth}};
-}
-
-Json splint_json(const Splint& s, const SplintOptions& o) {
+records::OcclusionRecord::Splint splint_record(const Splint& s, const SplintOptions& o) {
   const SplintReport& r = s.report;
-  return {{"file", "splint.stl"},
-          {"minimum_thickness_mm", o.thickness_mm},
-          {"imprint_depth_mm", o.imprint_depth_mm},
-          {"clearance_mm", o.clearance_mm},
-          {"voxel_mm", o.voxel_mm},
-          {"thickness_mm", r.thickness_mm},
-          {"thickness_columns", r.thickness_columns},
-          {"volume_mm3", r.volume_mm3},
-          {"triangles", r.triangles},
-          {"watertight", r.watertight},
-          {"components", r.components},
-          {"min_distance_upper_mm", r.min_distance_upper_mm},
-          {"min_distance_lower_mm", r.min_distance_lower_mm},
-          {"intersecting_pairs_upper", r.intersecting_pairs_upper},
-          {"intersecting_pairs_lower", r.intersecting_pairs_lower},
-          {"seconds", r.seconds}};
+  return {.file = "splint.stl",
+          .minimum_thickness_mm = o.thickness_mm,
+          .imprint_depth_mm = o.imprint_depth_mm,
+          .clearance_mm = o.clearance_mm,
+          .voxel_mm = o.voxel_mm,
+          .thickness_mm = r.thickness_mm,
+          .thickness_columns = r.thickness_columns,
+          .volume_mm3 = r.volume_mm3,
+          .triangles = r.triangles,
+          .watertight = r.watertight,
+          .components = r.components,
+          .min_distance_upper_mm = r.min_distance_upper_mm,
+          .min_distance_lower_mm = r.min_distance_lower_mm,
+          .intersecting_pairs_upper = r.intersecting_pairs_upper,
+          .intersecting_pairs_lower = r.intersecting_pairs_lower,
+          .seconds = r.seconds};
+}
+
+// What occlusion.json holds of the run.
+records::OcclusionRecord occlusion_record(const OcclusionRun& run, const OcclusionRunOptions& options) {
+  records::OcclusionRecord record;
+  record.upper_file = options.upper_label;
+  record.lower_file = options.lower_label;
+  record.frame = "lower file coordinates (mm); upper_transform maps upper file coordinates into it";
+  record.upper_transform = run.aligned.pose;
+  record.start_transform = run.start;
+  record.converged = run.aligned.status == AlignmentStatus::Converged;
+  record.iterations = run.aligned.iterations;
+  record.residual_spring_mm = run.aligned.residual_spring_mm;
+  record.penetration_mm = run.aligned.penetration_mm;
+  record.allowed_penetration_mm = run.allowed_penetration_mm;
+  record.intersecting_triangle_pairs = int64_t(run.intersecting_triangle_pairs);
+  record.contact_threshold_mm = options.contact_threshold_mm;
+  record.upper = arch_record(run.gram.upper);
+  record.lower = arch_record(run.gram.lower);
+  record.upper_repair = run.upper_repair;
+  record.lower_repair = run.lower_repair;
+  if (run.splint) record.splint = splint_record(*run.splint, options.splint_options);
+  record.splint_error = run.splint_error;
+  record.files = run.files;
+  return record;
 }
 
 void write_distances(const TriangleMesh& mesh, const Eigen::Isometry3d& to_common, const ArchDistances& arch,
@@ -141,37 +151,18 @@ OcclusionRun run_occlusion(TriangleMesh upper, TriangleMesh lower, const std::ve
       folder / "occlusionogram.png");
   run.files = {"occlusionogram.png", "upper_distances.csv", "lower_distances.csv"};
 
-  Json splint = nullptr;
   if (options.splint) {
     try {
       run.splint = make_splint(upper_field, lower_field, run.aligned.pose, options.splint_options);
       write_mesh(run.splint->mesh, folder / "splint.stl");
       run.files.push_back("splint.stl");
-      splint = splint_json(*run.splint, options.splint_options);
     } catch (const Error& e) {
       run.splint_error = e.what();
-      splint = {{"error", run.splint_error}};
     }
   }
 
-  run.summary = {{"upper_file", options.upper_label},
-                 {"lower_file", options.lower_label},
-                 {"frame", "lower file coordinates (mm); upper_transform maps upper file coordinates into it"},
-                 {"upper_transform", transform_to_json(run.aligned.pose)},
-                 {"start_transform", transform_to_json(start)},
-                 {"status", run.aligned.status == AlignmentStatus::Converged ? "converged" : "iteration_limit"},
-                 {"iterations", run.aligned.iterations},
-                 {"residual_spring_mm", run.aligned.residual_spring_mm},
-                 {"penetration_mm", run.aligned.penetration_mm},
-                 {"allowed_penetration_mm", run.allowed_penetration_mm},
-                 {"intersecting_triangle_pairs", run.intersecting_triangle_pairs},
-                 {"contact_threshold_mm", options.contact_threshold_mm},
-                 {"upper", teeth_json(run.gram.upper)},
-                 {"lower", teeth_json(run.gram.lower)},
-                 {"repairs", {{"upper", repair_json(run.upper_repair)}, {"lower", repair_json(run.lower_repair)}}},
-                 {"splint", splint},
-                 {"files", run.files}};
-  write_file_atomically(folder / "occlusion.json", run.summary.dump(2) + "\n");
+  run.record = occlusion_record(run, options);
+  write_file_atomically(folder / "occlusion.json", to_json(run.record).dump(2) + "\n");
   return run;
 }
 

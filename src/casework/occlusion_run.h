@@ -17,6 +17,7 @@
 #include "occlusion/guided_alignment.h"
 #include "occlusion/occlusionogram.h"
 #include "casework/surgical_splint.h"
+#include "records/occlusion_record.h"
 
 namespace maxillo::casework {
 
@@ -40,8 +41,8 @@ struct OcclusionRun {
   std::optional<Splint> splint;
   std::string splint_error;  // why there is no splint when one was asked for
   std::filesystem::path folder;
-  std::vector<std::string> files;  // written into folder
-  Json summary;                    // the content of occlusion.json
+  std::vector<std::string> files;   // written into folder
+  records::OcclusionRecord record;  // the content of occlusion.json
 };
 
 // Throws Error for unreadable output folders; a splint that cannot be made is reported in

@@ -1,196 +1,15 @@
-// maxillo demo: the whole pipeline on the synthetic phantom, from nothing to a PDF report.
-#include <chrono>
+// maxillo demo: the whole pipeline on the synthetic phantom, from nothing to a PDF report
+// (demo/demo_run.h).
 #include <iostream>
-#include <optional>
+#include <map>
 
-#include "archive/archive_location.h"
 #include "cli/command.h"
-#include "core/error.h"
-#include "core/json.h"
-#include "core/log.h"
-#include "core/temporary_folder.h"
-#include "net/loopback_server.h"
-#include "net/store_client.h"
-#include "records/case_landmarks.h"
-#include "followup/ceph_sample_cohort.h"
-#include "records/cohort_archive.h"
-#include "followup/cohort_report.h"
-#include "casework/case_simulation.h"
-#include "sections/soft_tissue_section.h"
-#include "consultation/consultation_report.h"
-#include "demo/phantom_occlusion.h"
-#include "nightly/nightly.h"
-#include "casework/plan_case.h"
-#include "casework/planned_case.h"
-#include "consultation/report_dicom.h"
-#include "casework/synthetic_postop_case.h"
-#include "records/validation_archive.h"
-#include "casework/validation_json.h"
-#include "casework/sample_case.h"
+#include "demo/demo_run.h"
 
 namespace maxillo::cli {
-namespace {
-
-struct DemoOptions {
-  std::filesystem::path out = "demo-output";
-  SkeletalClass skeletal_class = SkeletalClass::I;
-};
-
-class StageClock {
- public:
-  void mark(const std::string& stage) {
-    auto now = std::chrono::steady_clock::now();
-    double seconds = std::chrono::duration<double>(now - last_).count();
-    stages_.push_back({stage, seconds});
-    log::info(stage, ": ", seconds, " s");
-    last_ = now;
-  }
-  Json to_json() const {
-    Json stages = Json::object();
-    double total = 0;
-    for (const auto& [name, seconds] : stages_) {
-      stages[name] = seconds;
-      total += seconds;
-    }
-    return {{"stages_seconds", stages}, {"total_seconds", total}};
-  }
-
- private:
-  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
-  std::vector<std::pair<std::string, double>> stages_;
-};
-
-// The files of a folder, in name order.
-std::vector<std::filesystem::path> files_in(const std::filesystem::path& folder) {
-  std::vector<std::filesystem::path> files;
-  for (const auto& entry : std::filesystem::directory_iterator(folder))
-    if (entry.is_regular_file()) files.push_back(entry.path());
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
-// Sends `files` as `sender` to a storage server of ours on a free loopback port that archives
-// into `archive_dir` as `receiver` (the clinic's path: a scanner pushing to maxillo, maxillo
-// pushing the report to the PACS). Throws unless every file was sent and archived.
-net::StorageServerCounts push_over_dicom(const std::vector<std::filesystem::path>& files, const std::string& sender,
-                                         const std::string& receiver, const std::filesystem::path& archive_dir) {
-  // An archive on a PostgreSQL server has no folder of this machine's to receive into.
-  std::optional<TemporaryFolder> spool;
-  if (names_index_server(archive_dir.string())) spool.emplace("demo-spool");
-  net::StorageServerOptions server{.archive = archive_dir,
-                                   .spool = spool ? spool->path() : std::filesystem::path(),
-                                   .ae_title = receiver,
-                                   .allowed = {{sender, "127.0.0.1"}}};
-  const auto counts = net::with_loopback_server(server, [&](const net::DicomPeer& peer) {
-    const auto sent = net::send_files(peer, files, {.calling_ae = sender, .progress = ProgressDisplay::Never});
-    if (!sent.failures.empty())
-      throw Error(ErrorCode::kProcessing, sent.failures.front().file.string(), sent.failures.front().reason);
-  });
-  if (counts.stored + counts.already_archived != int64_t(files.size()))
-    throw Error(ErrorCode::kProcessing, archive_dir.string(), "not every instance sent over DICOM was archived");
-  return counts;
-}
-
-int run_demo(const DemoOptions& options, const GlobalOptions& global) {
-  StageClock clock;
-  std::filesystem::create_directories(options.out);
-  auto sample = casework::write_sample_case(options.skeletal_class, 1.0, options.out / "sample");
-  clock.mark("generate phantom");
-
-  // The phantom arrives as a patient's CT does in a clinic: pushed by the scanner (C-STORE) to
-  // `maxillo serve`, here on a loopback port inside this process.
-  auto archive_dir = global.archive_dir.empty() ? options.out / "archive" : global.archive_dir;
-  const auto received = push_over_dicom(files_in(sample.ct_folder), "DEMO-CT", "MAXILLO", archive_dir);
-  auto archive = Archive::open(archive_dir);
-  clock.mark("receive over DICOM");
-
-  auto case_id = archive.resolve_case(casework::kPhantomPatientId);
-  // Dated follow-up (the sample cohort's first patient) for the follow-up table and Wits chart;
-  // attached first so the phantom's own set stays the newest (it frames the views).
-  records::CohortImportReport follow_up;
-  records::attach_cohort_time_points(archive, case_id,
-                                     followup::sample_patient_follow_up(followup::sample_cohort_patients()[0], 2001),
-                                     {}, "sample cohort P01 (phantoms)", follow_up);
-  records::attach_landmarks(archive, case_id, sample.landmarks, "phantom (analytic)");
-  consultation::ConsultationOptions report_options;
-  report_options.occlusion = demo::phantom_occlusion_section(archive, case_id, options.skeletal_class, sample.landmarks,
-                                                             options.out / "occlusion");
-  clock.mark("occlusion");
-  // The issue #4 must-show plan: two trans-sinusal distractors, 10 mm advancement, 6 mm widening.
-  records::store_plan(archive, case_id,
-                      planning::distraction_plan({.advancement_mm = 10, .widening_mm = 6},
-                                                 "TS-MD distraction: 10 mm advancement, 6 mm widening"));
-  auto plan = casework::apply_case_plan(archive, case_id, options.out / "plan");
-  clock.mark("plan");
-  // The face for the planned move (issue #3): the plan's maxillary move, mass tensor model. The
-  // face's tet model is built once here and serves the synthetic post-operative CT and the
-  // validation too.
-  const auto planned = casework::load_planned_case(archive, case_id, &plan.tissues);
-  casework::SimulationRequest simulation;
-  simulation.plan = plan.plan.plan;
-  simulation.out = options.out / "soft-tissue";
-  simulation.uncertainty = true;
-  simulation.face_model = planned.face_model(simulation.options);
-  auto predicted = casework::simulate_case(archive, case_id, simulation, &plan.tissues);
-  report_options.soft_tissue = sections::soft_tissue_section(predicted, simulation);
-  clock.mark("soft tissue");
-  // Validation (issue #7): a synthetic post-operative CT with a known error, registered, the
-  // bone moves found by ICP, the face predicted for them and compared; then the nightly summary.
-  auto postop = casework::make_synthetic_postop_case(archive, case_id, {}, options.out / "postop", true, "", &planned);
-  clock.mark("synthetic post-operative CT");
-  auto validation = casework::validate_case(archive, case_id, {}, options.out / "validation", &planned);
-  records::store_validation(archive, casework::validation_to_store(validation));
-  clock.mark("validation");
-  nightly::NightlyOptions nightly_options;
-  nightly_options.out = options.out / "nightly";
-  auto nightly = nightly::run_nightly(archive, nightly_options);
-  clock.mark("nightly summary");
-  auto report = consultation::write_consultation_report(archive, case_id, options.out / "report.pdf", report_options);
-  clock.mark("volume, surfaces, views, report");
-  // The report back to the PACS (a second server of ours standing in for it), as Encapsulated
-  // PDF in the patient's study, as `maxillo send --report` does.
-  const auto report_dicom = consultation::write_report_dicom(archive, case_id, report.pdf, options.out / "report.dcm",
-                                                             consultation::StoreInArchive::Yes);
-  const auto pacs = push_over_dicom({report_dicom.file}, "MAXILLO", "DEMO-PACS", options.out / "pacs");
-  clock.mark("report sent to the PACS");
-  auto cohort = followup::analyse_cohort(followup::sample_cohort(), {}, ceph::Sex::kUnknown, "sample cohort");
-  auto cohort_pdf = options.out / "cohort-followup.pdf";
-  int cohort_pages =
-      followup::write_cohort_report(cohort, followup::consecutive_pairs(followup::cohort_time_point_labels(cohort)),
-                                    "sample cohort (synthetic)", cohort_pdf);
-  clock.mark("cohort follow-up");
-
-  Json summary{{"report", report.pdf.string()},
-               {"pages", report.pages},
-               {"archive", archive_dir.string()},
-               {"case", case_id},
-               {"received_over_dicom", received.stored},
-               {"already_archived", received.already_archived},
-               {"report_sent_to_pacs", pacs.stored + pacs.already_archived},
-               {"pacs_archive", (options.out / "pacs").string()},
-               {"surfaces_reused", report.surfaces_reused},
-               {"cohort_report", cohort_pdf.string()},
-               {"cohort_pages", cohort_pages},
-               {"plan_result", plan.result_json.string()},
-               {"plan_feasible", plan.result.feasible},
-               {"soft_tissue_max_displacement_mm", predicted.views.max_displacement_mm},
-               {"validation", validation.summary},
-               {"validation_truth", postop.truth},
-               {"nightly_summary", nightly.summary_pdf.string()},
-               {"nightly_pages", nightly.summary_pages},
-               {"timing", clock.to_json()}};
-  if (global.json)
-    std::cout << summary.dump(2) << "\n";
-  else
-    std::cout << "demo report: " << report.pdf.string() << " (" << report.pages << " pages, "
-              << summary["timing"]["total_seconds"].get<double>() << " s)\n";
-  return 0;
-}
-
-}  // namespace
 
 void attach_demo(CLI::App& app, CommandContext& ctx) {
-  auto options = std::make_shared<DemoOptions>();
+  auto options = std::make_shared<demo::DemoOptions>();
   app.add_option("--out", options->out,
                  "output folder (created): sample/, archive/, report.pdf, nightly/, cohort-followup.pdf")
       ->capture_default_str();
@@ -198,7 +17,16 @@ void attach_demo(CLI::App& app, CommandContext& ctx) {
       {"I", SkeletalClass::I}, {"II", SkeletalClass::II}, {"III", SkeletalClass::III}};
   app.add_option("--class", options->skeletal_class, "skeletal class of the phantom: I, II or III")
       ->transform(CLI::CheckedTransformer(classes, CLI::ignore_case));
-  app.callback([options, &ctx] { ctx.exit_code = run_demo(*options, ctx.global); });
+  app.callback([options, &ctx] {
+    options->archive_dir = ctx.global.archive_dir;
+    const Json summary = demo::run_demo(*options);
+    if (ctx.global.json)
+      std::cout << summary.dump(2) << "\n";
+    else
+      std::cout << "demo report: " << summary["report"].get<std::string>() << " (" << summary["pages"].get<int>()
+                << " pages, " << summary["timing"]["total_seconds"].get<double>() << " s)\n";
+    ctx.exit_code = 0;
+  });
 }
 
 }  // namespace maxillo::cli

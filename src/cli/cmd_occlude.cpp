@@ -34,8 +34,8 @@ struct OccludeOptions {
 void print_summary(const casework::OcclusionRun& run, const OccludeOptions& options) {
   for (const auto& note : run.upper_repair.notes) std::cout << "upper arch: " << note << "\n";
   for (const auto& note : run.lower_repair.notes) std::cout << "lower arch: " << note << "\n";
-  std::cout << "guided alignment " << run.summary["status"].get<std::string>() << " after " << run.aligned.iterations
-            << " iterations; penetration " << run.aligned.penetration_mm << " mm (allowed "
+  std::cout << "guided alignment " << (run.record.converged ? "converged" : "iteration_limit") << " after "
+            << run.aligned.iterations << " iterations; penetration " << run.aligned.penetration_mm << " mm (allowed "
             << run.allowed_penetration_mm << " mm)\nresidual springs (mm):";
   for (double r : run.aligned.residual_spring_mm) std::cout << " " << r;
   std::cout << "\ncontact vertices < " << options.run.contact_threshold_mm << " mm: upper "
@@ -70,7 +70,7 @@ int run_occlude(OccludeOptions options, const GlobalOptions& global) {
     sections::store_occlusion_artefacts(archive, archive.resolve_case(options.case_text), run, inputs);
   }
   if (global.json)
-    std::cout << run.summary.dump(2) << "\n";
+    std::cout << records::to_json(run.record).dump(2) << "\n";
   else
     print_summary(run, options);
   return 0;

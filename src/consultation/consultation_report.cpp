@@ -15,6 +15,7 @@
 #include "records/derivation.h"
 #include "records/plan_archive.h"
 #include "sections/planning_section.h"
+#include "sections/soft_tissue_section.h"
 #include "sections/validation_section.h"
 #include "report/report_template.h"
 #include "report/write_report.h"
@@ -163,7 +164,8 @@ ConsultationResult write_consultation_report(Archive& archive, int64_t case_id, 
   if (auto plan_result = records::latest_plan_result(archive, case_id))
     model.sections.push_back(sections::planning_section(*plan_result));
   if (options.occlusion) model.sections.push_back(*options.occlusion);
-  if (options.soft_tissue) model.sections.push_back(*options.soft_tissue);
+  if (auto simulation = records::latest_simulation(archive, case_id))
+    model.sections.push_back(sections::soft_tissue_section(*simulation));
   if (auto validation = records::latest_validation(archive, case_id))
     model.sections.push_back(sections::validation_section(*validation));
   model.sections.push_back(contents_section(archive, contents));

@@ -18,8 +18,7 @@ struct ConsultationOptions {
   std::string template_resource = "templates/consultation.json";
   casework::SurfaceRecipe surfaces;
   casework::ViewRecipe views;
-  std::optional<report::Section> occlusion;    // the "occlusion" section (occlusion_section.h), when one was made
-  std::optional<report::Section> soft_tissue;  // the "soft_tissue" section (case_simulation.h), when one was made
+  std::optional<report::Section> occlusion;  // the "occlusion" section (occlusion_section.h), when one was made
 };
 
 struct ConsultationResult {

@@ -85,6 +85,16 @@ const Json& JsonReader::required_array(const std::string& key) {
   return v;
 }
 
+std::vector<std::string> JsonReader::required_texts(const std::string& key) {
+  const Json& array = required_array(key);
+  std::vector<std::string> texts;
+  for (size_t i = 0; i < array.size(); ++i) {
+    if (!array[i].is_string()) fail(field(key) + "[" + std::to_string(i) + "]", "must be a string");
+    texts.push_back(array[i].get<std::string>());
+  }
+  return texts;
+}
+
 Eigen::Isometry3d JsonReader::required_rigid_transform(const std::string& key) {
   const Json& rows = required_array(key);
   const std::string name = field(key);

@@ -10,6 +10,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "core/error.h"
 #include "core/json.h"
@@ -53,6 +54,8 @@ class JsonReader {
   std::string required_text(const std::string& key);
   Eigen::Vector3d required_point(const std::string& key);
   const Json& required_array(const std::string& key);
+  // An array of strings; an element that is not a string fails naming it ("notes[2]").
+  std::vector<std::string> required_texts(const std::string& key);
   // A rigid transform stored as 4 rows of 4 numbers: the last row (0, 0, 0, 1), the 3 x 3 part a
   // rotation (orthonormal to 1e-6, determinant +1).
   Eigen::Isometry3d required_rigid_transform(const std::string& key);

@@ -118,11 +118,7 @@ PlanResultRecord read_plan_result_record(const Json& json, const std::string& so
   record.plan = read_plan(r.at("plan"), source);
   record.frame_source = r.object("frame").required_text("source");
   record.feasible = r.required_bool("feasible");
-  const Json& refusals = r.required_array("refusals");
-  for (size_t i = 0; i < refusals.size(); ++i) {
-    if (!refusals[i].is_string()) r.fail("refusals[" + std::to_string(i) + "]", "must be a string");
-    record.refusals.push_back(refusals[i].get<std::string>());
-  }
+  record.refusals = r.required_texts("refusals");
   record.moves = planning::planned_moves_from_json(json, source);
   if (r.has("distraction")) record.distraction = read_distraction(r.object("distraction"));
   record.files = read_files(r);

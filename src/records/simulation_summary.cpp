@@ -26,14 +26,30 @@ SoftTissueTimings read_seconds(JsonReader r) {
 
 SimulationSummary::UncertaintyBand read_band(JsonReader r) {
   SimulationSummary::UncertaintyBand band;
-  const Json& runs = r.required_array("runs");
-  for (size_t i = 0; i < runs.size(); ++i) {
-    if (!runs[i].is_string()) r.fail(r.field("runs") + "[" + std::to_string(i) + "]", "must be a string");
-    band.runs.push_back(runs[i].get<std::string>());
-  }
+  band.runs = r.required_texts("runs");
   band.p95_mm = r.required_number("p95_mm", 0);
   band.max_mm = r.required_number("max_mm", 0);
   return band;
+}
+
+SimulationSummary::LandmarkMove read_landmark_move(JsonReader r) {
+  SimulationSummary::LandmarkMove move;
+  move.label = r.required_text("label");
+  move.forward_mm = r.required_number("forward_mm");
+  move.up_mm = r.required_number("up_mm");
+  move.left_mm = r.required_number("left_mm");
+  move.total_mm = r.required_number("total_mm", 0);
+  return move;
+}
+
+// The fields version 2 added: required from version 2 on.
+void read_report_facts(JsonReader& r, SimulationSummary& s) {
+  s.plan_text = r.required_text("plan_text");
+  s.meshing_attempts = count(r, "meshing_attempts");
+  s.mean_aspect_ratio = r.required_number("mean_aspect_ratio", 0);
+  const Json& landmarks = r.required_array("soft_landmarks");
+  for (size_t i = 0; i < landmarks.size(); ++i)
+    s.soft_landmarks.push_back(read_landmark_move(r.element(landmarks, "soft_landmarks", i)));
 }
 
 }  // namespace
@@ -62,6 +78,19 @@ Json to_json(const SimulationSummary& s) {
               {"assembly", s.seconds.assembly},
               {"solve", s.seconds.solve},
               {"mapping", s.seconds.mapping}}}};
+  if (s.format_version >= 2) {
+    json["plan_text"] = s.plan_text;
+    json["meshing_attempts"] = s.meshing_attempts;
+    json["mean_aspect_ratio"] = s.mean_aspect_ratio;
+    Json landmarks = Json::array();
+    for (const auto& m : s.soft_landmarks)
+      landmarks.push_back({{"label", m.label},
+                           {"forward_mm", m.forward_mm},
+                           {"up_mm", m.up_mm},
+                           {"left_mm", m.left_mm},
+                           {"total_mm", m.total_mm}});
+    json["soft_landmarks"] = landmarks;
+  }
   if (s.uncertainty)
     json["uncertainty"] = {
         {"runs", s.uncertainty->runs}, {"p95_mm", s.uncertainty->p95_mm}, {"max_mm", s.uncertainty->max_mm}};
@@ -93,6 +122,7 @@ SimulationSummary read_simulation_summary(const Json& json, const std::string& s
   s.max_skin_displacement_mm = r.required_number("max_skin_displacement_mm", 0);
   s.seconds = read_seconds(r.object("seconds"));
   if (r.has("uncertainty")) s.uncertainty = read_band(r.object("uncertainty"));
+  if (s.format_version >= 2) read_report_facts(r, s);
   return s;
 }
 

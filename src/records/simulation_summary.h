@@ -13,27 +13,37 @@
 namespace maxillo::records {
 
 struct SimulationSummary {
-  static constexpr int kFormatVersion = 1;
+  // 2: the report's facts (plan_text, mean_aspect_ratio, meshing_attempts, soft_landmarks) added,
+  // required from this version on; a version 1 summary has none of them.
+  static constexpr int kFormatVersion = 2;
 
   struct UncertaintyBand {
     std::vector<std::string> runs;  // "mtm nu=0.46", ...
     double p95_mm = 0, max_mm = 0;  // spread of the runs about their mean, skin that moved
   };
+  // A soft tissue landmark's predicted move in the anatomical frame (forward, up, to the left).
+  struct LandmarkMove {
+    std::string label;
+    double forward_mm = 0, up_mm = 0, left_mm = 0, total_mm = 0;
+  };
 
   int format_version = kFormatVersion;
-  std::string model;  // model_name: "mtm", "fem", "msm", "nfem"
+  std::string plan_text;  // the plan in one line, e.g. "maxilla 6.0 mm advancement"
+  std::string model;      // model_name: "mtm", "fem", "msm", "nfem"
   double poisson_ratio = 0;
   bool plan_application_stored = false;  // the moves came from `plan apply`'s stored result
   int tetrahedra = 0, nodes = 0;
   double cell_size_mm = 0;
+  int meshing_attempts = 0;  // meshings run, each coarser than the last
   int tet_budget = 0;
   bool over_tet_budget = false;
-  double min_dihedral_deg = 0, max_aspect_ratio = 0;
+  double min_dihedral_deg = 0, mean_aspect_ratio = 0, max_aspect_ratio = 0;
   int prescribed_nodes = 0, fixed_nodes = 0, free_nodes = 0;
   int iterations = 0;
   double max_skin_displacement_mm = 0;
   SoftTissueTimings seconds;
   std::optional<UncertaintyBand> uncertainty;
+  std::vector<LandmarkMove> soft_landmarks;  // those of the case's landmarks that are soft tissue ones
 };
 
 Json to_json(const SimulationSummary& summary);

@@ -1,6 +1,8 @@
 #include "records/stored_artefact.h"
 
+#include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/json_reader.h"
 
 namespace maxillo::records {
 
@@ -17,6 +19,21 @@ Json artefact_json(const Archive& archive, const ArtefactRecord& artefact) {
   Json json = Json::parse(artefact_text(archive, artefact), nullptr, /*allow_exceptions=*/false);
   if (json.is_discarded()) throw Error(ErrorCode::kArchiveCorrupt, artefact_source(artefact), "is not JSON");
   return json;
+}
+
+void store_picture(Archive& archive, int64_t case_id, ArtefactKind kind, const std::string& inputs_hash,
+                   const std::filesystem::path& png) {
+  const std::string sha = archive.store_object(read_file(png));
+  archive.add_artefact(
+      NewArtefact{case_id, kind_name(kind), sha, "image/png", inputs_hash, Json{{"name", png.stem().string()}}.dump()});
+}
+
+std::string picture_name(const ArtefactRecord& picture) {
+  const std::string source = artefact_source(picture);
+  const Json parameters = Json::parse(picture.parameters_json, nullptr, /*allow_exceptions=*/false);
+  if (!parameters.is_object()) throw Error(ErrorCode::kArchiveCorrupt, source, "its parameters are not a JSON object");
+  JsonReader r(parameters, "", source, ErrorCode::kArchiveCorrupt, "parameters");
+  return r.required_text("name");
 }
 
 }  // namespace maxillo::records

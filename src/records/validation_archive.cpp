@@ -3,7 +3,6 @@
 #include <cmath>
 
 #include "archive/artefact_kind.h"
-#include "core/atomic_file.h"
 #include "records/stored_artefact.h"
 
 namespace maxillo::records {
@@ -12,12 +11,6 @@ namespace {
 const std::string kSummaryKind = kind_name(ArtefactKind::kValidation);
 const std::string kDistancesKind = kind_name(ArtefactKind::kValidationDistances);
 const std::string kImageKind = kind_name(ArtefactKind::kValidationImage);
-
-void store_image(Archive& archive, int64_t case_id, const std::string& key, const std::filesystem::path& png) {
-  const auto sha = archive.store_object(read_file(png));
-  archive.add_artefact(
-      NewArtefact{case_id, kImageKind, sha, "image/png", key, Json{{"name", png.stem().string()}}.dump()});
-}
 
 Json face_distances_json(const ValidationToStore& v) {
   Json closest = Json::array(), regions = Json::array();
@@ -35,7 +28,7 @@ std::optional<ArtefactRecord> newest(const std::vector<ArtefactRecord>& artefact
   std::optional<ArtefactRecord> found;
   for (const auto& a : artefacts) {
     if (a.kind != kind || a.inputs_hash != key) continue;
-    if (!name.empty() && Json::parse(a.parameters_json).value("name", "") != name) continue;
+    if (!name.empty() && picture_name(a) != name) continue;
     if (!found || a.id > found->id) found = a;
   }
   return found;
@@ -66,7 +59,8 @@ std::optional<StoredValidation> load(const Archive& archive, const std::vector<A
 }  // namespace
 
 void store_validation(Archive& archive, const ValidationToStore& v) {
-  for (const auto& png : v.pictures) store_image(archive, v.case_id, v.inputs_hash, png);
+  for (const auto& png : v.pictures)
+    store_picture(archive, v.case_id, ArtefactKind::kValidationImage, v.inputs_hash, png);
   archive.add_artefact(NewArtefact{v.case_id, kDistancesKind, archive.store_object(face_distances_json(v).dump()),
                                    "application/json", v.inputs_hash});
   archive.add_artefact(

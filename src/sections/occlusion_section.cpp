@@ -5,6 +5,7 @@
 #include "archive/artefact_kind.h"
 #include "core/atomic_file.h"
 #include "core/json.h"
+#include "occlusion/occlusion_files.h"
 #include "records/derivation.h"
 #include "render/render_views.h"
 
@@ -155,10 +156,10 @@ void render_splint(const casework::OcclusionRun& run, const AnatomicalFrame& fra
 
 void store_occlusion_artefacts(Archive& archive, int64_t case_id, const casework::OcclusionRun& run,
                                const std::vector<std::string>& input_hashes) {
-  const Json& s = run.summary;
-  const std::string key = records::derivation_key(input_hashes, {{"start_transform", s["start_transform"]},
-                                                                 {"contact_threshold_mm", s["contact_threshold_mm"]},
-                                                                 {"splint", run.splint.has_value()}});
+  const std::string key =
+      records::derivation_key(input_hashes, {{"start_transform", occlusion::transform_to_json(run.start)},
+                                             {"contact_threshold_mm", run.contact_threshold_mm},
+                                             {"splint", run.splint.has_value()}});
   const auto store = [&](const std::string& kind, const std::string& file, const std::string& media_type) {
     if (archive.find_artefact(case_id, kind, key)) return;  // same inputs, same program: already stored
     const std::string sha = archive.store_object(read_file(run.folder / file));

@@ -8,7 +8,10 @@
 #include "geometry/mesh_measures.h"
 #include "occlusion/splint_field.h"
 #include "support/test_meshes.h"
+#include "casework/occlusion_run.h"
 #include "casework/surgical_splint.h"
+#include "core/temporary_folder.h"
+#include "support/run_maxillo.h"
 
 namespace maxillo::occlusion {
 namespace {
@@ -126,6 +129,31 @@ TEST(ThicknessAlong, MeasuresABoxAcrossEachAxis) {
   EXPECT_NEAR(casework::thickness_along(box, {0.3, 0.7, 10}, {0, 0, 1}), 3, 1e-12);
   EXPECT_NEAR(casework::thickness_along(box, {0.3, -5, 1}, {0, 1, 0}), 2, 1e-12);
   EXPECT_EQ(casework::thickness_along(box, {5, 5, 5}, {0, 0, 1}), 0);
+}
+
+// The whole occlusion run on the spheres, the upper row lifted 1 mm and pulled back by four
+// springs: occlusion.json is the run's record, and it reads back as the same record.
+TEST(OcclusionRun, WritesItsRecordAsOcclusionJsonThatReadsBackTheSame) {
+  const Arches arches;
+  const TemporaryFolder folder("occlusion-run");
+  std::vector<SpringPair> pairs;
+  for (double x : {4.0, 12.0, 20.0, 8.0}) pairs.push_back({{x, 0, arches.upper_z}, {x, 0, arches.upper_z}});
+  Eigen::Isometry3d start = Eigen::Isometry3d::Identity();
+  start.pretranslate(Eigen::Vector3d(0, 0, 1));
+  const casework::OcclusionRun run = casework::run_occlusion(arches.upper, arches.lower, pairs, start, folder.path());
+
+  const records::OcclusionRecord read =
+      records::read_occlusion_record(Json::parse(testing::slurp(folder.path() / "occlusion.json")), "occlusion.json");
+  EXPECT_EQ(records::to_json(read), records::to_json(run.record));
+  EXPECT_EQ(read.format_version, records::OcclusionRecord::kFormatVersion);
+  EXPECT_TRUE(read.start_transform.isApprox(start));
+  EXPECT_TRUE(read.upper_transform.isApprox(run.aligned.pose));
+  EXPECT_EQ(read.residual_spring_mm.size(), pairs.size());
+  EXPECT_EQ(read.upper.teeth.size(), 3u);  // the three spheres of each row are its teeth
+  EXPECT_GT(read.upper.contact_vertices, 0);
+  ASSERT_TRUE(read.splint);
+  EXPECT_EQ(read.splint->watertight, run.splint->report.watertight);
+  for (const auto& file : read.files) EXPECT_TRUE(std::filesystem::exists(folder.path() / file)) << file;
 }
 
 }  // namespace

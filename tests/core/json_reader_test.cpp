@@ -10,7 +10,8 @@ namespace maxillo {
 namespace {
 
 const Json kRecord = Json::parse(R"({"format_version": 2, "feasible": true, "name": "plan",
-  "rows": [{"value_mm": 1.5, "point": [1, 2, 3]}, {"value_mm": "2"}], "nested": {"count": 7}})");
+  "rows": [{"value_mm": 1.5, "point": [1, 2, 3]}, {"value_mm": "2"}], "nested": {"count": 7},
+  "notes": ["a", "b"], "mixed": {"notes": ["a", 3]}})");
 
 TEST(JsonReader, ReadsRequiredFields) {
   JsonReader r(kRecord, "", "artefact 3", ErrorCode::kArchiveCorrupt);
@@ -22,6 +23,8 @@ TEST(JsonReader, ReadsRequiredFields) {
   EXPECT_EQ(first.required_number("value_mm", 0, 10), 1.5);
   EXPECT_EQ(first.required_point("point"), Eigen::Vector3d(1, 2, 3));
   EXPECT_EQ(r.object("nested").required_integer("count"), 7);
+  EXPECT_EQ(r.required_texts("notes"), (std::vector<std::string>{"a", "b"}));
+  r.at("mixed");
   r.refuse_unknown_keys();  // every key was asked for
 }
 
@@ -49,6 +52,9 @@ TEST(JsonReader, FailuresNameTheSourceAndTheKeyPath) {
               r.element(r.required_array("rows"), "rows", 1).required_number("value_mm");
             }),
             "artefact 3: rows[1].value_mm: must be a number");
+  EXPECT_EQ(testing::error_of([&] { reader().object("mixed").required_texts("notes"); }),
+            "artefact 3: mixed.notes[1]: must be a string");
+  EXPECT_EQ(testing::error_of([&] { reader().required_texts("name"); }), "artefact 3: name: must be an array");
   EXPECT_EQ(testing::error_of([&] { reader().object("nested").required_text("count"); }),
             "artefact 3: nested.count: must be a string");
   EXPECT_EQ(testing::error_of([&] {

@@ -9,6 +9,7 @@
 #include "core/temporary_folder.h"
 #include "mesh/mesh_io.h"
 #include "geometry/mesh_measures.h"
+#include "support/pdf_tools.h"
 #include "support/run_maxillo.h"
 
 namespace maxillo {
@@ -56,6 +57,16 @@ TEST(Simulate, SixMillimetreAdvancementOfThePhantomGivesAPlausibleFace) {
   for (const char* png : {"soft-tissue-before-lateral.png", "soft-tissue-after-lateral.png",
                           "soft-tissue-displacement-frontal.png", "soft-tissue-uncertainty-lateral.png"})
     EXPECT_TRUE(std::filesystem::exists(dir / "sim" / png)) << png;
+
+  // The prediction is kept in the archive: `maxillo report` shows it without predicting again.
+  auto report = run_maxillo({archive, "report", "MAXILLO-PHANTOM-001", "--out", (dir / "report.pdf").string()}, dir);
+  ASSERT_EQ(report.exit_code, 0) << report.err;
+  const std::string text = testing::pdf_text(dir / "report.pdf");
+  EXPECT_NE(text.find("Predicted face for the planned bone moves (Le Fort I, maxilla 6.0 mm advancement)"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("linear FEM, Poisson ratio 0.46"), std::string::npos) << text;
+  EXPECT_EQ(testing::count_of(text, "Uncertainty band, "), 2u) << text;  // the two pictures' captions
 
   // The non-linear model (neo-Hookean) converges on the same face and stays near the linear one.
   auto nonlinear = run_maxillo({archive, "--json", "simulate", "MAXILLO-PHANTOM-001", "--advance", "6", "--model",

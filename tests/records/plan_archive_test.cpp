@@ -4,7 +4,7 @@
 
 #include <functional>
 
-#include "archive/archive_fixture.h"
+#include "support/archived_case.h"
 #include "core/error.h"
 #include "core/sha256.h"
 #include "records/plan_archive.h"
@@ -18,16 +18,7 @@
 namespace maxillo::records {
 namespace {
 
-struct ArchivedCase {
-  maxillo::testing::TemporaryFolder folder;
-  Archive archive = Archive::open(folder.path() / "archive", OpenMode::CreateIfMissing);
-  int64_t case_id = 0;
-  ArchivedCase() {
-    maxillo::testing::write_series(folder.path() / "dicom", 3, "P9");
-    archive.import_paths({folder.path() / "dicom"});
-    case_id = archive.resolve_case("P9");
-  }
-};
+using testing::ArchivedCase;
 
 TEST(PlanArchive, EverySavedPlanIsANewVersion) {
   ArchivedCase c;

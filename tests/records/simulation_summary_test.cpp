@@ -14,15 +14,18 @@ namespace {
 
 SimulationSummary example() {
   SimulationSummary s;
+  s.plan_text = "Le Fort I, maxilla 6.0 mm advancement";
   s.model = "mtm";
   s.poisson_ratio = 0.46;
   s.plan_application_stored = true;
   s.tetrahedra = 41234;
   s.nodes = 9012;
   s.cell_size_mm = 4.25;
+  s.meshing_attempts = 3;
   s.tet_budget = 40000;
   s.over_tet_budget = true;
   s.min_dihedral_deg = 11.5;
+  s.mean_aspect_ratio = 1.625;
   s.max_aspect_ratio = 6.25;
   s.prescribed_nodes = 300;
   s.fixed_nodes = 1200;
@@ -31,6 +34,7 @@ SimulationSummary example() {
   s.max_skin_displacement_mm = 10.625;
   s.seconds = {0.5, 6.0, 0.25, 0.125, 0.0625, 0.75};
   s.uncertainty = SimulationSummary::UncertaintyBand{{"mtm nu=0.46", "fem nu=0.46"}, 0.5, 1.25};
+  s.soft_landmarks = {{"Sn", 4.5, 0.25, -0.125, 4.5087}, {"Ls", 5.0, 0.5, 0, 5.025}};
   return s;
 }
 
@@ -46,6 +50,20 @@ TEST(SimulationSummary, RoundTripsThroughItsText) {
   SimulationSummary without_band = written;
   without_band.uncertainty.reset();
   EXPECT_FALSE(read_simulation_summary(to_json(without_band), "test").uncertainty);
+  ASSERT_EQ(read.soft_landmarks.size(), 2u);
+  EXPECT_EQ(read.soft_landmarks[1].label, "Ls");
+  EXPECT_EQ(read.plan_text, written.plan_text);
+}
+
+// Version 1 summaries (before the report's facts were added) still read, without those facts.
+TEST(SimulationSummary, AVersion1SummaryReadsWithoutTheReportFacts) {
+  Json v1 = to_json(example());
+  for (const char* key : {"plan_text", "meshing_attempts", "mean_aspect_ratio", "soft_landmarks"}) v1.erase(key);
+  v1["format_version"] = 1;
+  const SimulationSummary read = read_simulation_summary(v1, "test");
+  EXPECT_EQ(read.format_version, 1);
+  EXPECT_TRUE(read.soft_landmarks.empty());
+  EXPECT_EQ(read.tetrahedra, 41234);
 }
 
 TEST(SimulationSummary, DamageIsAnErrorNamingTheKey) {
@@ -63,8 +81,11 @@ TEST(SimulationSummary, DamageIsAnErrorNamingTheKey) {
             "sim/simulation.json: uncertainty.runs[1]: must be a string");
   EXPECT_EQ(failure([](Json& j) { j["tetrahedra"] = -1; }),
             "sim/simulation.json: tetrahedra: must lie in [0, 2147483647]");
-  EXPECT_EQ(failure([](Json& j) { j["format_version"] = 2; }),
-            "sim/simulation.json: format_version: is 2, newer than this program reads (1): update maxillo");
+  EXPECT_EQ(failure([](Json& j) { j.erase("plan_text"); }), "sim/simulation.json: plan_text: missing");
+  EXPECT_EQ(failure([](Json& j) { j["soft_landmarks"][0].erase("up_mm"); }),
+            "sim/simulation.json: soft_landmarks[0].up_mm: missing");
+  EXPECT_EQ(failure([](Json& j) { j["format_version"] = 3; }),
+            "sim/simulation.json: format_version: is 3, newer than this program reads (2): update maxillo");
 }
 
 }  // namespace

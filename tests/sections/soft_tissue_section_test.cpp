@@ -1,4 +1,6 @@
-// The soft-tissue section says when the face's tet mesh is over its budget, with the numbers.
+// The soft-tissue section is built from the stored prediction alone: its facts, the over-budget
+// note with the numbers, the landmark table, the uncertainty band, and a loud error when a
+// picture the summary needs is not stored.
 #include "sections/soft_tissue_section.h"
 
 #include <gtest/gtest.h>
@@ -6,37 +8,80 @@
 #include <string>
 #include <variant>
 
+#include "core/error.h"
+#include "support/error_of.h"
+
 namespace maxillo::sections {
 namespace {
 
-// A prediction on a two-tet mesh, meshed with the given budget.
-casework::SoftTissuePrediction prediction_with_budget(int tet_budget) {
-  casework::SoftTissuePrediction prediction;
-  prediction.mesh.nodes.resize(5, 3);
-  prediction.mesh.nodes << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1;
-  prediction.mesh.tets.resize(2, 4);
-  prediction.mesh.tets << 0, 1, 2, 3, 1, 2, 3, 4;
-  prediction.bc = softtissue::all_free(5);
-  prediction.meshing = {.cell_size_mm = 7.5, .attempts = 6, .tet_budget = tet_budget};
-  return prediction;
+records::StoredSimulation stored_prediction(int tetrahedra, int tet_budget) {
+  records::StoredSimulation stored;
+  stored.source = "artefact 9 (simulation)";
+  records::SimulationSummary& s = stored.summary;
+  s.plan_text = "maxilla 6.0 mm advancement";
+  s.model = "mtm";
+  s.poisson_ratio = 0.46;
+  s.tetrahedra = tetrahedra;
+  s.nodes = 5;
+  s.cell_size_mm = 7.5;
+  s.meshing_attempts = 6;
+  s.tet_budget = tet_budget;
+  s.over_tet_budget = tetrahedra > tet_budget;
+  s.soft_landmarks = {{"Sn", 4.04, 0.5, -0.3125, 4.1}};
+  for (const char* kind : {"before", "after", "displacement"})
+    for (const char* view : {"frontal", "lateral", "oblique"}) {
+      const std::string name = std::string("soft-tissue-") + kind + "-" + view;
+      stored.pictures[name] = "/objects/" + name;
+    }
+  return stored;
+}
+
+template <class Block>
+std::vector<const Block*> blocks_of(const report::Section& section) {
+  std::vector<const Block*> found;
+  for (const auto& block : section.blocks)
+    if (const auto* b = std::get_if<Block>(&block)) found.push_back(b);
+  return found;
 }
 
 std::string notes_of(const report::Section& section) {
   std::string text;
-  for (const auto& block : section.blocks)
-    if (const auto* note = std::get_if<report::Note>(&block)) text += note->text + "\n";
+  for (const auto* note : blocks_of<report::Note>(section)) text += note->text + "\n";
   return text;
 }
 
 TEST(SoftTissueSection, AMeshOverItsBudgetIsReportedWithTheNumbers) {
-  const SoftTissueSummary summary{"maxilla 6.0 mm advancement", {}, {}};
-  const std::string over = notes_of(soft_tissue_section(prediction_with_budget(1), {}, {}, summary));
+  const std::string over = notes_of(soft_tissue_section(stored_prediction(2, 1)));
   EXPECT_NE(over.find("over its budget: 2 tetrahedra against at most 1 asked for, after 6 meshings up to a cell "
                       "size of 7.5 mm"),
             std::string::npos)
       << over;
-  const std::string within = notes_of(soft_tissue_section(prediction_with_budget(2), {}, {}, summary));
+  const std::string within = notes_of(soft_tissue_section(stored_prediction(2, 2)));
   EXPECT_EQ(within.find("budget"), std::string::npos) << within;
+}
+
+TEST(SoftTissueSection, ShowsTheStoredPicturesAndLandmarkMoves) {
+  const report::Section section = soft_tissue_section(stored_prediction(2, 2));
+  const auto grids = blocks_of<report::ImageGrid>(section);
+  ASSERT_EQ(grids.size(), 3u);  // before, after, displacement; no uncertainty band
+  EXPECT_EQ(grids[1]->figures[1].caption, "Predicted, right lateral");
+  EXPECT_EQ(grids[1]->figures[1].png, "/objects/soft-tissue-after-lateral");
+  const auto tables = blocks_of<report::Table>(section);
+  ASSERT_EQ(tables.size(), 1u);
+  ASSERT_EQ(tables[0]->rows.size(), 1u);
+  EXPECT_EQ(tables[0]->rows[0], (std::vector<std::string>{"Sn", "4.0", "0.5", "-0.3", "4.1"}));
+}
+
+TEST(SoftTissueSection, TheUncertaintyBandComesWithItsPictures) {
+  records::StoredSimulation stored = stored_prediction(2, 2);
+  stored.summary.uncertainty = records::SimulationSummary::UncertaintyBand{{"fem nu=0.46", "mtm nu=0.46"}, 0.25, 0.5};
+  EXPECT_EQ(testing::error_of([&] { soft_tissue_section(stored); }),
+            "artefact 9 (simulation): its picture soft-tissue-uncertainty-frontal is not stored");
+  stored.pictures["soft-tissue-uncertainty-frontal"] = "/objects/u-f";
+  stored.pictures["soft-tissue-uncertainty-lateral"] = "/objects/u-l";
+  const report::Section section = soft_tissue_section(stored);
+  EXPECT_EQ(blocks_of<report::ImageGrid>(section).size(), 4u);
+  EXPECT_NE(notes_of(section).find("across 2 runs"), std::string::npos) << notes_of(section);
 }
 
 }  // namespace
