@@ -1,6 +1,7 @@
 #pragma once
-// What `maxillo bench register` and the cadaver registration test share: the real head CT, a
-// known rigid move of it, the skin points the error is measured on, and elastix as the anchor.
+// What `maxillo bench register` (register_benchmark.h) and the cadaver registration test share:
+// the real head CT, a known rigid move of it, the skin points the error is measured on, and
+// elastix as the anchor.
 //
 // Error measure: the fixed CT's skin vertices p; the moving CT shows p at known(p); a registration
 // result M (moving_to_fixed) sends that back to M(known(p)); the error is the RMS over the skin

@@ -1,11 +1,14 @@
 #pragma once
-// What `maxillo bench surfaces` measures (issue 16): a clinical-size volume through segmentation,
-// skin and bone, with seconds per stage and the process's peak memory; optionally the same
-// surfaces traced on the CT's own grid (SurfaceGrid::Native, the former path) for comparison:
-// their time, and how far the default surfaces lie from them.
+// What `maxillo bench surfaces` measures (issue 16): a clinical-size volume (the phantom, the
+// cadaver head or a DICOM series) through segmentation, skin and bone, with voxels, seconds per
+// stage and the process's peak memory; optionally the same surfaces traced on the CT's own grid
+// (SurfaceGrid::Native, the former path) for comparison: their time, and how far the default
+// surfaces lie from them.
+#include <filesystem>
 #include <optional>
 #include <string>
 
+#include "core/json.h"
 #include "core/volume.h"
 #include "casework/case_surfaces.h"
 #include "validation/distance_statistics.h"
@@ -43,13 +46,23 @@ struct SurfaceBenchmark {
 SurfaceBenchmark benchmark_surfaces(const Volume& volume, double load_seconds, bool compare_native,
                                     const casework::SurfaceRecipe& recipe = {});
 
-// Peak resident memory of this process so far, kB (getrusage).
-long peak_memory_kb();
+struct SurfaceBenchOptions {
+  double phantom_spacing = 0.5;  // the synthetic phantom at this spacing (mm), unless cadaver or series
+  bool cadaver = false;          // the real cadaver head (the shared data's cthead-stanford)
+  std::filesystem::path series;  // a folder holding one DICOM CT series
+  bool compare_native = false;   // also the surfaces on the CT's own grid
+};
 
-// Resets the kernel's high-water mark of this process's resident memory to what it holds now
-// ("5" written to /proc/self/clear_refs), so that resident_peak_kb() then measures one step.
-// False where that cannot be done.
-bool reset_resident_peak();
-long resident_peak_kb();  // VmHWM of /proc/self/status, kB; 0 if unreadable
+// The volume asked for, loaded, through benchmark_surfaces. The figures: input (what was
+// loaded), size, spacing_mm, voxels, load_seconds, segmentation_seconds, total_seconds,
+// surfaces (skin_seconds, bone_seconds, skin_triangles, bone_triangles, bone_pieces),
+// peak_memory_mb, surfaces_peak_memory_mb; with compare_native also native: its surfaces and
+// the distances of the default ones to them (skin_distance, bone_distance: mean_abs_mm, mean_mm,
+// p5_mm, p95_mm, max_abs_mm).
+Json run_surface_benchmark(const SurfaceBenchOptions& options);
+
+// The figures as `bench surfaces` prints them: the volume, the stages; with the native grid its
+// times and distances.
+std::string surface_benchmark_text(const Json& figures);
 
 }  // namespace maxillo::bench

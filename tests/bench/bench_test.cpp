@@ -1,0 +1,126 @@
+// The benchmarks at toy sizes: the figures they report and the lines `maxillo bench` prints
+// from them. The times themselves are not tested (speed is what the benchmarks measure).
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "bench/claim_benchmark.h"
+#include "bench/cube_benchmark.h"
+#include "bench/formatted.h"
+#include "bench/import_benchmark.h"
+#include "bench/index_benchmark.h"
+#include "bench/occlusion_benchmark.h"
+#include "bench/register_benchmark.h"
+#include "bench/timing.h"
+#include "support/temporary_folder.h"
+
+namespace maxillo::bench {
+namespace {
+
+using testing::TemporaryFolder;
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+TEST(BenchTiming, TheMedianIsOneRunsOwnFigure) {
+  EXPECT_EQ(median({3, 1, 2}), 2);
+  EXPECT_EQ(median({4, 1, 3, 2}), 3);  // the upper of the two middle ones
+  EXPECT_EQ(median({5}), 5);
+}
+
+TEST(BenchFormatted, FormatsAsPrintfDoesWhateverTheLength) {
+  EXPECT_EQ(formatted("%-6s|%5.2f|%lld", "ab", 3.14159, 42LL), "ab    | 3.14|42");
+  EXPECT_EQ(formatted("%s", std::string(5000, 'x').c_str()).size(), 5000u);
+  EXPECT_EQ(formatted("%s", ""), "");
+}
+
+TEST(ClaimBenchmark, EveryItemIsClaimedOnceAndTheLineSaysHowFast) {
+  TemporaryFolder folder;
+  ClaimBenchOptions options;
+  options.items = 30, options.workers = 2, options.runs = 1, options.workdir = folder.path();
+  const Json figures = run_claim_benchmark(options);
+  EXPECT_EQ(figures["items"], 30);
+  EXPECT_EQ(figures["index"], "SQLite");
+  EXPECT_GT(figures["claims_per_s"].get<double>(), 0);
+  EXPECT_EQ(figures["runs_claims_per_s"].size(), 1u);
+  const std::string text = claim_benchmark_text(figures);
+  EXPECT_EQ(text.rfind("30 items, 2 workers at once, index on SQLite: ", 0), 0u) << text;
+  EXPECT_NE(text.find(" claims/s (claim + finish; median of 1)\n"), std::string::npos) << text;
+}
+
+TEST(ImportBenchmark, FirstImportAndReimportInFourLines) {
+  TemporaryFolder folder;
+  ImportBenchOptions options;
+  options.count = 12, options.runs = 1, options.workdir = folder / "work";
+  const Json figures = run_import_benchmark(options);
+  EXPECT_EQ(figures["index"], "sqlite");
+  EXPECT_GT(figures["first_import_per_s"].get<double>(), 0);
+  EXPECT_GT(figures["reimport_per_s"].get<double>(), 0);
+  EXPECT_FALSE(std::filesystem::exists(folder / "work"));  // the scratch folder is removed
+  const auto lines = lines_of(import_benchmark_text(figures));
+  ASSERT_EQ(lines.size(), 4u);
+  EXPECT_EQ(lines[0].rfind("generated 12 files of 256x256 in ", 0), 0u) << lines[0];
+  EXPECT_NE(lines[0].find("; 1 importer(s) at once, index on SQLite"), std::string::npos) << lines[0];
+  EXPECT_EQ(lines[3].rfind("ratio re-import / first: ", 0), 0u) << lines[3];
+}
+
+TEST(IndexBenchmark, TimesEveryQueryAndGivesTheNightlyScanItsFolder) {
+  TemporaryFolder folder;
+  IndexBenchOptions options;
+  options.patients = 4, options.instances = 16, options.runs = 2, options.workdir = folder.path();
+  std::vector<std::filesystem::path> scanned;
+  const Json figures = run_index_benchmark(options, [&](Archive& archive, const std::filesystem::path& out) {
+    scanned.push_back(out);
+    return archive.cases().size();
+  });
+  EXPECT_EQ(scanned, std::vector<std::filesystem::path>(2, folder / "nightly"));
+  EXPECT_EQ(figures["eligible_cases"], 4);
+  EXPECT_EQ(figures["median_seconds"].size(), 5u);
+  const auto lines = lines_of(index_benchmark_text(figures, options.runs));
+  ASSERT_EQ(lines.size(), 7u);
+  EXPECT_EQ(lines[0].rfind("4 patients, 16 instances on SQLite (filled in ", 0), 0u) << lines[0];
+  const char* order[] = {"list patients", "list series", "show case", "resolve Patient ID", "nightly scan"};
+  for (int q = 0; q < 5; ++q) {
+    EXPECT_EQ(lines[size_t(q + 1)].rfind(std::string("  ") + order[q], 0), 0u) << lines[size_t(q + 1)];
+    EXPECT_NE(lines[size_t(q + 1)].find(" s (median of 2)"), std::string::npos) << lines[size_t(q + 1)];
+  }
+  EXPECT_EQ(lines[6], "  nightly scan found 4 eligible cases");
+}
+
+TEST(CubeBenchmark, MassTensorFiguresAndItsThresholdTable) {
+  CubeBenchOptions options;
+  options.tets = 400, options.model = CubeModel::kMtm, options.runs = 1;
+  const Json figures = run_cube_benchmark(options);
+  EXPECT_EQ(figures["model"], "mtm");
+  EXPECT_EQ(figures["model_result"]["threshold_table"].size(), 5u);
+  const std::string text = cube_benchmark_text(figures);
+  EXPECT_NE(text.find("model: \"mtm\"\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("\nprecompute_seconds: "), std::string::npos) << text;
+  EXPECT_EQ(text.find("threshold_table"), std::string::npos) << text;  // a table, not a key
+  const auto lines = lines_of(text);
+  ASSERT_GE(lines.size(), 6u);
+  EXPECT_EQ(lines[lines.size() - 6].rfind("G_thresh", 0), 0u) << text;
+  EXPECT_EQ(lines.back().rfind("1e-04 ", 0), 0u) << text;
+}
+
+TEST(RealDataBenchmarks, SayWhyTheySkipWithoutTheirData) {
+  OcclusionBenchOptions occlusion;
+  occlusion.data = "/nonexistent";
+  EXPECT_EQ(occlusion_benchmark_text(run_occlusion_benchmark(occlusion)),
+            "skipped: the real teeth are not at /nonexistent (set MAXILLO_SHARED_DATA or --data to the folder "
+            "holding openfulljaw-p26-teeth)\n");
+  RegisterBenchOptions registration;
+  registration.data = "/nonexistent";
+  EXPECT_EQ(register_benchmark_text(run_register_benchmark(registration)),
+            "skipped: the cadaver head CT is not at /nonexistent/slices (set MAXILLO_SHARED_DATA or --data to the "
+            "folder holding cthead-stanford)\n");
+}
+
+}  // namespace
+}  // namespace maxillo::bench
