@@ -23,6 +23,7 @@ std::string kind_name(ArtefactKind kind) {
     case ArtefactKind::kOcclusion: return "occlusion";
     case ArtefactKind::kOcclusionogram: return "occlusionogram";
     case ArtefactKind::kSplint: return "splint";
+    case ArtefactKind::kSplintRender: return "splint-render";
     case ArtefactKind::kSimulation: return "simulation";
     case ArtefactKind::kSimulationImage: return "simulation-image";
     case ArtefactKind::kValidation: return "validation";

@@ -23,6 +23,7 @@ enum class ArtefactKind {
   kOcclusion,            // the final occlusion's numbers (JSON)
   kOcclusionogram,       // its occlusionogram (PNG)
   kSplint,               // the surgical splint (STL)
+  kSplintRender,         // a render of the splint on the lower arch (PNG)
   kSimulation,           // a face prediction's summary (JSON, simulation_summary.h)
   kSimulationImage,      // its pictures (PNG)
   kValidation,           // a validation's numbers (JSON)
@@ -33,27 +34,18 @@ enum class ArtefactKind {
 };
 
 // Every kind, in the order above (for tables and tests).
-inline constexpr ArtefactKind kAllArtefactKinds[] = {ArtefactKind::kLandmarks,
-                                                     ArtefactKind::kPlan,
-                                                     ArtefactKind::kPlanResult,
-                                                     ArtefactKind::kSurfaceSkin,
-                                                     ArtefactKind::kSurfaceBone,
-                                                     ArtefactKind::kRenderSkinFrontal,
-                                                     ArtefactKind::kRenderSkinLateral,
-                                                     ArtefactKind::kRenderSkinOblique,
-                                                     ArtefactKind::kRenderBoneFrontal,
-                                                     ArtefactKind::kRenderBoneLateral,
-                                                     ArtefactKind::kRenderBoneOblique,
-                                                     ArtefactKind::kOcclusion,
-                                                     ArtefactKind::kOcclusionogram,
-                                                     ArtefactKind::kSplint,
-                                                     ArtefactKind::kSimulation,
-                                                     ArtefactKind::kSimulationImage,
-                                                     ArtefactKind::kValidation,
-                                                     ArtefactKind::kValidationDistances,
-                                                     ArtefactKind::kValidationImage,
-                                                     ArtefactKind::kChartWits,
-                                                     ArtefactKind::kReport};
+inline constexpr ArtefactKind kAllArtefactKinds[] = {
+    ArtefactKind::kLandmarks,           ArtefactKind::kPlan,
+    ArtefactKind::kPlanResult,          ArtefactKind::kSurfaceSkin,
+    ArtefactKind::kSurfaceBone,         ArtefactKind::kRenderSkinFrontal,
+    ArtefactKind::kRenderSkinLateral,   ArtefactKind::kRenderSkinOblique,
+    ArtefactKind::kRenderBoneFrontal,   ArtefactKind::kRenderBoneLateral,
+    ArtefactKind::kRenderBoneOblique,   ArtefactKind::kOcclusion,
+    ArtefactKind::kOcclusionogram,      ArtefactKind::kSplint,
+    ArtefactKind::kSplintRender,        ArtefactKind::kSimulation,
+    ArtefactKind::kSimulationImage,     ArtefactKind::kValidation,
+    ArtefactKind::kValidationDistances, ArtefactKind::kValidationImage,
+    ArtefactKind::kChartWits,           ArtefactKind::kReport};
 
 // The name the index stores: "landmarks", "plan-result", "render-skin-frontal", ...
 std::string kind_name(ArtefactKind kind);

@@ -45,6 +45,7 @@ records::OcclusionRecord occlusion_record(const OcclusionRun& run, const Occlusi
   record.frame = "lower file coordinates (mm); upper_transform maps upper file coordinates into it";
   record.upper_transform = run.aligned.pose;
   record.start_transform = run.start;
+  record.upper_centroid = run.upper.vertices.colwise().mean().transpose();
   record.converged = run.aligned.status == AlignmentStatus::Converged;
   record.iterations = run.aligned.iterations;
   record.residual_spring_mm = run.aligned.residual_spring_mm;

@@ -17,7 +17,9 @@
 #include "core/atomic_file.h"
 #include "core/sha256.h"
 #include "casework/occlusion_run.h"
-#include "sections/occlusion_section.h"
+#include "casework/archived_occlusion.h"
+#include "ceph/landmark_frame.h"
+#include "records/case_landmarks.h"
 
 namespace maxillo::cli {
 namespace {
@@ -67,7 +69,9 @@ int run_occlude(OccludeOptions options, const GlobalOptions& global) {
     auto archive = Archive::open(resolve_archive_dir(global));
     const std::vector<std::string> inputs = {sha256_hex(read_file(options.upper)), sha256_hex(read_file(options.lower)),
                                              sha256_hex(read_file(options.pairs))};
-    sections::store_occlusion_artefacts(archive, archive.resolve_case(options.case_text), run, inputs);
+    const int64_t case_id = archive.resolve_case(options.case_text);
+    casework::store_occlusion_run(archive, case_id, run, inputs,
+                                  anatomical_frame(records::latest_landmarks(archive, case_id)));
   }
   if (global.json)
     std::cout << records::to_json(run.record).dump(2) << "\n";

@@ -15,6 +15,8 @@
 #include "records/derivation.h"
 #include "records/plan_archive.h"
 #include "sections/planning_section.h"
+#include "ceph/landmark_frame.h"
+#include "sections/occlusion_section.h"
 #include "sections/soft_tissue_section.h"
 #include "sections/validation_section.h"
 #include "report/report_template.h"
@@ -163,7 +165,8 @@ ConsultationResult write_consultation_report(Archive& archive, int64_t case_id, 
   model.sections.push_back(sections::case_cephalometry_section(archive, case_id, sex_for_norms(contents.patient.sex)));
   if (auto plan_result = records::latest_plan_result(archive, case_id))
     model.sections.push_back(sections::planning_section(*plan_result));
-  if (options.occlusion) model.sections.push_back(*options.occlusion);
+  if (auto occlusion = records::latest_occlusion(archive, case_id))
+    model.sections.push_back(sections::occlusion_section(*occlusion, anatomical_frame(landmarks)));
   if (auto simulation = records::latest_simulation(archive, case_id))
     model.sections.push_back(sections::soft_tissue_section(*simulation));
   if (auto validation = records::latest_validation(archive, case_id))

@@ -1,7 +1,8 @@
 #pragma once
-// The consultation report of one case: patient and imaging, the 3D views of skin and bone, and
-// the case's contents, laid out from templates/consultation.json and stored back in the
-// archive as a "report" artefact.
+// The consultation report of one case: patient and imaging, the 3D views of skin and bone, the
+// sections of what the archive keeps of the case (cephalometry and follow-up, the newest plan
+// result, occlusion, face prediction and validation) and the case's contents, laid out from
+// templates/consultation.json and stored back in the archive as a "report" artefact.
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -18,7 +19,6 @@ struct ConsultationOptions {
   std::string template_resource = "templates/consultation.json";
   casework::SurfaceRecipe surfaces;
   casework::ViewRecipe views;
-  std::optional<report::Section> occlusion;  // the "occlusion" section (occlusion_section.h), when one was made
 };
 
 struct ConsultationResult {

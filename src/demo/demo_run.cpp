@@ -82,9 +82,7 @@ Json run_demo(const DemoOptions& options) {
                                      followup::sample_patient_follow_up(followup::sample_cohort_patients()[0], 2001),
                                      {}, "sample cohort P01 (phantoms)", follow_up);
   records::attach_landmarks(archive, case_id, sample.landmarks, "phantom (analytic)");
-  consultation::ConsultationOptions report_options;
-  report_options.occlusion =
-      phantom_occlusion_section(archive, case_id, options.skeletal_class, sample.landmarks, options.out / "occlusion");
+  archive_phantom_occlusion(archive, case_id, options.skeletal_class, sample.landmarks, options.out / "occlusion");
   clock.mark("occlusion");
   // The issue #4 must-show plan: two trans-sinusal distractors, 10 mm advancement, 6 mm widening.
   records::store_plan(archive, case_id,
@@ -114,7 +112,7 @@ Json run_demo(const DemoOptions& options) {
   nightly_options.out = options.out / "nightly";
   const auto nightly_run = nightly::run_nightly(archive, nightly_options);
   clock.mark("nightly summary");
-  auto report = consultation::write_consultation_report(archive, case_id, options.out / "report.pdf", report_options);
+  auto report = consultation::write_consultation_report(archive, case_id, options.out / "report.pdf");
   clock.mark("volume, surfaces, views, report");
   // The report back to the PACS (a second server of ours standing in for it), as Encapsulated
   // PDF in the patient's study, as `maxillo send --report` does.

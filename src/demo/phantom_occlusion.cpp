@@ -7,7 +7,7 @@
 #include "mesh/surface_extraction.h"
 #include "occlusion/arch_contacts.h"
 #include "occlusion/occlusion_benchmark.h"
-#include "sections/occlusion_section.h"
+#include "casework/archived_occlusion.h"
 #include "render/anatomical_views.h"
 
 namespace maxillo::demo {
@@ -86,19 +86,12 @@ casework::OcclusionRun phantom_occlusion(const PhantomArches& arches, const std:
   return casework::run_occlusion(arches.upper, arches.lower, pairs, start, folder, options);
 }
 
-report::Section phantom_occlusion_section(Archive& archive, int64_t case_id, SkeletalClass skeletal_class,
-                                          const LandmarkSet& landmarks, const std::filesystem::path& folder) {
+void archive_phantom_occlusion(Archive& archive, int64_t case_id, SkeletalClass skeletal_class,
+                               const LandmarkSet& landmarks, const std::filesystem::path& folder) {
   PhantomSpec spec = phantom_spec_for_class(skeletal_class);
   spec.noise_sigma_hu = 0;  // only the labels are used
   const casework::OcclusionRun run = phantom_occlusion(phantom_arches(make_phantom(spec)), folder);
-  sections::store_occlusion_artefacts(archive, case_id, run, {});
-  const AnatomicalFrame frame = anatomical_frame(landmarks);
-  std::filesystem::path splint_png;
-  if (run.splint) {
-    splint_png = folder / "splint.png";
-    sections::render_splint(run, frame, splint_png);
-  }
-  return sections::occlusion_section(run, frame, splint_png);
+  casework::store_occlusion_run(archive, case_id, run, {}, anatomical_frame(landmarks));
 }
 
 }  // namespace maxillo::demo

@@ -10,7 +10,6 @@
 #include "archive/archive.h"
 #include "ceph/landmark.h"
 #include "casework/occlusion_run.h"
-#include "report/report_model.h"
 #include "sample/phantom.h"
 
 namespace maxillo::demo {
@@ -30,9 +29,9 @@ Eigen::Isometry3d phantom_start_pose(const TriangleMesh& upper);
 casework::OcclusionRun phantom_occlusion(const PhantomArches& arches, const std::filesystem::path& folder);
 
 // Everything the demo needs: the phantom of `skeletal_class` (1 mm), its occlusion in `folder`,
-// a render of the splint, the outputs stored as artefacts of the case, and the report section
-// (anatomical frame from `landmarks`).
-report::Section phantom_occlusion_section(Archive& archive, int64_t case_id, SkeletalClass skeletal_class,
-                                          const LandmarkSet& landmarks, const std::filesystem::path& folder);
+// stored with the case with a render of the splint (anatomical frame from `landmarks`), where
+// the consultation report finds it.
+void archive_phantom_occlusion(Archive& archive, int64_t case_id, SkeletalClass skeletal_class,
+                               const LandmarkSet& landmarks, const std::filesystem::path& folder);
 
 }  // namespace maxillo::demo

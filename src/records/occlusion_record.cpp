@@ -121,24 +121,27 @@ void read_splint_field(JsonReader& r, Record& record) {
 Json to_json(const OcclusionRecord& record) {
   Json residuals = Json::array();
   for (double r : record.residual_spring_mm) residuals.push_back(r);
-  return {{"format_version", record.format_version},
-          {"upper_file", record.upper_file},
-          {"lower_file", record.lower_file},
-          {"frame", record.frame},
-          {"upper_transform", occlusion::transform_to_json(record.upper_transform)},
-          {"start_transform", occlusion::transform_to_json(record.start_transform)},
-          {"status", record.converged ? "converged" : "iteration_limit"},
-          {"iterations", record.iterations},
-          {"residual_spring_mm", residuals},
-          {"penetration_mm", record.penetration_mm},
-          {"allowed_penetration_mm", record.allowed_penetration_mm},
-          {"intersecting_triangle_pairs", record.intersecting_triangle_pairs},
-          {"contact_threshold_mm", record.contact_threshold_mm},
-          {"upper", arch_json(record.upper)},
-          {"lower", arch_json(record.lower)},
-          {"repairs", {{"upper", repair_json(record.upper_repair)}, {"lower", repair_json(record.lower_repair)}}},
-          {"splint", splint_json(record)},
-          {"files", record.files}};
+  Json json{{"format_version", record.format_version},
+            {"upper_file", record.upper_file},
+            {"lower_file", record.lower_file},
+            {"frame", record.frame},
+            {"upper_transform", occlusion::transform_to_json(record.upper_transform)},
+            {"start_transform", occlusion::transform_to_json(record.start_transform)},
+            {"status", record.converged ? "converged" : "iteration_limit"},
+            {"iterations", record.iterations},
+            {"residual_spring_mm", residuals},
+            {"penetration_mm", record.penetration_mm},
+            {"allowed_penetration_mm", record.allowed_penetration_mm},
+            {"intersecting_triangle_pairs", record.intersecting_triangle_pairs},
+            {"contact_threshold_mm", record.contact_threshold_mm},
+            {"upper", arch_json(record.upper)},
+            {"lower", arch_json(record.lower)},
+            {"repairs", {{"upper", repair_json(record.upper_repair)}, {"lower", repair_json(record.lower_repair)}}},
+            {"splint", splint_json(record)},
+            {"files", record.files}};
+  if (record.upper_centroid)
+    json["upper_centroid"] = {record.upper_centroid->x(), record.upper_centroid->y(), record.upper_centroid->z()};
+  return json;
 }
 
 OcclusionRecord read_occlusion_record(const Json& json, const std::string& source) {
@@ -150,6 +153,7 @@ OcclusionRecord read_occlusion_record(const Json& json, const std::string& sourc
   record.frame = r.required_text("frame");
   record.upper_transform = r.required_rigid_transform("upper_transform");
   record.start_transform = r.required_rigid_transform("start_transform");
+  if (record.format_version >= 2) record.upper_centroid = r.required_point("upper_centroid");
   const std::string status = r.required_text("status");
   if (status != "converged" && status != "iteration_limit")
     r.fail("status", "must be \"converged\" or \"iteration_limit\"");

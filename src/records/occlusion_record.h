@@ -18,7 +18,8 @@
 namespace maxillo::records {
 
 struct OcclusionRecord {
-  static constexpr int kFormatVersion = 1;
+  // 2: upper_centroid added (required from this version on), where the report reads the motion.
+  static constexpr int kFormatVersion = 2;
 
   struct Arch {  // the occlusionogram's contacts on one arch
     int contact_vertices = 0;
@@ -44,7 +45,8 @@ struct OcclusionRecord {
   std::string frame;                                                  // what the coordinates are, in words
   Eigen::Isometry3d upper_transform = Eigen::Isometry3d::Identity();  // upper file -> lower file coordinates
   Eigen::Isometry3d start_transform = Eigen::Isometry3d::Identity();
-  bool converged = false;  // the guided alignment's status ("converged" or "iteration_limit")
+  std::optional<Eigen::Vector3d> upper_centroid;  // of the upper arch, its file's coordinates; none in version 1
+  bool converged = false;                         // the guided alignment's status ("converged" or "iteration_limit")
   int iterations = 0;
   std::vector<double> residual_spring_mm;
   double penetration_mm = 0, allowed_penetration_mm = 0;

@@ -1,13 +1,10 @@
 #pragma once
 // The "occlusion" section of the consultation report (issue 6 item 7): the occlusionogram
 // image, contacts per tooth, the final occlusion's transform in the anatomical frame, and the
-// surgical splint's figures with a render of it. Built from an OcclusionRun (occlusion_run.h).
+// surgical splint's figures with a render of it. Built from the case's stored occlusion.
 #include <Eigen/Geometry>
-#include <cstdint>
-#include <filesystem>
 
-#include "archive/archive.h"
-#include "casework/occlusion_run.h"
+#include "records/occlusion_archive.h"
 #include "render/anatomical_views.h"
 #include "report/report_model.h"
 
@@ -27,18 +24,9 @@ struct AnatomicalMotion {
 AnatomicalMotion anatomical_motion(const Eigen::Isometry3d& motion, const AnatomicalFrame& frame,
                                    const Eigen::Vector3d& reference);
 
-// The section. `splint_png` (may be empty) is a render of the splint shown beside the
-// occlusionogram (render_splint below). The upper arch's motion (from the start pose to the
-// final one) is read at the upper arch's centroid at the start.
-report::Section occlusion_section(const casework::OcclusionRun& run, const AnatomicalFrame& frame,
-                                  const std::filesystem::path& splint_png = {});
-
-// The run's splint over its lower arch, seen obliquely from the front, into `png`.
-void render_splint(const casework::OcclusionRun& run, const AnatomicalFrame& frame, const std::filesystem::path& png);
-
-// Stores occlusion.json, occlusionogram.png and splint.stl (when made) of the run's folder as
-// artefacts of the case ("occlusion", "occlusionogram", "splint"), keyed by their inputs.
-void store_occlusion_artefacts(Archive& archive, int64_t case_id, const casework::OcclusionRun& run,
-                               const std::vector<std::string>& input_hashes);
+// The section of a stored occlusion (records/occlusion_archive.h): the occlusionogram and the
+// splint's render, the alignment's facts, contacts per tooth, the upper arch's motion (from the
+// scanned position and from the start pose, read at its centroid) and the splint's figures.
+report::Section occlusion_section(const records::StoredOcclusion& occlusion, const AnatomicalFrame& frame);
 
 }  // namespace maxillo::sections

@@ -149,6 +149,9 @@ TEST(OcclusionRun, WritesItsRecordAsOcclusionJsonThatReadsBackTheSame) {
   EXPECT_TRUE(read.start_transform.isApprox(start));
   EXPECT_TRUE(read.upper_transform.isApprox(run.aligned.pose));
   EXPECT_EQ(read.residual_spring_mm.size(), pairs.size());
+  ASSERT_TRUE(read.upper_centroid);
+  EXPECT_LT((*read.upper_centroid - Eigen::Vector3d(12, 0, arches.upper_z)).norm(),
+            0.05);                         // the middle sphere's centre
   EXPECT_EQ(read.upper.teeth.size(), 3u);  // the three spheres of each row are its teeth
   EXPECT_GT(read.upper.contact_vertices, 0);
   ASSERT_TRUE(read.splint);

@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "core/json.h"
+#include "support/pdf_tools.h"
 #include "support/run_maxillo.h"
 #include "support/temporary_folder.h"
 
@@ -45,6 +46,32 @@ TEST(OccludeCommand, SpringsBringTheBlockToRestOnTheSlab) {
   EXPECT_EQ(result["upper"]["contact_vertices"], 4);  // the block's bottom corners
   for (const char* file : {"occlusionogram.png", "upper_distances.csv", "lower_distances.csv"})
     EXPECT_TRUE(std::filesystem::exists(folder / "out" / file)) << file;
+}
+
+// With --case the occlusion is kept with an archived case, and the case's report shows it.
+TEST(OccludeCommand, AnOcclusionKeptWithACaseIsInItsReport) {
+  maxillo::TemporaryFolder folder;
+  const auto dir = folder.path();
+  ASSERT_EQ(
+      maxillo::testing::run_maxillo({"sample", "--out", (dir / "sample").string(), "--spacing", "2"}, dir).exit_code,
+      0);
+  const std::string archive = "--archive=" + (dir / "archive").string();
+  ASSERT_EQ(maxillo::testing::run_maxillo({archive, "import", (dir / "sample" / "ct").string()}, dir).exit_code, 0);
+  write_box_obj(dir / "lower.obj", {-5, -5, -2}, {5, 5, 0});
+  write_box_obj(dir / "upper.obj", {-2, -2, 1}, {2, 2, 3});
+  std::ofstream(dir / "pairs.csv") << "ux,uy,uz,lx,ly,lz\n-2,-2,1,-1,-1.5,-0.5\n2,-2,1,3,-1.5,-0.5\n0,2,1,1,2.5,-0.5\n";
+  const auto occlude = maxillo::testing::run_maxillo(
+      {archive, "occlude", (dir / "upper.obj").string(), (dir / "lower.obj").string(), "--pairs",
+       (dir / "pairs.csv").string(), "--no-splint", "--case", "MAXILLO-PHANTOM-001", "--out", (dir / "out").string()},
+      dir);
+  ASSERT_EQ(occlude.exit_code, 0) << occlude.err;
+  const auto report = maxillo::testing::run_maxillo(
+      {archive, "report", "MAXILLO-PHANTOM-001", "--out", (dir / "report.pdf").string()}, dir);
+  ASSERT_EQ(report.exit_code, 0) << report.err;
+  const std::string text = maxillo::testing::pdf_text(dir / "report.pdf");
+  for (const char* expected : {"Occlusionogram: upper arch (left), lower arch (right)", "Contacts per tooth",
+                               "Final occlusion in the anatomical frame", "not made"})
+    EXPECT_NE(text.find(expected), std::string::npos) << expected;
 }
 
 void write_pose(const std::filesystem::path& path, const Eigen::Vector3d& translation) {

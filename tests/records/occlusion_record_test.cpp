@@ -20,6 +20,7 @@ OcclusionRecord example() {
   r.frame = "lower file coordinates (mm)";
   r.upper_transform = Eigen::AngleAxisd(0.125, Eigen::Vector3d::UnitX()) * Eigen::Translation3d(0.5, -1.0, 2.25);
   r.start_transform.pretranslate(Eigen::Vector3d(0, 0, 1.5));
+  r.upper_centroid = Eigen::Vector3d(12.5, -3.25, 40.0);
   r.converged = true;
   r.iterations = 42;
   r.residual_spring_mm = {0.25, 0.5, 0.125, 0.75};
@@ -44,6 +45,8 @@ TEST(OcclusionRecord, RoundTripsThroughItsText) {
   EXPECT_TRUE(read.upper_transform.isApprox(written.upper_transform, 1e-15));
   EXPECT_EQ(read.upper.teeth.size(), 2u);
   EXPECT_DOUBLE_EQ(read.upper.teeth[1].min_distance_mm, -0.0625);
+  ASSERT_TRUE(read.upper_centroid);
+  EXPECT_EQ(*read.upper_centroid, Eigen::Vector3d(12.5, -3.25, 40.0));
   ASSERT_TRUE(read.splint);
   EXPECT_EQ(read.splint->triangles, 20480);
 
@@ -60,10 +63,15 @@ TEST(OcclusionRecord, RoundTripsThroughItsText) {
   EXPECT_FALSE(read_occlusion_record(to_json(no_splint), "test").splint);
 }
 
-TEST(OcclusionRecord, AResultFromBeforeFormatVersionsReadsAsVersion1) {
+// Results written before "format_version" existed, and version 1 ones, read without the
+// arch's centroid (version 2 added it).
+TEST(OcclusionRecord, OlderResultsReadAsVersion1WithoutTheCentroid) {
   Json old = to_json(example());
   old.erase("format_version");
-  EXPECT_EQ(read_occlusion_record(old, "test").format_version, 1);
+  old.erase("upper_centroid");
+  const OcclusionRecord read = read_occlusion_record(old, "test");
+  EXPECT_EQ(read.format_version, 1);
+  EXPECT_FALSE(read.upper_centroid);
 }
 
 TEST(OcclusionRecord, DamageIsAnErrorNamingTheKey) {
@@ -85,8 +93,9 @@ TEST(OcclusionRecord, DamageIsAnErrorNamingTheKey) {
   EXPECT_EQ(failure([](Json& j) { j["splint"].erase("watertight"); }), source + "splint.watertight: missing");
   EXPECT_EQ(failure([](Json& j) { j["splint"] = 3; }), source + "splint: must be an object or null");
   EXPECT_EQ(failure([](Json& j) { j["iterations"] = -1; }), source + "iterations: must lie in [0, 2147483647]");
-  EXPECT_EQ(failure([](Json& j) { j["format_version"] = 2; }),
-            source + "format_version: is 2, newer than this program reads (1): update maxillo");
+  EXPECT_EQ(failure([](Json& j) { j.erase("upper_centroid"); }), source + "upper_centroid: missing");
+  EXPECT_EQ(failure([](Json& j) { j["format_version"] = 3; }),
+            source + "format_version: is 3, newer than this program reads (2): update maxillo");
 }
 
 }  // namespace

@@ -6,13 +6,16 @@
 #include <gtest/gtest.h>
 
 #include <string>
-#include <variant>
 
 #include "core/error.h"
 #include "support/error_of.h"
+#include "support/report_blocks.h"
 
 namespace maxillo::sections {
 namespace {
+
+using testing::blocks_of;
+using testing::notes_of;
 
 records::StoredSimulation stored_prediction(int tetrahedra, int tet_budget) {
   records::StoredSimulation stored;
@@ -34,20 +37,6 @@ records::StoredSimulation stored_prediction(int tetrahedra, int tet_budget) {
       stored.pictures[name] = "/objects/" + name;
     }
   return stored;
-}
-
-template <class Block>
-std::vector<const Block*> blocks_of(const report::Section& section) {
-  std::vector<const Block*> found;
-  for (const auto& block : section.blocks)
-    if (const auto* b = std::get_if<Block>(&block)) found.push_back(b);
-  return found;
-}
-
-std::string notes_of(const report::Section& section) {
-  std::string text;
-  for (const auto* note : blocks_of<report::Note>(section)) text += note->text + "\n";
-  return text;
 }
 
 TEST(SoftTissueSection, AMeshOverItsBudgetIsReportedWithTheNumbers) {
