@@ -64,7 +64,7 @@ void fill_synthetic_index(const std::filesystem::path& address, const SyntheticI
     db::Transaction transaction(db);
     Inserts in(db);
     for (int64_t p = first; p < std::min(size.patients, first + 100); ++p) {
-      char patient_id[16];
+      char patient_id[24];  // "P" and up to 19 digits of an int64
       std::snprintf(patient_id, sizeof patient_id, "P%06lld", static_cast<long long>(p));
       in.patient.reset().bind(1, patient_id).bind(2, "Synthetic^Patient").bind(3, "19800101").bind(4, "F").bind(5, now);
       const int64_t patient = db::inserted_id(in.patient).value();

@@ -102,10 +102,10 @@ void write_outputs(SimulationResult& result, const std::filesystem::path& out) {
 // The prediction's summary and pictures into the archive, keyed by what it was made from: the
 // case's CT, the plan and landmarks, the face model and the model's settings.
 void store_outputs(Archive& archive, int64_t case_id, int64_t series, const SimulationResult& result,
-                   const SimulationRequest& request, const LabelVolume& tissues, const LandmarkSet& landmarks) {
+                   const SimulationRequest& request, const LandmarkSet& landmarks) {
   const std::string plan_key =
       records::plan_application_key(sha256_hex(planning::serialise_plan(request.plan)), landmarks);
-  const Json settings{{"face_model", face_model_key(tissues, landmarks, request.options)},
+  const Json settings{{"face_model", result.prediction.face_model_key},
                       {"model", result.summary.model},
                       {"poisson_ratio", request.options.poisson_ratio},
                       {"gradient_threshold_mm", request.options.gradient_threshold_mm},
@@ -224,7 +224,7 @@ SimulationResult simulate_case(Archive& archive, int64_t case_id, const Simulati
                                                         result.frame, request.out);
   result.summary = summarise(result, request, landmarks);
   write_outputs(result, request.out);
-  store_outputs(archive, case_id, series, result, request, tissues, landmarks);
+  store_outputs(archive, case_id, series, result, request, landmarks);
   return result;
 }
 

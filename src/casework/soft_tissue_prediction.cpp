@@ -150,6 +150,7 @@ SoftTissuePrediction predict_soft_tissue(const SoftTissueInput& input, const Sof
   SoftTissuePrediction prediction;
   prediction.mesh = model.mesh;
   prediction.meshing = model.meshing;
+  prediction.face_model_key = model.key;
   prediction.quality = model.quality;
   prediction.seconds.region = given ? 0 : model.region_seconds;
   prediction.seconds.meshing = given ? 0 : model.meshing_seconds;
@@ -180,6 +181,7 @@ SoftTissuePrediction resolve_soft_tissue(const SoftTissuePrediction& base, const
   prediction.quality = base.quality;
   prediction.bc = base.bc;
   prediction.meshing = base.meshing;
+  prediction.face_model_key = base.face_model_key;
   auto start = Clock::now();
   auto solved = solve(prediction.mesh, prediction.bc, options, prediction.seconds.assembly);
   prediction.node_displacement = std::move(solved.displacement);

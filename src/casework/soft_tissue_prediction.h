@@ -66,6 +66,7 @@ struct SoftTissuePrediction {
   Eigen::MatrixX3d skin_displacement;  // per skin vertex, mm
   int skin_vertices_bound = 0;
   MeshingOutcome meshing;
+  std::string face_model_key;  // FaceModel::key of the model it was solved on
   records::SoftTissueTimings seconds;
 };
 

@@ -45,12 +45,16 @@ net::StorageServerCounts push_over_dicom(const std::vector<std::filesystem::path
   // An archive on a PostgreSQL server has no folder of this machine's to receive into.
   std::optional<TemporaryFolder> spool;
   if (names_index_server(archive_dir.string())) spool.emplace("demo-spool");
-  net::StorageServerOptions server{.archive = archive_dir,
-                                   .spool = spool ? spool->path() : std::filesystem::path(),
-                                   .ae_title = receiver,
-                                   .allowed = {{sender, "127.0.0.1"}}};
+  net::StorageServerOptions server;
+  server.archive = archive_dir;
+  if (spool) server.spool = spool->path();
+  server.ae_title = receiver;
+  server.allowed = {{sender, "127.0.0.1"}};
+  net::StoreOptions store;
+  store.calling_ae = sender;
+  store.progress = ProgressDisplay::Never;
   const auto counts = net::with_loopback_server(server, [&](const net::DicomPeer& peer) {
-    const auto sent = net::send_files(peer, files, {.calling_ae = sender, .progress = ProgressDisplay::Never});
+    const auto sent = net::send_files(peer, files, store);
     if (!sent.failures.empty())
       throw Error(ErrorCode::kProcessing, sent.failures.front().file.string(), sent.failures.front().reason);
   });

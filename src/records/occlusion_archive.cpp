@@ -14,16 +14,6 @@ void store_file(Archive& archive, const OcclusionToStore& o, ArtefactKind kind, 
   archive.add_artefact(NewArtefact{o.case_id, kind_name(kind), sha, media_type, o.inputs_hash, "{}"});
 }
 
-// The newest artefact of `kind` stored under the result's key. (Archives written before the
-// result was stored last hold the pictures after it: the key, not the order, ties them.)
-const ArtefactRecord* stored_with(const std::vector<ArtefactRecord>& artefacts, const ArtefactRecord& result,
-                                  ArtefactKind kind) {
-  const ArtefactRecord* found = nullptr;
-  for (const auto& a : artefacts)
-    if (a.kind == kind_name(kind) && a.inputs_hash == result.inputs_hash && (!found || a.id > found->id)) found = &a;
-  return found;
-}
-
 }  // namespace
 
 void store_occlusion(Archive& archive, const OcclusionToStore& o) {
@@ -42,10 +32,12 @@ std::optional<StoredOcclusion> latest_occlusion(const Archive& archive, int64_t 
   StoredOcclusion stored;
   stored.source = artefact_source(*result);
   stored.record = read_occlusion_record(artefact_json(archive, *result), stored.source);
-  const ArtefactRecord* gram = stored_with(artefacts, *result, ArtefactKind::kOcclusionogram);
+  // The key, not the order, ties the files to the result: archives written before the result was
+  // stored last hold them after it.
+  const ArtefactRecord* gram = newest_with_key(artefacts, ArtefactKind::kOcclusionogram, result->inputs_hash);
   if (!gram) throw Error(ErrorCode::kArchiveCorrupt, stored.source, "its occlusionogram is not stored");
   stored.occlusionogram = archive.object_path(gram->object_sha256);
-  if (const ArtefactRecord* render = stored_with(artefacts, *result, ArtefactKind::kSplintRender))
+  if (const ArtefactRecord* render = newest_with_key(artefacts, ArtefactKind::kSplintRender, result->inputs_hash))
     stored.splint_render = archive.object_path(render->object_sha256);
   return stored;
 }

@@ -36,4 +36,16 @@ std::string picture_name(const ArtefactRecord& picture) {
   return r.required_text("name");
 }
 
+const ArtefactRecord* newest_with_key(const std::vector<ArtefactRecord>& artefacts, ArtefactKind kind,
+                                      const std::string& inputs_hash, const std::string& name) {
+  const std::string kind_text = kind_name(kind);
+  const ArtefactRecord* found = nullptr;
+  for (const auto& a : artefacts) {
+    if (a.kind != kind_text || a.inputs_hash != inputs_hash) continue;
+    if (!name.empty() && picture_name(a) != name) continue;
+    if (!found || a.id > found->id) found = &a;
+  }
+  return found;
+}
+
 }  // namespace maxillo::records

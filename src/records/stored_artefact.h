@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "archive/archive.h"
 #include "archive/artefact_kind.h"
@@ -22,5 +23,10 @@ Json artefact_json(const Archive& archive, const ArtefactRecord& artefact);
 void store_picture(Archive& archive, int64_t case_id, ArtefactKind kind, const std::string& inputs_hash,
                    const std::filesystem::path& png);
 std::string picture_name(const ArtefactRecord& picture);
+
+// The newest of `artefacts` (a case's) of `kind` stored under `inputs_hash` and, when `name` is
+// given, named so (a picture); null when there is none.
+const ArtefactRecord* newest_with_key(const std::vector<ArtefactRecord>& artefacts, ArtefactKind kind,
+                                      const std::string& inputs_hash, const std::string& name = "");
 
 }  // namespace maxillo::records

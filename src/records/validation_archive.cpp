@@ -10,7 +10,6 @@ namespace {
 
 const std::string kSummaryKind = kind_name(ArtefactKind::kValidation);
 const std::string kDistancesKind = kind_name(ArtefactKind::kValidationDistances);
-const std::string kImageKind = kind_name(ArtefactKind::kValidationImage);
 
 Json face_distances_json(const ValidationToStore& v) {
   Json closest = Json::array(), regions = Json::array();
@@ -22,18 +21,6 @@ Json face_distances_json(const ValidationToStore& v) {
   return Json{{"closest_mm", closest}, {"region", regions}};
 }
 
-// The newest artefact of `kind` with this key (and, for images, this name).
-std::optional<ArtefactRecord> newest(const std::vector<ArtefactRecord>& artefacts, const std::string& kind,
-                                     const std::string& key, const std::string& name = "") {
-  std::optional<ArtefactRecord> found;
-  for (const auto& a : artefacts) {
-    if (a.kind != kind || a.inputs_hash != key) continue;
-    if (!name.empty() && picture_name(a) != name) continue;
-    if (!found || a.id > found->id) found = a;
-  }
-  return found;
-}
-
 // `artefacts`: the case's, among them the summary's pictures and distances.
 std::optional<StoredValidation> load(const Archive& archive, const std::vector<ArtefactRecord>& artefacts,
                                      const ArtefactRecord& summary) {
@@ -42,12 +29,13 @@ std::optional<StoredValidation> load(const Archive& archive, const std::vector<A
   stored.document = artefact_json(archive, summary);
   stored.record = read_validation_record(stored.document, artefact_source(summary));
   for (const char* view : {"error-map-frontal", "error-map-lateral", "error-map-oblique"}) {
-    auto image = newest(artefacts, kImageKind, summary.inputs_hash, view);
+    const ArtefactRecord* image = newest_with_key(artefacts, ArtefactKind::kValidationImage, summary.inputs_hash, view);
     if (!image) return std::nullopt;
     stored.error_maps.push_back(archive.object_path(image->object_sha256));
   }
-  auto profile = newest(artefacts, kImageKind, summary.inputs_hash, "profile");
-  auto distances = newest(artefacts, kDistancesKind, summary.inputs_hash);
+  const ArtefactRecord* profile =
+      newest_with_key(artefacts, ArtefactKind::kValidationImage, summary.inputs_hash, "profile");
+  const ArtefactRecord* distances = newest_with_key(artefacts, ArtefactKind::kValidationDistances, summary.inputs_hash);
   if (!profile || !distances) return std::nullopt;
   stored.profile = archive.object_path(profile->object_sha256);
   const Json face = artefact_json(archive, *distances);
@@ -75,7 +63,7 @@ std::optional<StoredValidation> find_validation(const Archive& archive, int64_t 
 std::optional<StoredValidation> find_validation(const Archive& archive,
                                                 const std::vector<ArtefactRecord>& case_artefacts,
                                                 const std::string& inputs_hash) {
-  const auto summary = newest(case_artefacts, kSummaryKind, inputs_hash);
+  const ArtefactRecord* summary = newest_with_key(case_artefacts, ArtefactKind::kValidation, inputs_hash);
   if (!summary) return std::nullopt;
   return load(archive, case_artefacts, *summary);
 }

@@ -1,6 +1,8 @@
 #include "sections/occlusion_section.h"
 
-#include <cstdio>
+#include <cmath>
+#include <string>
+#include <vector>
 
 #include "report/number_text.h"
 

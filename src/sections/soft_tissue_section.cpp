@@ -1,9 +1,8 @@
 #include "sections/soft_tissue_section.h"
 
-#include <algorithm>
-#include <array>
-#include <cmath>
-#include <cstdio>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "core/error.h"
 #include "report/number_text.h"
