@@ -84,10 +84,20 @@ class Reader {
   const std::filesystem::path& path_;
 };
 
+// PS3.5 9.1: components of digits separated by single dots, none empty, none with a leading
+// zero. (A fuzzing finding: "1.2.840.10008.14.2..80" passed a digits-and-dots check, this walk
+// read the data set as explicit VR while DCMTK, not knowing the syntax, guessed another
+// encoding and allocated 3.2 GB for a length it read from the wrong bytes.)
 bool is_uid(const std::string& text) {
   if (text.empty() || text.size() > 64) return false;
-  for (char c : text)
-    if (!((c >= '0' && c <= '9') || c == '.')) return false;
+  size_t component_start = 0;
+  for (size_t i = 0; i <= text.size(); ++i) {
+    if (i < text.size() && text[i] >= '0' && text[i] <= '9') continue;
+    if (i < text.size() && text[i] != '.') return false;
+    const size_t length = i - component_start;
+    if (length == 0 || (length > 1 && text[component_start] == '0')) return false;
+    component_start = i + 1;
+  }
   return true;
 }
 

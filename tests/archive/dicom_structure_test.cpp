@@ -102,6 +102,20 @@ TEST(DicomStructure, ALengthPastTheEndOfTheFileIsTruncationNamingTheElement) {
   }
 }
 
+// A Transfer Syntax UID with an empty component is not a UID: DCMTK would guess the data set's
+// encoding, read lengths from the wrong bytes and allocate gigabytes (a fuzzing finding).
+TEST(DicomStructure, ATransferSyntaxThatIsNotAUidIsRefusedBeforeDcmtkGuesses) {
+  const auto file = std::filesystem::path(MAXILLO_SOURCE_DIR) /
+                    "tests/fuzz/regressions/dicom_slice/transfer-syntax-with-an-empty-component.dcm";
+  try {
+    check_dicom_structure(read_file(file), file);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ErrorCode::kNotDicom);
+    EXPECT_NE(e.reason().find("Transfer Syntax UID (0002,0010) is not a UID"), std::string::npos) << e.reason();
+  }
+}
+
 TEST(DicomStructure, HugeRowsAndColumnsAreCheckedAgainstThePixelDataBeforeAllocating) {
   TemporaryFolder folder;
   auto good = testing::write_series(folder / "in", 1).files[0];
