@@ -1,10 +1,10 @@
 #include "mesh/quadric_decimation.h"
 
-#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <algorithm>
-#include <iterator>
+#include <array>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 namespace maxillo {
@@ -28,12 +28,29 @@ struct Quadric {
 // On a flat patch (or along a straight crease) the planes do not fix a point: A is singular and
 // the best place is chosen among the edge's ends and middle instead, which keeps flat faces flat
 // and corners where they are.
-constexpr double kMinConditioning = 1e-6;  // smallest / largest eigenvalue of A
+constexpr double kMinConditioning = 1e-6;  // 1 / (Frobenius condition number of A)
 
 double triangle_quality(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, const Eigen::Vector3d& p2) {
   const double edges = (p1 - p0).squaredNorm() + (p2 - p1).squaredNorm() + (p0 - p2).squaredNorm();
   if (edges <= 0) return 0;
   return 2 * std::sqrt(3.0) * (p1 - p0).cross(p2 - p0).norm() / edges;  // area = |cross| / 2
+}
+
+// Where the quadric's error is least, A p = -b, when A is far enough from singular to fix a
+// point. The test is on the Frobenius condition number |A| |A^-1|, which for a 3 x 3 matrix lies
+// between the 2-norm one (largest over smallest eigenvalue) and three times it: unlike an
+// eigen-decomposition it needs no trigonometry, and it is computed a few million times per
+// head-sized surface. A^-1 is the adjugate over the determinant.
+std::optional<Eigen::Vector3d> well_conditioned_minimum(const Quadric& q) {
+  const Eigen::Matrix3d& a = q.a;
+  Eigen::Matrix3d adjugate;
+  adjugate.col(0) = a.col(1).cross(a.col(2));
+  adjugate.col(1) = a.col(2).cross(a.col(0));
+  adjugate.col(2) = a.col(0).cross(a.col(1));
+  adjugate.transposeInPlace();
+  const double determinant = a.col(0).dot(adjugate.row(0).transpose());
+  if (!(determinant > 0) || a.norm() * adjugate.norm() * kMinConditioning >= determinant) return std::nullopt;
+  return Eigen::Vector3d(-(adjugate * q.b) / determinant);
 }
 
 // A queued collapse, kept small (the queue holds about a million): its place is computed again
@@ -147,33 +164,27 @@ class Decimator {
     }
   }
 
-  // Vertices on an edge that does not have exactly two faces keep their place.
+  // Vertices on an edge that does not have exactly two faces keep their place. Each edge is
+  // counted from its first end's faces (a vertex has a handful), not by sorting every edge.
   void lock_border_vertices() {
-    std::vector<std::pair<int, int>> edges;
-    edges.reserve(size_t(faces_.rows()) * 3);
     for (Eigen::Index f = 0; f < faces_.rows(); ++f)
       for (int k = 0; k < 3; ++k) {
         const int a = faces_(f, k), b = faces_(f, (k + 1) % 3);
-        edges.emplace_back(std::min(a, b), std::max(a, b));
+        int faces_on_edge = 0;
+        for (int g : vertex_faces_[size_t(a)]) faces_on_edge += contains(g, b);
+        if (faces_on_edge != 2) locked_[size_t(a)] = locked_[size_t(b)] = 1;
       }
-    std::sort(edges.begin(), edges.end());
-    for (size_t i = 0; i < edges.size();) {
-      size_t j = i;
-      while (j < edges.size() && edges[j] == edges[i]) ++j;
-      if (j - i != 2) locked_[size_t(edges[i].first)] = locked_[size_t(edges[i].second)] = 1;
-      i = j;
-    }
   }
 
-  // The other vertices of the faces around v, sorted, each once.
-  std::vector<int> neighbours(int v) const {
-    std::vector<int> around;
+  // The other vertices of the faces around v, sorted, each once, into `around` (a buffer kept
+  // by the caller: this runs three times per collapse, and allocating was a tenth of the time).
+  void neighbours(int v, std::vector<int>& around) const {
+    around.clear();
     for (int f : vertex_faces_[size_t(v)])
       for (int k = 0; k < 3; ++k)
         if (faces_(f, k) != v) around.push_back(faces_(f, k));
     std::sort(around.begin(), around.end());
     around.erase(std::unique(around.begin(), around.end()), around.end());
-    return around;
   }
 
   Candidate candidate(int v0, int v1) const {
@@ -185,11 +196,8 @@ class Decimator {
     const Eigen::Vector3d p0 = position(v0), p1 = position(v1), middle = 0.5 * (p0 + p1);
     Eigen::Vector3d best = middle;
     bool solved = false;
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
-    eigen.computeDirect(q.a);
-    const Eigen::Vector3d lambda = eigen.eigenvalues();  // ascending
-    if (lambda(2) > 0 && lambda(0) > kMinConditioning * lambda(2)) {
-      best = eigen.eigenvectors() * (lambda.cwiseInverse().asDiagonal() * (eigen.eigenvectors().transpose() * -q.b));
+    if (const auto optimum = well_conditioned_minimum(q)) {
+      best = *optimum;
       // An optimum far along a nearly flat patch is not trusted.
       solved = best.allFinite() && (best - middle).norm() <= (p1 - p0).norm();
     }
@@ -203,14 +211,16 @@ class Decimator {
 
   void push_edges_of(int v) {
     if (locked_[size_t(v)]) return;
-    for (int n : neighbours(v))
+    neighbours(v, around_);
+    for (int n : around_)
       if (!locked_[size_t(n)]) queue_.push(candidate(std::min(v, n), std::max(v, n)));
   }
 
   void push_all_edges() {
     for (Eigen::Index v = 0; v < positions_.rows(); ++v) {
       if (locked_[size_t(v)] || vertex_faces_[size_t(v)].empty()) continue;
-      for (int n : neighbours(int(v)))
+      neighbours(int(v), around_);
+      for (int n : around_)
         if (n > v && !locked_[size_t(n)]) queue_.push(candidate(int(v), n));
     }
   }
@@ -223,25 +233,40 @@ class Decimator {
   bool contains(int f, int v) const { return faces_(f, 0) == v || faces_(f, 1) == v || faces_(f, 2) == v; }
 
   // The two faces on the edge, or false when the edge is not between exactly two faces.
-  bool edge_faces(int v0, int v1, std::vector<int>& shared) const {
-    shared.clear();
+  bool edge_faces(int v0, int v1, std::array<int, 2>& shared) const {
+    int found = 0;
     for (int f : vertex_faces_[size_t(v0)])
-      if (contains(f, v1)) shared.push_back(f);
-    return shared.size() == 2;
+      if (contains(f, v1)) {
+        if (found == 2) return false;
+        shared[size_t(found++)] = f;
+      }
+    return found == 2;
+  }
+
+  int opposite_vertex(int f, int v0, int v1) const {
+    for (int k = 0; k < 3; ++k)
+      if (faces_(f, k) != v0 && faces_(f, k) != v1) return faces_(f, k);
+    return -1;
   }
 
   // Link condition: the ends' common neighbours are exactly the two vertices opposite the edge.
-  bool keeps_topology(int v0, int v1, const std::vector<int>& shared) const {
-    std::vector<int> opposite;
-    for (int f : shared)
-      for (int k = 0; k < 3; ++k)
-        if (faces_(f, k) != v0 && faces_(f, k) != v1) opposite.push_back(faces_(f, k));
-    std::sort(opposite.begin(), opposite.end());
-    if (opposite.size() != 2 || opposite[0] == opposite[1]) return false;
-    const auto n0 = neighbours(v0), n1 = neighbours(v1);
-    std::vector<int> common;
-    std::set_intersection(n0.begin(), n0.end(), n1.begin(), n1.end(), std::back_inserter(common));
-    return common == opposite;
+  bool keeps_topology(int v0, int v1, const std::array<int, 2>& shared) {
+    const int a = opposite_vertex(shared[0], v0, v1), b = opposite_vertex(shared[1], v0, v1);
+    if (a < 0 || b < 0 || a == b) return false;
+    neighbours(v0, around_);
+    neighbours(v1, around_other_);
+    int common = 0;
+    for (auto i = around_.begin(), j = around_other_.begin(); i != around_.end() && j != around_other_.end();) {
+      if (*i < *j) {
+        ++i;
+      } else if (*j < *i) {
+        ++j;
+      } else {
+        if (*i != a && *i != b) return false;
+        ++common, ++i, ++j;
+      }
+    }
+    return common == 2;
   }
 
   // No face that stays turns too far or becomes a needle.
@@ -270,9 +295,10 @@ class Decimator {
   bool try_collapse(const Candidate& c) {
     const int v0 = c.v0, v1 = c.v1;
     if (faces_left_ - 2 < 4) return false;  // a tetrahedron is as small as a closed surface gets
-    std::vector<int> shared;
+    std::array<int, 2> shared;
+    if (!edge_faces(v0, v1, shared) || !keeps_topology(v0, v1, shared)) return false;
     const Eigen::Vector3d p = placement(v0, v1).position;
-    if (!edge_faces(v0, v1, shared) || !keeps_topology(v0, v1, shared) || !keeps_shape(v0, v1, p)) return false;
+    if (!keeps_shape(v0, v1, p)) return false;
     for (int f : shared) {
       face_alive_[size_t(f)] = 0;
       for (int k = 0; k < 3; ++k)
@@ -325,6 +351,7 @@ class Decimator {
   int64_t collapses_ = 0;
   double min_turn_cos_;
   CandidateBuckets queue_;
+  std::vector<int> around_, around_other_;  // neighbours' buffers
 };
 
 }  // namespace

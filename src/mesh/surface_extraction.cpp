@@ -12,6 +12,7 @@
 #include <cassert>
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -142,7 +143,10 @@ TriangleMesh smooth_and_decimate(const TriangleMesh& mesh, const SurfaceOptions&
   if (options.target_triangles <= 0 || smoothed.face_count() <= options.target_triangles) return smoothed;
   // Quadric edge collapse (quadric_decimation.h says why not vtkDecimatePro): it keeps the
   // topology; finish_surface still checks and repairs what it is handed.
+  const auto started = std::chrono::steady_clock::now();
   auto decimated = decimate_quadric(smoothed, {.target_triangles = options.target_triangles});
+  log::debug("decimation: ", smoothed.face_count(), " to ", decimated.mesh.face_count(), " triangles in ",
+             std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(), " s");
   if (!decimated.reached_target)
     log::debug("decimation stopped at ", decimated.mesh.face_count(), " triangles (target ", options.target_triangles,
                "): every further collapse would change the topology or fold a face");
