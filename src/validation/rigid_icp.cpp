@@ -3,13 +3,14 @@
 #include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <numeric>
+#include <optional>
 #include <random>
 #include <utility>
 #include <vector>
 
 #include "core/error.h"
+#include "core/parallel_slabs.h"
 #include "geometry/vertex_normals.h"
 #include "geometry/aabb_tree.h"
 
@@ -22,33 +23,54 @@ const double kMinNormalCosine = std::cos(60.0 * M_PI / 180.0);
 Eigen::Vector3d row(const VertexMatrix& v, int i) { return v.row(i).transpose(); }
 
 // The target's open border: edges used by one face, and their vertices. A closest point there is
-// where the target simply ends, not a counterpart of the moving point.
-struct Border {
-  std::map<std::pair<int, int>, int> edge_uses;
-  std::vector<char> vertex;
-
-  explicit Border(const TriangleMesh& mesh) : vertex(size_t(mesh.vertex_count()), 0) {
+// where the target simply ends, not a counterpart of the moving point. Kept per face (a bit per
+// edge) and per vertex, so a pair is checked without a lookup.
+class Border {
+ public:
+  explicit Border(const TriangleMesh& mesh)
+      : open_edges_(size_t(mesh.face_count()), 0), vertex_(size_t(mesh.vertex_count()), 0) {
+    // Every edge once per face using it, by its ends; equal neighbours after sorting are the same edge.
+    struct Use {
+      int low, high, face, edge;
+      auto operator<=>(const Use&) const = default;
+    };
+    std::vector<Use> uses;
+    uses.reserve(size_t(mesh.face_count()) * 3);
     for (Eigen::Index f = 0; f < mesh.face_count(); ++f)
-      for (int k = 0; k < 3; ++k) ++edge_uses[key(mesh.faces(f, k), mesh.faces(f, (k + 1) % 3))];
-    for (const auto& [edge, uses] : edge_uses)
-      if (uses == 1) vertex[size_t(edge.first)] = vertex[size_t(edge.second)] = 1;
+      for (int k = 0; k < 3; ++k) {
+        const int a = mesh.faces(f, k), b = mesh.faces(f, (k + 1) % 3);
+        uses.push_back({std::min(a, b), std::max(a, b), int(f), k});
+      }
+    std::sort(uses.begin(), uses.end());
+    for (size_t i = 0; i < uses.size();) {
+      size_t j = i;
+      while (j < uses.size() && uses[j].low == uses[i].low && uses[j].high == uses[i].high) ++j;
+      if (j - i == 1) {
+        open_edges_[size_t(uses[i].face)] |= char(1 << uses[i].edge);
+        vertex_[size_t(uses[i].low)] = vertex_[size_t(uses[i].high)] = 1;
+      }
+      i = j;
+    }
   }
-  static std::pair<int, int> key(int a, int b) { return {std::min(a, b), std::max(a, b)}; }
-  bool edge(int a, int b) const { return edge_uses.at(key(a, b)) == 1; }
 
   bool contains(const TriangleMesh& mesh, int face, TriangleFeature feature) const {
     const auto f = mesh.faces.row(face);
+    const char open = open_edges_[size_t(face)];
     switch (feature) {
       case TriangleFeature::Face: return false;
-      case TriangleFeature::EdgeAB: return edge(f(0), f(1));
-      case TriangleFeature::EdgeBC: return edge(f(1), f(2));
-      case TriangleFeature::EdgeCA: return edge(f(2), f(0));
-      case TriangleFeature::VertexA: return vertex[size_t(f(0))] != 0;
-      case TriangleFeature::VertexB: return vertex[size_t(f(1))] != 0;
-      case TriangleFeature::VertexC: return vertex[size_t(f(2))] != 0;
+      case TriangleFeature::EdgeAB: return open & 1;
+      case TriangleFeature::EdgeBC: return open & 2;
+      case TriangleFeature::EdgeCA: return open & 4;
+      case TriangleFeature::VertexA: return vertex_[size_t(f(0))] != 0;
+      case TriangleFeature::VertexB: return vertex_[size_t(f(1))] != 0;
+      case TriangleFeature::VertexC: return vertex_[size_t(f(2))] != 0;
     }
     return false;
   }
+
+ private:
+  std::vector<char> open_edges_;  // per face: bit k set when edge k (k to k+1) has no other face
+  std::vector<char> vertex_;      // on an open edge
 };
 
 // Up to `count` vertex indices, a deterministic random subset in increasing order.
@@ -88,21 +110,36 @@ class Matcher {
     }
   }
 
+  // The samples' pairs in the samples' order. The closest-point queries, most of ICP's time, run
+  // in slabs of samples, each into its own list; the lists are joined in order, so the pairs do
+  // not depend on the threads.
   std::vector<Pair> pairs(const Eigen::Isometry3d& transform) const {
-    std::vector<Pair> found;
-    found.reserve(samples_.size());
-    for (int i : samples_) {
-      const Eigen::Vector3d p = transform * row(moving_.vertices, i);
-      const auto nearest = tree_.nearest(p, options_.max_pair_distance_mm);
-      if (nearest.face < 0 || border_.contains(target_, nearest.face, nearest.feature)) continue;
-      const Eigen::Vector3d& n = face_normals_[size_t(nearest.face)];
-      if ((transform.linear() * moving_normals_.row(i).transpose()).dot(n) < kMinNormalCosine) continue;
-      found.push_back({p, nearest.point, n});
-    }
-    return found;
+    constexpr int kSlabs = 16;
+    std::vector<std::vector<Pair>> found(kSlabs);
+    const int samples = int(samples_.size());
+    for_each_slab(0, kSlabs,
+                  [&](int first, int last) {
+                    for (int slab = first; slab < last; ++slab)
+                      for (int s = samples * slab / kSlabs; s < samples * (slab + 1) / kSlabs; ++s)
+                        if (auto pair = pair_of(samples_[size_t(s)], transform)) found[size_t(slab)].push_back(*pair);
+                  },
+                  {.min_slab_size = 1});
+    std::vector<Pair> joined;
+    joined.reserve(samples_.size());
+    for (const auto& slab : found) joined.insert(joined.end(), slab.begin(), slab.end());
+    return joined;
   }
 
  private:
+  std::optional<Pair> pair_of(int i, const Eigen::Isometry3d& transform) const {
+    const Eigen::Vector3d p = transform * row(moving_.vertices, i);
+    const auto nearest = tree_.nearest(p, options_.max_pair_distance_mm);
+    if (nearest.face < 0 || border_.contains(target_, nearest.face, nearest.feature)) return std::nullopt;
+    const Eigen::Vector3d& n = face_normals_[size_t(nearest.face)];
+    if ((transform.linear() * moving_normals_.row(i).transpose()).dot(n) < kMinNormalCosine) return std::nullopt;
+    return Pair{p, nearest.point, n};
+  }
+
   const TriangleMesh& moving_;
   const TriangleMesh& target_;
   AabbTree tree_;
