@@ -119,21 +119,18 @@ render::RgbImage side_by_side(const render::RgbImage& left, const render::RgbIma
 
 }  // namespace
 
-OcclusionRun run_occlusion(TriangleMesh upper, TriangleMesh lower, const std::vector<SpringPair>& pairs,
-                           const Eigen::Isometry3d& start, const std::filesystem::path& folder,
-                           const OcclusionRunOptions& options) {
+OcclusionRun compute_occlusion(TriangleMesh upper, TriangleMesh lower, const std::vector<SpringPair>& pairs,
+                               const Eigen::Isometry3d& start, const OcclusionRunOptions& options) {
   OcclusionRun run;
-  run.folder = folder;
   run.upper_repair = repair_arch(upper);
   run.lower_repair = repair_arch(lower);
-  std::filesystem::create_directories(folder);
   run.upper = upper;
   run.start = start;
   run.lower = lower;
 
   MotionOptions motion;
   motion.penetration_tolerance_mm = options.tolerance_mm;
-  const DistanceField upper_field(upper), lower_field(lower);
+  const DistanceField upper_field(run.upper), lower_field(run.lower);
   MotionEngine engine(upper_field, lower_field, start, motion);
   run.aligned = align_guided(engine, pairs);
   run.allowed_penetration_mm = engine.allowed_penetration_mm();
@@ -143,27 +140,42 @@ OcclusionRun run_occlusion(TriangleMesh upper, TriangleMesh lower, const std::ve
   run.gram = compute_occlusionogram(upper_field, lower_field, run.aligned.pose, gram_options);
   run.intersecting_triangle_pairs = lower_field.tree().intersecting_faces(upper_field.tree(), run.aligned.pose).size();
 
-  write_distances(upper, run.aligned.pose, run.gram.upper, folder / "upper_distances.csv");
-  write_distances(lower, Eigen::Isometry3d::Identity(), run.gram.lower, folder / "lower_distances.csv");
-  const TriangleMesh upper_placed = placed(upper, run.aligned.pose);
-  render::write_png(
-      side_by_side(render_arch(upper_placed, run.gram.upper.distance_mm, options.contact_threshold_mm, -1),
-                   render_arch(lower, run.gram.lower.distance_mm, options.contact_threshold_mm, +1)),
-      folder / "occlusionogram.png");
-  run.files = {"occlusionogram.png", "upper_distances.csv", "lower_distances.csv"};
-
   if (options.splint) {
     try {
       run.splint = make_splint(upper_field, lower_field, run.aligned.pose, options.splint_options);
-      write_mesh(run.splint->mesh, folder / "splint.stl");
-      run.files.push_back("splint.stl");
     } catch (const Error& e) {
       run.splint_error = e.what();
     }
   }
+  return run;
+}
 
+void write_occlusion_outputs(OcclusionRun& run, const std::filesystem::path& folder,
+                             const OcclusionRunOptions& options) {
+  run.folder = folder;
+  std::filesystem::create_directories(folder);
+  write_distances(run.upper, run.aligned.pose, run.gram.upper, folder / "upper_distances.csv");
+  write_distances(run.lower, Eigen::Isometry3d::Identity(), run.gram.lower, folder / "lower_distances.csv");
+  const TriangleMesh upper_placed = placed(run.upper, run.aligned.pose);
+  render::write_png(
+      side_by_side(render_arch(upper_placed, run.gram.upper.distance_mm, options.contact_threshold_mm, -1),
+                   render_arch(run.lower, run.gram.lower.distance_mm, options.contact_threshold_mm, +1)),
+      folder / "occlusionogram.png");
+  run.files = {"occlusionogram.png", "upper_distances.csv", "lower_distances.csv"};
+  if (run.splint) {
+    write_mesh(run.splint->mesh, folder / "splint.stl");
+    run.files.push_back("splint.stl");
+  }
   run.record = occlusion_record(run, options);
   write_file_atomically(folder / "occlusion.json", to_json(run.record).dump(2) + "\n");
+}
+
+OcclusionRun run_occlusion(TriangleMesh upper, TriangleMesh lower, const std::vector<SpringPair>& pairs,
+                           const Eigen::Isometry3d& start, const std::filesystem::path& folder,
+                           const OcclusionRunOptions& options) {
+  std::filesystem::create_directories(folder);  // an unwritable folder fails before the work
+  OcclusionRun run = compute_occlusion(std::move(upper), std::move(lower), pairs, start, options);
+  write_occlusion_outputs(run, folder, options);
   return run;
 }
 

@@ -45,8 +45,19 @@ struct OcclusionRun {
   records::OcclusionRecord record;  // the content of occlusion.json
 };
 
-// Throws Error for unreadable output folders; a splint that cannot be made is reported in
-// splint_error (and occlusion.json) rather than failing the occlusion.
+// The occlusion computed: both arches repaired, the guided alignment, the occlusionogram and the
+// splint. Nothing is written or rendered, so it needs no OpenGL context and may run beside other
+// work. A splint that cannot be made is reported in splint_error rather than failing the run.
+OcclusionRun compute_occlusion(TriangleMesh upper, TriangleMesh lower, const std::vector<occlusion::SpringPair>& pairs,
+                               const Eigen::Isometry3d& start, const OcclusionRunOptions& options = {});
+
+// A computed run's files into `folder` (the occlusionogram rendered), occlusion.json last; sets
+// run.folder, run.files and run.record. Throws Error for an unwritable folder.
+void write_occlusion_outputs(OcclusionRun& run, const std::filesystem::path& folder,
+                             const OcclusionRunOptions& options = {});
+
+// Both of the above. Throws Error for unwritable output folders (before computing); a splint that
+// cannot be made is reported in splint_error (and occlusion.json) rather than failing the occlusion.
 OcclusionRun run_occlusion(TriangleMesh upper, TriangleMesh lower, const std::vector<occlusion::SpringPair>& pairs,
                            const Eigen::Isometry3d& start, const std::filesystem::path& folder,
                            const OcclusionRunOptions& options = {});

@@ -42,6 +42,17 @@ LabelVolume crop_to_labels(const LabelVolume& labels, uint8_t first, uint8_t sec
   return crop;
 }
 
+// The demo's occlusion settings: the phantom's arches by name, and the splint's clearance.
+casework::OcclusionRunOptions phantom_occlusion_options() {
+  casework::OcclusionRunOptions options;
+  options.upper_label = "phantom upper teeth";
+  options.lower_label = "phantom lower teeth";
+  // Surfaces of 1 mm voxels keep ridges sharper than the splint's 0.25 mm grid resolves; a
+  // wider clearance keeps the imprints off them.
+  options.splint_options.clearance_mm = 0.2;
+  return options;
+}
+
 }  // namespace
 
 PhantomArches phantom_arches(const Phantom& phantom) {
@@ -61,7 +72,7 @@ Eigen::Isometry3d phantom_start_pose(const TriangleMesh& upper) {
   return start;
 }
 
-casework::OcclusionRun phantom_occlusion(const PhantomArches& arches, const std::filesystem::path& folder) {
+casework::OcclusionRun compute_phantom_occlusion(const PhantomArches& arches) {
   const DistanceField upper(arches.upper), lower(arches.lower);
   auto pairs = occlusion::contact_spring_pairs(upper, lower, Eigen::Isometry3d::Identity(), 4, 1.0);
   // Smoothing leaves the phantom's label surfaces up to ~1 mm apart where the teeth touch: each
@@ -70,12 +81,6 @@ casework::OcclusionRun phantom_occlusion(const PhantomArches& arches, const std:
   for (occlusion::SpringPair& pair : pairs) pair.lower = pair.upper;
   if (pairs.size() < 4)
     throw Error(ErrorCode::kProcessing, "phantom", "the phantom's arches have fewer than 4 contacts");
-  casework::OcclusionRunOptions options;
-  options.upper_label = "phantom upper teeth";
-  options.lower_label = "phantom lower teeth";
-  // Surfaces of 1 mm voxels keep ridges sharper than the splint's 0.25 mm grid resolves; a
-  // wider clearance keeps the imprints off them.
-  options.splint_options.clearance_mm = 0.2;
   // As the benchmark does: the displaced arch is brought down into contact as deep as the
   // arches touch in the phantom (label surfaces of touching teeth overlap a little), so the
   // engine's "no deeper than the start" rule admits the phantom's own occlusion.
@@ -83,14 +88,24 @@ casework::OcclusionRun phantom_occlusion(const PhantomArches& arches, const std:
       occlusion::assess_contacts(upper, lower, Eigen::Isometry3d::Identity(), 2.0).max_penetration_mm;
   const Eigen::Isometry3d start =
       occlusion::place_in_contact(upper, lower, phantom_start_pose(arches.upper), natural_penetration);
-  return casework::run_occlusion(arches.upper, arches.lower, pairs, start, folder, options);
+  return casework::compute_occlusion(arches.upper, arches.lower, pairs, start, phantom_occlusion_options());
 }
 
-void archive_phantom_occlusion(Archive& archive, int64_t case_id, SkeletalClass skeletal_class,
-                               const LandmarkSet& landmarks, const std::filesystem::path& folder) {
+casework::OcclusionRun compute_phantom_occlusion(SkeletalClass skeletal_class) {
   PhantomSpec spec = phantom_spec_for_class(skeletal_class);
   spec.noise_sigma_hu = 0;  // only the labels are used
-  const casework::OcclusionRun run = phantom_occlusion(phantom_arches(make_phantom(spec)), folder);
+  return compute_phantom_occlusion(phantom_arches(make_phantom(spec)));
+}
+
+casework::OcclusionRun phantom_occlusion(const PhantomArches& arches, const std::filesystem::path& folder) {
+  casework::OcclusionRun run = compute_phantom_occlusion(arches);
+  casework::write_occlusion_outputs(run, folder, phantom_occlusion_options());
+  return run;
+}
+
+void archive_phantom_occlusion(Archive& archive, int64_t case_id, casework::OcclusionRun run,
+                               const LandmarkSet& landmarks, const std::filesystem::path& folder) {
+  casework::write_occlusion_outputs(run, folder, phantom_occlusion_options());
   casework::store_occlusion_run(archive, case_id, run, {}, anatomical_frame(landmarks));
 }
 

@@ -25,13 +25,20 @@ PhantomArches phantom_arches(const Phantom& phantom);
 // centroid and (0.8, -1.0, 1.5) mm. Deterministic.
 Eigen::Isometry3d phantom_start_pose(const TriangleMesh& upper);
 
-// Runs the occlusion of `arches` into `folder` from phantom_start_pose, lowered into contact.
+// The occlusion of `arches` from phantom_start_pose, lowered into contact: computed, nothing
+// written (casework::compute_occlusion).
+casework::OcclusionRun compute_phantom_occlusion(const PhantomArches& arches);
+
+// The same for the phantom of `skeletal_class` (1 mm). It renders nothing, so the demo runs it
+// beside the CT's reception.
+casework::OcclusionRun compute_phantom_occlusion(SkeletalClass skeletal_class);
+
+// Computes the occlusion of `arches` and writes it into `folder`.
 casework::OcclusionRun phantom_occlusion(const PhantomArches& arches, const std::filesystem::path& folder);
 
-// Everything the demo needs: the phantom of `skeletal_class` (1 mm), its occlusion in `folder`,
-// stored with the case with a render of the splint (anatomical frame from `landmarks`), where
-// the consultation report finds it.
-void archive_phantom_occlusion(Archive& archive, int64_t case_id, SkeletalClass skeletal_class,
+// A computed phantom occlusion written into `folder` and stored with the case with a render of
+// the splint (anatomical frame from `landmarks`), where the consultation report finds it.
+void archive_phantom_occlusion(Archive& archive, int64_t case_id, casework::OcclusionRun run,
                                const LandmarkSet& landmarks, const std::filesystem::path& folder);
 
 }  // namespace maxillo::demo
