@@ -13,7 +13,8 @@
 
 namespace maxillo::casework {
 
-CasePlanResult apply_case_plan(Archive& archive, int64_t case_id, const std::filesystem::path& out_dir) {
+CasePlanResult apply_case_plan(Archive& archive, int64_t case_id, const std::filesystem::path& out_dir,
+                               const CaseTissues* tissues) {
   const std::string subject = "case:" + std::to_string(case_id);
   CasePlanResult out;
   const auto plan = records::latest_plan(archive, case_id);
@@ -23,7 +24,7 @@ CasePlanResult apply_case_plan(Archive& archive, int64_t case_id, const std::fil
   if (landmarks.empty())
     throw Error(ErrorCode::kNotFound, subject, "the case has no landmarks: attach them with `maxillo ceph add`");
 
-  out.tissues = load_case_tissues(archive, case_id, landmarks);
+  out.tissues = tissues ? *tissues : load_case_tissues(archive, case_id, landmarks);
   out.result =
       planning::apply_plan(plan->plan, out.tissues.segmentation, landmarks, planning::segmentation_anatomy_labels());
 

@@ -22,6 +22,9 @@ struct CasePlanResult {
 
 // Error(kNotFound) when the case has no plan or no landmarks; what volume loading, segmentation
 // and apply_plan throw otherwise. An infeasible plan is not an error here: result.feasible says.
-CasePlanResult apply_case_plan(Archive& archive, int64_t case_id, const std::filesystem::path& out_dir);
+// `tissues`, when given, are the case's CT segmented for its newest landmarks (load_case_tissues),
+// made earlier; the CT is then not loaded and segmented again.
+CasePlanResult apply_case_plan(Archive& archive, int64_t case_id, const std::filesystem::path& out_dir,
+                               const CaseTissues* tissues = nullptr);
 
 }  // namespace maxillo::casework

@@ -5,6 +5,7 @@
 
 #include "archive/archive_location.h"
 #include "casework/case_simulation.h"
+#include "casework/case_surfaces.h"
 #include "casework/plan_case.h"
 #include "casework/planned_case.h"
 #include "casework/sample_case.h"
@@ -22,6 +23,8 @@
 #include "net/loopback_server.h"
 #include "net/store_client.h"
 #include "nightly/nightly.h"
+#include "records/archived_series.h"
+#include "records/derivation.h"
 #include "records/case_landmarks.h"
 #include "records/cohort_archive.h"
 #include "records/validation_archive.h"
@@ -64,6 +67,27 @@ net::StorageServerCounts push_over_dicom(const std::vector<std::filesystem::path
   return counts;
 }
 
+// The plan applied, and beside it on the other core the CT's skin and bone surfaces, which every
+// later stage reads: both start from one segmentation. The archive stays on this thread; the
+// surfaces are stored when both are done (unless they already were).
+casework::CasePlanResult plan_beside_surfaces(Archive& archive, int64_t case_id, const std::filesystem::path& out) {
+  const int64_t series = records::primary_series(archive.case_contents(case_id));
+  const Volume ct = records::load_archived_series(archive, series);
+  const casework::CaseTissues tissues = casework::segment_case_tissues(ct, records::latest_landmarks(archive, case_id));
+  const casework::SurfaceRecipe recipe;
+  std::optional<casework::CaseSurfaces> surfaces = casework::stored_case_surfaces(archive, case_id, series, recipe);
+  const bool extract = !surfaces;
+  casework::CasePlanResult plan;
+  run_concurrently({[&] { plan = casework::apply_case_plan(archive, case_id, out, &tissues); },
+                    [&] {
+                      if (extract)
+                        surfaces = casework::extract_case_surfaces(ct, recipe, nullptr,
+                                                                   tissues.ct_labels_for(recipe.segmentation));
+                    }});
+  if (extract) casework::store_case_surfaces(archive, case_id, series, *surfaces, recipe);
+  return plan;
+}
+
 }  // namespace
 
 Json run_demo(const DemoOptions& options) {
@@ -98,8 +122,8 @@ Json run_demo(const DemoOptions& options) {
   records::store_plan(archive, case_id,
                       planning::distraction_plan({.advancement_mm = 10, .widening_mm = 6},
                                                  "TS-MD distraction: 10 mm advancement, 6 mm widening"));
-  auto plan = casework::apply_case_plan(archive, case_id, options.out / "plan");
-  clock.mark("plan");
+  auto plan = plan_beside_surfaces(archive, case_id, options.out / "plan");
+  clock.mark("plan, the CT's skin and bone beside it");
   // The face for the planned move (issue #3): the plan's maxillary move, mass tensor model. The
   // face's tet model is built once here and serves the synthetic post-operative CT and the
   // validation too.
