@@ -45,6 +45,16 @@ void for_each_slab(int first, int last, const std::function<void(int, int)>& bod
   });
 }
 
+PartRange part_range(int64_t count, int part, int parts) { return {count * part / parts, count * (part + 1) / parts}; }
+
+void for_each_part(int parts, const std::function<void(int)>& body) {
+  for_each_slab(0, parts,
+                [&](int first, int last) {
+                  for (int part = first; part < last; ++part) body(part);
+                },
+                {.min_slab_size = 1});
+}
+
 void run_concurrently(const std::vector<std::function<void()>>& tasks) {
   run_indexed(int(tasks.size()), [&](int t) { tasks[size_t(t)](); });
 }

@@ -97,12 +97,6 @@ casework::OcclusionRun compute_phantom_occlusion(SkeletalClass skeletal_class) {
   return compute_phantom_occlusion(phantom_arches(make_phantom(spec)));
 }
 
-casework::OcclusionRun phantom_occlusion(const PhantomArches& arches, const std::filesystem::path& folder) {
-  casework::OcclusionRun run = compute_phantom_occlusion(arches);
-  casework::write_occlusion_outputs(run, folder, phantom_occlusion_options());
-  return run;
-}
-
 void archive_phantom_occlusion(Archive& archive, int64_t case_id, casework::OcclusionRun run,
                                const LandmarkSet& landmarks, const std::filesystem::path& folder) {
   casework::write_occlusion_outputs(run, folder, phantom_occlusion_options());

@@ -33,9 +33,6 @@ casework::OcclusionRun compute_phantom_occlusion(const PhantomArches& arches);
 // beside the CT's reception.
 casework::OcclusionRun compute_phantom_occlusion(SkeletalClass skeletal_class);
 
-// Computes the occlusion of `arches` and writes it into `folder`.
-casework::OcclusionRun phantom_occlusion(const PhantomArches& arches, const std::filesystem::path& folder);
-
 // A computed phantom occlusion written into `folder` and stored with the case with a render of
 // the splint (anatomical frame from `landmarks`), where the consultation report finds it.
 void archive_phantom_occlusion(Archive& archive, int64_t case_id, casework::OcclusionRun run,

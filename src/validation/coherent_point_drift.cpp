@@ -3,7 +3,6 @@
 #include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <limits>
 #include <map>
 #include <numeric>
@@ -140,25 +139,15 @@ struct Posterior {
   double negative_log_likelihood = 0;
 };
 
-// The fixed points (E-step) and the moving points (M-step) are summed in this many slabs, each
-// into its own partial sums, added in slab order: the answer does not depend on the number of
-// threads or on which finishes first.
-constexpr int kSlabs = 8;
+// The fixed points (E-step) and the moving points (M-step) are summed in this many fixed parts,
+// each into its own partial sums, added in part order (core/parallel_slabs.h): the answer does not
+// depend on the number of threads or on which finishes first.
+constexpr int kParts = 8;
 
-Eigen::Index slab_begin(Eigen::Index count, int slab) { return count * slab / kSlabs; }
-
-// Runs body(slab) for every slab, on the machine's cores.
-void for_each_of_the_slabs(const std::function<void(int)>& body) {
-  for_each_slab(0, kSlabs,
-                [&](int first, int last) {
-                  for (int slab = first; slab < last; ++slab) body(slab);
-                },
-                {.min_slab_size = 1});
-}
-
-// The posterior's sums over the fixed points [begin, end).
-Posterior expectation_over(const Points& x, Eigen::Index begin, Eigen::Index end, const Points& centres, double sigma2,
+// The posterior's sums over the fixed points of `range`.
+Posterior expectation_over(const Points& x, const PartRange& range, const Points& centres, double sigma2,
                            double outlier) {
+  const Eigen::Index begin = range.begin, end = range.end;
   const Eigen::Index m = centres.rows();
   Posterior post{Eigen::VectorXd::Zero(m), Eigen::VectorXd::Zero(end - begin), Points::Zero(m, 3), 0};
   std::vector<std::pair<Eigen::Index, double>> near;  // centres of one fixed point with weight > 0
@@ -196,17 +185,16 @@ Posterior expectation(const Points& x, const Points& centres, double sigma2, dou
   // The uniform outlier component's share of each denominator.
   const double outlier =
       std::pow(2 * M_PI * sigma2, 1.5) * outlier_weight / (1 - outlier_weight) * double(m) / double(n_fixed);
-  std::vector<Posterior> parts(kSlabs);
-  for_each_of_the_slabs([&](int slab) {
-    parts[size_t(slab)] =
-        expectation_over(x, slab_begin(n_fixed, slab), slab_begin(n_fixed, slab + 1), centres, sigma2, outlier);
+  std::vector<Posterior> parts(kParts);
+  for_each_part(kParts, [&](int part) {
+    parts[size_t(part)] = expectation_over(x, part_range(n_fixed, part, kParts), centres, sigma2, outlier);
   });
   Posterior post{Eigen::VectorXd::Zero(m), Eigen::VectorXd::Zero(n_fixed), Points::Zero(m, 3), 0};
-  for (int slab = 0; slab < kSlabs; ++slab) {
-    const Posterior& part = parts[size_t(slab)];
+  for (int p = 0; p < kParts; ++p) {
+    const Posterior& part = parts[size_t(p)];
     post.p1 += part.p1;
     post.px += part.px;
-    post.pt1.segment(slab_begin(n_fixed, slab), part.pt1.size()) = part.pt1;
+    post.pt1.segment(part_range(n_fixed, p, kParts).begin, part.pt1.size()) = part.pt1;
     post.negative_log_likelihood += part.negative_log_likelihood;
   }
   post.negative_log_likelihood += 1.5 * double(n_fixed) * std::log(sigma2);
@@ -219,12 +207,13 @@ Posterior expectation(const Points& x, const Points& centres, double sigma2, dou
 Points field_weights(const Matrix& g_yc, const Matrix& g_cc, const Points& y, const Posterior& post, double lambda,
                      double sigma2) {
   const Matrix weighted = g_yc.array().colwise() * post.p1.array().sqrt();
-  // G_yc^T d(P1) G_yc, the M-step's largest cost (moving points x controls^2), by slabs of moving points.
-  std::vector<Matrix> parts(kSlabs);
-  for_each_of_the_slabs([&](int slab) {
-    const Eigen::Index begin = slab_begin(weighted.rows(), slab), end = slab_begin(weighted.rows(), slab + 1);
-    parts[size_t(slab)] = Matrix::Zero(g_cc.rows(), g_cc.cols());
-    parts[size_t(slab)].selfadjointView<Eigen::Lower>().rankUpdate(weighted.middleRows(begin, end - begin).transpose());
+  // G_yc^T d(P1) G_yc, the M-step's largest cost (moving points x controls^2), by parts of the moving points.
+  std::vector<Matrix> parts(kParts);
+  for_each_part(kParts, [&](int part) {
+    const PartRange rows = part_range(weighted.rows(), part, kParts);
+    parts[size_t(part)] = Matrix::Zero(g_cc.rows(), g_cc.cols());
+    parts[size_t(part)].selfadjointView<Eigen::Lower>().rankUpdate(
+        weighted.middleRows(rows.begin, rows.end - rows.begin).transpose());
   });
   Matrix system = lambda * sigma2 * g_cc;
   for (const Matrix& part : parts) system.triangularView<Eigen::Lower>() += part;

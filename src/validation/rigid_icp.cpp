@@ -111,22 +111,19 @@ class Matcher {
   }
 
   // The samples' pairs in the samples' order. The closest-point queries, most of ICP's time, run
-  // in slabs of samples, each into its own list; the lists are joined in order, so the pairs do
-  // not depend on the threads.
+  // in fixed parts of the samples, each into its own list; the lists are joined in order, so the
+  // pairs do not depend on the threads.
   std::vector<Pair> pairs(const Eigen::Isometry3d& transform) const {
-    constexpr int kSlabs = 16;
-    std::vector<std::vector<Pair>> found(kSlabs);
-    const int samples = int(samples_.size());
-    for_each_slab(0, kSlabs,
-                  [&](int first, int last) {
-                    for (int slab = first; slab < last; ++slab)
-                      for (int s = samples * slab / kSlabs; s < samples * (slab + 1) / kSlabs; ++s)
-                        if (auto pair = pair_of(samples_[size_t(s)], transform)) found[size_t(slab)].push_back(*pair);
-                  },
-                  {.min_slab_size = 1});
+    constexpr int kParts = 16;
+    std::vector<std::vector<Pair>> found(kParts);
+    for_each_part(kParts, [&](int part) {
+      const PartRange range = part_range(int64_t(samples_.size()), part, kParts);
+      for (int64_t s = range.begin; s < range.end; ++s)
+        if (auto pair = pair_of(samples_[size_t(s)], transform)) found[size_t(part)].push_back(*pair);
+    });
     std::vector<Pair> joined;
     joined.reserve(samples_.size());
-    for (const auto& slab : found) joined.insert(joined.end(), slab.begin(), slab.end());
+    for (const auto& part : found) joined.insert(joined.end(), part.begin(), part.end());
     return joined;
   }
 

@@ -40,6 +40,26 @@ TEST(ParallelSlabs, SlabsAreContiguousAndCoverTheRangeInOrder) {
   for (size_t s = 1; s < slabs.size(); ++s) EXPECT_EQ(slabs[s].first, slabs[s - 1].second);
 }
 
+TEST(ParallelSlabs, PartsCoverTheRangeInOrderWhateverTheirCount) {
+  for (int64_t count : {0, 3, 8, 2499}) {
+    int64_t next = 0;
+    for (int part = 0; part < 8; ++part) {
+      const PartRange range = part_range(count, part, 8);
+      EXPECT_EQ(range.begin, next) << count << " items, part " << part;
+      EXPECT_GE(range.end, range.begin);
+      EXPECT_LE(range.end - range.begin, count / 8 + 1);  // as even as integers allow
+      next = range.end;
+    }
+    EXPECT_EQ(next, count);
+  }
+}
+
+TEST(ParallelSlabs, EveryPartRunsExactlyOnce) {
+  std::vector<std::atomic<int>> runs(16);
+  for_each_part(16, [&](int part) { ++runs[size_t(part)]; });
+  for (size_t part = 0; part < runs.size(); ++part) EXPECT_EQ(runs[part].load(), 1) << "part " << part;
+}
+
 TEST(ParallelSlabs, AnEmptyRangeRunsNothing) {
   bool ran = false;
   for_each_slab(3, 3, [&](int, int) { ran = true; });
