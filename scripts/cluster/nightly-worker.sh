@@ -3,7 +3,8 @@
 # (nightly-job.yaml) runs this. It claims cases from the archive's work queue until every case is
 # finished (`maxillo nightly --claim`). A worker that dies (a signal, the OOM killer) is started
 # again, up to three times: it resumes the queue, and a case it held is claimed again once its
-# lease ends. Exit 0 once the queue is done, so that the summary step (afterok) runs.
+# lease ends. Exit 0 once the queue is done; the summary step runs after every worker however
+# it ended (afterany), and lists what is left.
 #
 #   MAXILLO_ARCHIVE   the archive (postgresql://USER@HOST/DB?objects=/shared/folder)
 #   MAXILLO_OUT       shared output folder (case-<id>/ folders; the summary goes there too)

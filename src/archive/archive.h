@@ -88,23 +88,38 @@ inline constexpr int64_t kServerOrphanGraceSeconds = 600;
 struct VerifyReport {
   std::string index_check = "ok";                // SQLite integrity_check's first finding
   std::vector<std::string> journal_differences;  // where the index and its journal disagree
+  // Why the index could not be compared with its journal (nothing is known damaged then).
+  std::string journal_check_failure;
   size_t objects_checked = 0;
   std::vector<std::string> missing;  // sha256 of indexed objects without a file: data loss
   std::vector<std::string> corrupt;  // sha256 whose file no longer hashes to its name
   // What names each missing or corrupt object: "case:3 series:5 instance:12", "case:3 artefact:7 (report)".
   std::map<std::string, std::vector<std::string>> owners;
+  // What interrupted writes leave (a kill -9 or a full disk between an object's write and the
+  // commit of its rows): object files no row names, and temporary files. Harmless while they
+  // are few (see leftovers_are_few): the next import of the same files adopts the objects,
+  // `verify --repair` adopts the DICOM ones and quarantines the rest.
   std::vector<std::filesystem::path> orphans;      // object files no row names
-  std::vector<std::filesystem::path> temporaries;  // leftovers of interrupted writes
+  std::vector<std::filesystem::path> temporaries;  // temporary files of interrupted writes
+  std::vector<std::filesystem::path> adopted;      // orphan DICOM objects Repair indexed from their headers
   size_t quarantined = 0;                          // orphans + temporaries moved into quarantine by Repair
   size_t within_grace = 0;                         // orphans + temporaries Repair left: younger than the grace period
   std::vector<std::string> restored;               // missing objects Repair found in quarantine and put back
   std::string repair_refused;                      // why Repair changed nothing, when it refused
   bool index_intact() const { return index_check == "ok" && journal_differences.empty(); }
+  // Orphans beyond 5 % of the store (and at least 10) are not what interrupted writes leave (an
+  // import batch is 500 files, a store thousands): a lost or older index, or a large import
+  // stopped half-way. Temporaries are always what an interrupted write left: verify holds the
+  // store alone, so no writer is busy with one.
+  bool leftovers_are_few() const;
+  // Nothing damaged or lost, and no more leftovers than interrupted writes leave.
   bool consistent() const {
-    return index_intact() && missing.empty() && corrupt.empty() && orphans.empty() && temporaries.empty();
+    return index_intact() && journal_check_failure.empty() && missing.empty() && corrupt.empty() && leftovers_are_few();
   }
   // Consistent after the repair: only what repair cannot fix remains.
-  bool data_intact() const { return index_intact() && missing.empty() && corrupt.empty(); }
+  bool data_intact() const {
+    return index_intact() && journal_check_failure.empty() && missing.empty() && corrupt.empty();
+  }
 };
 
 struct RebuildOptions {
@@ -143,7 +158,9 @@ struct MigrationReport {
 
 // Existing: the archive must be there (Error kNotFound otherwise). CreateIfMissing: a missing
 // folder becomes a new, empty archive (import and the demo create archives; nothing else does).
-enum class OpenMode { Existing, CreateIfMissing };
+// MigrationTarget: CreateIfMissing for `archive migrate`, which alone may open an archive that
+// an unfinished migration is filling (every other opening refuses it, archive_health.h).
+enum class OpenMode { Existing, CreateIfMissing, MigrationTarget };
 
 class Archive {
  public:
@@ -269,10 +286,11 @@ class Archive {
     size_t finished = 0;  // done, failed or superseded
   };
   WorkCounts work_counts(std::string_view queue, int64_t now) const;
-  // Every finished item's state and holder, for reports and tests: item -> (state, holder, claims).
+  // Every item's state and holder, for reports and tests: item -> (state, holder, claims, lease end).
   struct WorkRecord {
     std::string item, state, holder, reason;
     int64_t claims = 0;
+    int64_t expires_at = 0;  // the lease's end (Unix seconds, the index's clock); 0: never leased
   };
   std::vector<WorkRecord> work_records(std::string_view queue) const;
 

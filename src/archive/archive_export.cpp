@@ -4,11 +4,13 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cerrno>
 #include <random>
 
 #include "archive/archive_state.h"
 #include "archive/dicom_deidentify.h"
 #include "core/atomic_file.h"
+#include "core/log.h"
 #include "core/sha256.h"
 
 namespace maxillo {
@@ -55,6 +57,17 @@ std::string Archive::deidentification_secret() const {
   if (!std::filesystem::exists(path)) {
     // O_EXCL: two processes creating it at once agree on the first one written.
     int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+    if (fd < 0 && (errno == EROFS || errno == EACCES || errno == EPERM)) {
+      // A read-only archive without a secret yet: exporting must work, with pseudonyms of
+      // this run alone (said once; a later export from a writable archive keys another secret).
+      if (state_->unsaved_secret.empty()) {
+        state_->unsaved_secret = random_secret();
+        log::warning(path.string(),
+                     ": the archive is read-only and has no de-identification secret yet: the "
+                     "pseudonyms of this export are its own, and will differ from later exports'");
+      }
+      return state_->unsaved_secret;
+    }
     if (fd >= 0) {
       std::string secret = random_secret();
       bool written = ::write(fd, secret.data(), secret.size()) == ssize_t(secret.size()) && ::fsync(fd) == 0;

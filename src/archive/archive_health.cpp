@@ -3,7 +3,9 @@
 #include "archive/archive_state.h"
 #include "archive/sqlite.h"
 #include "archive/journalled_transaction.h"
+#include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/utc_time.h"
 
 namespace maxillo {
 namespace {
@@ -19,6 +21,43 @@ std::string rebuild_advice(db::Connection& db) {
 }
 
 }  // namespace
+
+namespace {
+
+std::filesystem::path migration_mark(const std::filesystem::path& objects_folder) {
+  return objects_folder / "settings" / "migration-in-progress";
+}
+
+}  // namespace
+
+void mark_migration_started(const std::filesystem::path& objects_folder, const std::string& source) {
+  const auto mark = migration_mark(objects_folder);
+  create_folders_durably(mark.parent_path());
+  write_file_atomically(mark, source + "\n" + utc_now() + "\n");
+}
+
+void mark_migration_finished(const std::filesystem::path& objects_folder) {
+  std::error_code ignored;
+  std::filesystem::remove(migration_mark(objects_folder), ignored);
+  sync_folder(migration_mark(objects_folder).parent_path());
+}
+
+void require_no_unfinished_migration(const std::filesystem::path& objects_folder, const std::string& shown) {
+  const auto mark = migration_mark(objects_folder);
+  std::error_code error;
+  if (!std::filesystem::exists(mark, error)) return;
+  std::string source = "its source";
+  try {
+    const auto bytes = read_file(mark);
+    const std::string text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+    source = text.substr(0, text.find('\n'));
+  } catch (const Error&) {}
+  throw Error(ErrorCode::kConflict, shown,
+              "a migration into this archive from " + source +
+                  " has not finished (it was stopped, or its result did not verify); nothing here is complete. Run "
+                  "`maxillo --archive " +
+                  source + " archive migrate --to ADDRESS` again to finish it");
+}
 
 bool holds_any_file(const std::filesystem::path& folder) {
   std::error_code error;
@@ -50,11 +89,12 @@ void require_intact_index(db::Connection& db) {
 }
 
 void require_index_not_behind_journal(db::Connection& db, const IndexJournal& journal) {
-  // Entry N+2 can only be written once N+1 has committed, and the counter never goes back, so
-  // if the counter is the same before and after looking, N+2 proves commits the index lacks.
+  // A committed entry N+1 is written only after N+1 has committed in some index, and the
+  // counter never goes back, so if the counter is the same before and after looking, a
+  // committed entry past it proves commits this index lacks.
   int64_t before = journal_sequence(db);
   for (int attempt = 0; attempt < 10; ++attempt) {
-    bool ahead = journal.has(before + 2);
+    bool ahead = journal.has(before + 1);
     int64_t after = journal_sequence(db);
     if (after != before) {
       before = after;  // another process committed meanwhile: look again
@@ -62,9 +102,9 @@ void require_index_not_behind_journal(db::Connection& db, const IndexJournal& jo
     }
     if (!ahead) return;
     throw Error(ErrorCode::kIndexDamaged, db.name(),
-                "the index is behind its journal (index at entry " + std::to_string(before) + ", journal has entry " +
-                    std::to_string(before + 2) + "): it was restored from an older copy or lost commits; " +
-                    rebuild_advice(db));
+                "the index is behind its journal (index at entry " + std::to_string(before) +
+                    ", the journal holds committed entry " + std::to_string(before + 1) +
+                    "): it was restored from an older copy or lost commits; " + rebuild_advice(db));
   }
 }
 

@@ -21,10 +21,17 @@ IndexPresence check_index_presence(const std::filesystem::path& archive_folder);
 // Error(kIndexDamaged) with SQLite's first complaint.
 void require_intact_index(db::Connection& db);
 
-// Throws Error(kIndexDamaged) when the journal holds entries the index never committed beyond
-// the one an interrupted transaction may leave (see index_journal.h): the index was restored
-// from an older copy or lost its last commits.
+// Throws Error(kIndexDamaged) when the journal holds a committed entry past the index's counter
+// (see index_journal.h): the index was restored from an older copy or lost its last commits,
+// by however many.
 void require_index_not_behind_journal(db::Connection& db, const IndexJournal& journal);
+
+// An archive being filled by `archive migrate` is marked until the migration has verified it, so
+// that a migration killed half-way is not taken for an archive that holds less (issue 29).
+void mark_migration_started(const std::filesystem::path& objects_folder, const std::string& source);
+void mark_migration_finished(const std::filesystem::path& objects_folder);
+// Throws Error(kConflict) naming the source and how to finish, when the mark is there.
+void require_no_unfinished_migration(const std::filesystem::path& objects_folder, const std::string& shown);
 
 // True when any regular file exists below `folder` (stops at the first one found).
 bool holds_any_file(const std::filesystem::path& folder);

@@ -131,6 +131,8 @@ Json to_json(const VerifyReport& r) {
           {"owners", owners},
           {"orphans", paths(r.orphans)},
           {"temporaries", paths(r.temporaries)},
+          {"adopted", paths(r.adopted)},
+          {"journal_check_failure", r.journal_check_failure},
           {"quarantined", r.quarantined},
           {"within_grace", r.within_grace},
           {"restored", strings(r.restored)},

@@ -13,14 +13,17 @@
 namespace maxillo {
 namespace {
 
-// The source, opened only to be read: its index file read-only, never upgraded.
+// The source, opened only to be read and held alone for the migration (no writer changes it
+// meanwhile): its index file read-only with nothing made beside it, never upgraded.
 struct Source {
   explicit Source(const std::filesystem::path& folder)
       : folder(folder),
-        index(index_file(folder), sqlite::OpenKind::ReadOnly),
+        lock(folder, LockKind::Exclusive, StoreLock::LockFile::ExistingOnly),
+        index(index_file(folder), sqlite::OpenKind::ReadOnlyUntouched),
         objects(objects_folder(folder)),
         journal(journal_folder(folder)) {}
   std::filesystem::path folder;
+  StoreLock lock;
   sqlite::Database index;
   ObjectStore objects;
   IndexJournal journal;
@@ -36,6 +39,12 @@ void require_migratable(Source& source) {
                     "; open it once with this program (e.g. `maxillo --archive " + source.folder.string() +
                     " verify`) to upgrade it, then migrate");
   require_index_not_behind_journal(source.index, source.journal);
+  const int64_t entries = journal_sequence(source.index);
+  if (source.journal.has_pending(entries))
+    throw Error(ErrorCode::kConflict, source.folder.string(),
+                "its last journal entry is not yet marked committed (a writer stopped between its commit and the "
+                "mark); open the archive once with this program (e.g. `maxillo --archive " +
+                    source.folder.string() + " verify`), which marks it, then migrate");
 }
 
 // The target's history must be the start of the source's: a resumed migration, never another
@@ -88,7 +97,7 @@ void copy_journal(const Source& source, int64_t entries, const IndexJournal& tar
       report.journal_problems.push_back("entry " + std::to_string(sequence) + ": missing in the source");
       continue;
     }
-    target.write(source.journal.read(sequence));  // durable before it returns
+    target.write_committed(source.journal.read(sequence));  // durable before it returns
   }
 }
 
@@ -120,7 +129,7 @@ MigrationReport Archive::migrate(const std::filesystem::path& source_folder,
   require_migratable(source);
   const int64_t entries = journal_sequence(source.index);
 
-  Archive target = Archive::open(target_address, OpenMode::CreateIfMissing);
+  Archive target = Archive::open(target_address, OpenMode::MigrationTarget);
   State& state = *target.state_;
   if (state.location.embedded() && std::filesystem::equivalent(state.location.folder, source.folder))
     throw Error(ErrorCode::kUsage, source_folder.string(), "the source and the target are the same archive");
@@ -129,6 +138,7 @@ MigrationReport Archive::migrate(const std::filesystem::path& source_folder,
   require_same_history(source, entries, state);
 
   MigrationReport report;
+  mark_migration_started(state.location.objects_folder(), std::filesystem::absolute(source_folder).string());
   // Objects first (durable before rows name them), then the rows, replayed from the source's
   // journal in one transaction, then the journal itself, entry by entry (each durable).
   copy_objects(source, state.objects, options.progress, report);
@@ -144,6 +154,8 @@ MigrationReport Archive::migrate(const std::filesystem::path& source_folder,
     db::Statement count(state.db, "SELECT COUNT(*) FROM " + table);
     report.rows[table] = db::single_integer(count);
   }
+  if (report.differences.empty() && report.journal_problems.empty() && report.damaged_sources.empty())
+    mark_migration_finished(state.location.objects_folder());
   log::info("migrated ", report.journal_entries, " journal entries and ", report.objects_copied, " objects (",
             report.objects_present, " were already there)");
   return report;

@@ -16,6 +16,7 @@
 #include "archive/journalled_transaction.h"
 #include "archive/dicom_header.h"
 #include "archive/postgres.h"
+#include "core/log.h"
 #include "core/resources.h"
 
 namespace maxillo {
@@ -95,22 +96,28 @@ int upgrade_schema(db::Connection& db, const IndexJournal& journal) {
   return db.schema_version();
 }
 
-void configure_connection(sqlite::Database& db) {
-  // WAL: readers never block the writer; synchronous=NORMAL in WAL keeps the index consistent
-  // after a crash (a lost last commit only leaves orphan objects, which verify --repair removes).
-  db.execute("PRAGMA journal_mode = WAL");
-  db.execute("PRAGMA synchronous = NORMAL");
-  db.execute("PRAGMA foreign_keys = ON");
-  // Checks each b-tree page as it is read, so damage is noticed where it is met.
-  db.execute("PRAGMA cell_size_check = ON");
-}
-
 namespace {
 
+// `archive rebuild-index` holds the store lock alone and swaps a new index file in. A process
+// that opened the archive before and waited for the lock would otherwise write into the index
+// that was replaced (kept beside as index.sqlite.replaced-*), and its rows would be lost to
+// the archive: it follows the swap, on the index the archive has now.
+void follow_a_rebuilt_index(Archive::State& state) {
+  if (!state.db.reopen_if_moved()) return;
+  log::info("the archive's index was rebuilt while this command waited; it goes on with the new index");
+  require_intact_index(state.db);
+  state.schema_version = state.db.schema_version();
+  state.journal.settle(journal_sequence(state.db));
+  require_index_not_behind_journal(state.db, state.journal);
+}
+
 // flock(2) on FOLDER/store.lock; returns the descriptor whose closing releases it.
-int lock_store_file(const std::filesystem::path& folder, LockKind kind) {
+int lock_store_file(const std::filesystem::path& folder, LockKind kind,
+                    StoreLock::LockFile file = StoreLock::LockFile::CreateIfMissing) {
   auto path = folder / "store.lock";
-  int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  const bool existing_only = file == StoreLock::LockFile::ExistingOnly;
+  int fd = ::open(path.c_str(), existing_only ? O_RDONLY | O_CLOEXEC : O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (fd < 0 && existing_only && errno == ENOENT) return -1;
   if (fd < 0) throw Error(ErrorCode::kWriteFailed, path.string(), std::strerror(errno));
   while (::flock(fd, kind == LockKind::Shared ? LOCK_SH : LOCK_EX) != 0) {
     if (errno == EINTR) continue;
@@ -126,14 +133,15 @@ int lock_store_file(const std::filesystem::path& folder, LockKind kind) {
 StoreLock::StoreLock(Archive::State& state, LockKind kind) : kind_(kind) {
   if (state.location.embedded()) {
     fd_ = lock_store_file(state.location.folder, kind);
+    follow_a_rebuilt_index(state);
     return;
   }
   static_cast<postgres::Connection&>(state.db).lock(postgres::kStoreLockKey, kind == LockKind::Shared);
   server_ = &state.db;
 }
 
-StoreLock::StoreLock(const std::filesystem::path& folder, LockKind kind)
-    : fd_(lock_store_file(folder, kind)), kind_(kind) {}
+StoreLock::StoreLock(const std::filesystem::path& folder, LockKind kind, LockFile file)
+    : fd_(lock_store_file(folder, kind, file)), kind_(kind) {}
 
 StoreLock::~StoreLock() {
   if (server_) static_cast<postgres::Connection*>(server_)->unlock(postgres::kStoreLockKey, kind_ == LockKind::Shared);
@@ -156,14 +164,23 @@ namespace {
 
 // An embedded archive: the folder is made for CreateIfMissing, and a missing or empty index
 // beside stored objects is refused (archive_health.h).
+// An archive this process may only read (a read-only mount, files it may not write): its index
+// is opened read-only with nothing made beside it, so that reading commands work (issue 29: a
+// read-only archive's `list` failed with "attempt to write a readonly database").
+bool only_readable(const std::filesystem::path& folder) {
+  return ::access(index_file(folder).c_str(), W_OK) != 0 || ::access(folder.c_str(), W_OK) != 0;
+}
+
 std::unique_ptr<Archive::State> open_embedded(const ArchiveLocation& location, OpenMode mode) {
   prepare_folder(location.folder, mode);
   const IndexPresence presence = check_index_presence(location.folder);
+  const sqlite::OpenKind kind = presence == IndexPresence::Fresh ? sqlite::OpenKind::Create
+                                : only_readable(location.folder) ? sqlite::OpenKind::ReadOnlyUntouched
+                                                                 : sqlite::OpenKind::Existing;
+  if (kind == sqlite::OpenKind::ReadOnlyUntouched) log::debug("the archive is read-only here: its index is only read");
   std::unique_ptr<Archive::State> state;
   try {
-    state = std::make_unique<Archive::State>(
-        location, connect_index(location, presence == IndexPresence::Fresh ? sqlite::OpenKind::Create
-                                                                           : sqlite::OpenKind::Existing));
+    state = std::make_unique<Archive::State>(location, connect_index(location, kind));
   } catch (const std::filesystem::filesystem_error& e) {
     throw Error(ErrorCode::kWriteFailed, location.folder.string(), e.code().message());
   }
@@ -204,7 +221,7 @@ Archive Archive::open(const std::filesystem::path& where, OpenMode mode) {
   // upgrade can report "locked" without waiting on the busy handler. Retry them briefly.
   for (int attempt = 0;; ++attempt) {
     try {
-      if (location.embedded()) configure_connection(static_cast<sqlite::Database&>(state->db));
+      if (location.embedded()) static_cast<sqlite::Database&>(state->db).use_archive_settings();
       state->schema_version = upgrade_schema(state->db, state->journal);
       break;
     } catch (const Error& e) {
@@ -212,7 +229,11 @@ Archive Archive::open(const std::filesystem::path& where, OpenMode mode) {
       std::this_thread::sleep_for(std::chrono::milliseconds(10 + attempt % 40));
     }
   }
+  // The last entry's writer may have died between its COMMIT and its mark: the counter proves
+  // the commit, so it is marked (best effort: a read-only archive's readers do without it).
+  state->journal.settle(journal_sequence(state->db));
   require_index_not_behind_journal(state->db, state->journal);
+  if (mode != OpenMode::MigrationTarget) require_no_unfinished_migration(location.objects_folder(), location.shown);
   state->address = where;
   return Archive(std::move(state));
 }

@@ -159,6 +159,6 @@ inline constexpr const char* kCountWork =
     "COALESCE(SUM(CASE WHEN state = 'pending' AND expires_at > ?2 THEN 1 ELSE 0 END), 0), "
     "COALESCE(SUM(CASE WHEN state <> 'pending' THEN 1 ELSE 0 END), 0) FROM work_queue WHERE queue = ?1";
 inline constexpr const char* kWorkRecords =
-    "SELECT item, state, holder, reason, claims FROM work_queue WHERE queue = ?1 ORDER BY item";
+    "SELECT item, state, holder, reason, claims, expires_at FROM work_queue WHERE queue = ?1 ORDER BY item";
 
 }  // namespace maxillo::sql

@@ -22,6 +22,9 @@ struct Archive::State {
   ObjectStore objects;
   IndexJournal journal;
   int schema_version = 0;
+  // The de-identification secret of an archive that has none and cannot be given one (it is
+  // read-only here): this process's own, so that one export's pseudonyms still agree.
+  std::string unsaved_secret;
 };
 
 // The store lock: writers of objects hold it shared, verify --repair holds it exclusively, so
@@ -33,8 +36,11 @@ enum class LockKind { Shared, Exclusive };
 class StoreLock {
  public:
   StoreLock(Archive::State& state, LockKind kind);
-  // An embedded archive's folder, before it has a connection (rebuild-index).
-  StoreLock(const std::filesystem::path& folder, LockKind kind);
+  // An embedded archive's folder, before it has a connection (rebuild-index). ExistingOnly opens
+  // the lock file read-only and never creates it (the source of a migration is not changed;
+  // without the file, no writer has ever run there, and there is nothing to lock against).
+  enum class LockFile { CreateIfMissing, ExistingOnly };
+  StoreLock(const std::filesystem::path& folder, LockKind kind, LockFile file = LockFile::CreateIfMissing);
   ~StoreLock();
   StoreLock(const StoreLock&) = delete;
   StoreLock& operator=(const StoreLock&) = delete;
@@ -61,9 +67,6 @@ int upgrade_schema(db::Connection& db, const IndexJournal& journal);
 // The contents of these cases (record, patient, series with roles, studies), unsorted, read
 // with three queries per 4,096 cases; ids with no case are left out.
 std::map<int64_t, CaseContents> read_case_contents(db::Connection& db, const std::vector<int64_t>& case_ids);
-
-// Connection settings shared by every connection to an embedded archive index.
-void configure_connection(sqlite::Database& db);
 
 // A new connection to the archive's index (import's scanning thread has its own).
 std::unique_ptr<db::Connection> connect_index(const ArchiveLocation& location, sqlite::OpenKind open_kind);

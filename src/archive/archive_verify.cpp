@@ -1,8 +1,8 @@
 // Archive::verify: check the index (SQLite's integrity check and its journal), re-hash every
 // indexed object, find missing, corrupt, orphan and temporary files. Repair never deletes: it
 // quarantines orphans and temporaries and refuses when what it sees means a lost index.
-#include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <unordered_map>
 #include <unordered_set>
@@ -12,6 +12,7 @@
 #include "archive/index_comparison.h"
 #include "archive/journal_replay.h"
 #include "archive/journalled_transaction.h"
+#include "archive/object_adoption.h"
 #include "core/atomic_file.h"
 #include "core/sha256.h"
 
@@ -36,34 +37,14 @@ std::string integrity_check(db::Connection& db) {
   }
 }
 
-// A scratch index (beside an embedded index, in the temporary folder for a server's), removed
-// with its WAL files whatever happens.
-class ScratchIndex {
- public:
-  explicit ScratchIndex(const std::filesystem::path& folder)
-      : path_(folder / (".verify-" + std::to_string(::getpid()) + ".sqlite")) {
-    remove();
-  }
-  ~ScratchIndex() { remove(); }
-  const std::filesystem::path& path() const { return path_; }
-
- private:
-  void remove() {
-    std::error_code ignored;
-    for (const char* suffix : {"", "-wal", "-shm", "-journal"})
-      std::filesystem::remove(path_.string() + suffix, ignored);
-  }
-  std::filesystem::path path_;
-};
-
-// Replays entries 1..N (N: the index's counter) into a scratch index and compares it with the
-// index row by row. The caller holds the store lock exclusively, so no writer commits meanwhile.
-std::vector<std::string> journal_differences(Archive::State& state) {
+// Replays entries 1..N (N: the index's counter) into a scratch index in memory and compares it
+// with the index row by row. The caller holds the store lock exclusively, so no writer commits
+// meanwhile. In memory, not on disk: a check that needs disk space read a full disk as a
+// damaged index (issue 29, fault 5). A check that cannot run says so in `failure`.
+std::vector<std::string> journal_differences(Archive::State& state, std::string& failure) {
   std::vector<std::string> differences;
   try {
-    ScratchIndex scratch(state.location.embedded() ? state.location.folder : std::filesystem::temp_directory_path());
-    sqlite::Database db(scratch.path(), sqlite::OpenKind::Create);
-    db.execute("PRAGMA journal_mode = OFF; PRAGMA synchronous = OFF");
+    sqlite::Database db(":memory:", sqlite::OpenKind::Create);
     upgrade_schema(db, state.journal);
     auto outcome = replay_journal(db, state.journal, journal_sequence(state.db));
     for (auto& problem : outcome.problems) differences.push_back("journal " + problem);
@@ -79,7 +60,7 @@ std::vector<std::string> journal_differences(Archive::State& state) {
       differences.push_back("index and journal differ in " + difference.describe() +
                             " (first: the journal's replay, second: the index)");
   } catch (const Error& e) {
-    differences.push_back("journal check failed: " + e.reason());
+    failure = e.reason();
   }
   return differences;
 }
@@ -128,12 +109,24 @@ void scan_objects(Archive::State& state, ProgressDisplay display, VerifyReport& 
     for (const auto& sha : *bad) report.owners[sha] = owners_of(state.db, sha);
 }
 
+}  // namespace
+
+bool VerifyReport::leftovers_are_few() const {
+  const size_t stored = objects_checked + orphans.size();
+  return orphans.size() < kManyOrphans || orphans.size() * kOrphanShareDivisor <= stored;
+}
+
+namespace {
+
 std::string reason_to_refuse(const VerifyReport& report, bool force) {
   if (!report.index_intact())
     return "the index is damaged or disagrees with its journal, so objects it does not name may still be data: "
            "run `maxillo archive rebuild-index` first";
+  if (!report.journal_check_failure.empty())
+    return "the index could not be compared with its journal (" + report.journal_check_failure +
+           "), so objects it does not name may still be data";
   const size_t stored = report.objects_checked + report.orphans.size();
-  if (!force && report.orphans.size() >= kManyOrphans && report.orphans.size() * kOrphanShareDivisor > stored)
+  if (!force && !report.leftovers_are_few())
     return std::to_string(report.orphans.size()) + " of " + std::to_string(stored) +
            " objects are named by no index row, more than interrupted writes leave behind. If a large import was "
            "interrupted, run it again (it adopts its objects); if the index was replaced by an older copy, run "
@@ -156,15 +149,26 @@ void repair(Archive::State& state, const VerifyOptions& options, VerifyReport& r
   const int64_t grace = options.grace_seconds >= 0  ? options.grace_seconds
                         : state.location.embedded() ? 0
                                                     : kServerOrphanGraceSeconds;
-  for (const auto* paths : {&report.orphans, &report.temporaries})
-    for (const auto& path : *paths) {
-      if (younger_than(path, grace)) {
-        ++report.within_grace;
-        continue;
-      }
-      state.objects.set_aside(path);
-      ++report.quarantined;
+  // Orphan DICOM objects are what an interrupted import left: adopted, as importing their files
+  // again would. Other orphans and every temporary file go into the quarantine.
+  std::vector<std::filesystem::path> orphans, set_aside = report.temporaries;
+  for (const auto& path : report.orphans) {
+    if (younger_than(path, grace))
+      ++report.within_grace;
+    else
+      orphans.push_back(path);
+  }
+  auto adoption = adopt_objects(state.db, state.objects, state.journal, std::move(orphans), "verify --repair");
+  report.adopted = std::move(adoption.adopted);
+  set_aside.insert(set_aside.end(), adoption.not_adopted.begin(), adoption.not_adopted.end());
+  for (const auto& path : set_aside) {
+    if (younger_than(path, grace)) {
+      ++report.within_grace;
+      continue;
     }
+    state.objects.set_aside(path);
+    ++report.quarantined;
+  }
   std::vector<std::string> still_missing;
   for (const auto& sha : report.missing) {
     if (state.objects.restore_from_quarantine(sha))
@@ -174,6 +178,9 @@ void repair(Archive::State& state, const VerifyOptions& options, VerifyReport& r
   }
   report.missing = std::move(still_missing);
   if (report.quarantined > 0 || !report.restored.empty()) state.objects.make_durable();
+  std::erase_if(report.orphans, [&](const auto& path) {  // what is adopted is an orphan no more
+    return std::find(report.adopted.begin(), report.adopted.end(), path) != report.adopted.end();
+  });
 }
 
 }  // namespace
@@ -184,7 +191,7 @@ VerifyReport Archive::verify(const VerifyOptions& options) {
   StoreLock lock(*state_, LockKind::Exclusive);
   VerifyReport report;
   report.index_check = integrity_check(state_->db);
-  report.journal_differences = journal_differences(*state_);
+  report.journal_differences = journal_differences(*state_, report.journal_check_failure);
   scan_objects(*state_, options.progress, report);
   if (options.mode == RepairMode::Repair) repair(*state_, options, report);
   return report;

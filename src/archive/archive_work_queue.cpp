@@ -64,7 +64,8 @@ std::vector<Archive::WorkRecord> Archive::work_records(std::string_view queue) c
   db::Statement rows(state_->db, sql::kWorkRecords);
   rows.bind(1, queue);
   std::vector<WorkRecord> records;
-  while (rows.step()) records.push_back({rows.text(0), rows.text(1), rows.text(2), rows.text(3), rows.integer(4)});
+  while (rows.step())
+    records.push_back({rows.text(0), rows.text(1), rows.text(2), rows.text(3), rows.integer(4), rows.integer(5)});
   return records;
 }
 

@@ -14,10 +14,13 @@
 #include <dcmtk/dcmjpls/djdecode.h>
 #include <dcmtk/oflog/oflog.h>
 
+#include <algorithm>
 #include <cstring>
 #include <mutex>
 
+#include "archive/dicom_pixel_data.h"
 #include "archive/dicom_structure.h"
+#include "archive/dicom_uid.h"
 #include "core/error.h"
 #include "core/utf8.h"
 
@@ -105,6 +108,42 @@ void fill_image(DcmDataset& d, InstanceHeader& h) {
   h.image_orientation = text_of(d, DCM_ImageOrientationPatient);
 }
 
+// An image (Rows and Columns given) must carry its pixels: a file cut before its Pixel Data,
+// or whose Pixel Data holds less than Rows x Columns x frames need, is refused before anything
+// is archived (issue 29, fault 4: such files were acknowledged and imported).
+void require_pixels_of_an_image(DcmDataset& d, const InstanceHeader& h, const std::filesystem::path& path) {
+  if (!h.rows || !h.columns) return;  // not an image (a report, a structured document)
+  if (!d.tagExists(DCM_PixelData))
+    throw Error(ErrorCode::kTruncated, path.string(),
+                "an image (Rows x Columns " + std::to_string(*h.rows) + " x " + std::to_string(*h.columns) +
+                    ") without Pixel Data (7FE0,0010): the file ends before its pixels");
+  DcmPixelData* pixel_data = pixel_data_of(d);
+  if (pixel_data == nullptr)
+    throw Error(ErrorCode::kNotDicom, path.string(), "Pixel Data (7FE0,0010) is not encoded as pixel data");
+  const size_t stored = stored_pixel_bytes(d, *pixel_data);
+  if (pixels_are_encapsulated(d)) {
+    if (stored == 0)
+      throw Error(ErrorCode::kTruncated, path.string(), "Pixel Data (7FE0,0010) holds no compressed fragment");
+    return;  // how much a frame compresses is the decoder's to check, when the pixels are read
+  }
+  const size_t bits = size_t(unsigned_of(d, DCM_BitsAllocated).value_or(16));
+  const size_t samples = size_t(unsigned_of(d, DCM_SamplesPerPixel).value_or(1));
+  const size_t frames = size_t(std::max(1, integer_of(d, DCM_NumberOfFrames).value_or(1)));
+  const size_t needed = (size_t(*h.rows) * size_t(*h.columns) * samples * frames * bits + 7) / 8;
+  if (stored < needed)
+    throw Error(ErrorCode::kTruncated, path.string(),
+                "Pixel Data (7FE0,0010) holds " + std::to_string(stored) + " bytes; Rows x Columns x frames (" +
+                    std::to_string(*h.rows) + " x " + std::to_string(*h.columns) + " x " + std::to_string(frames) +
+                    ") at " + std::to_string(bits) + " bits need " + std::to_string(needed));
+}
+
+// The UIDs the archive keys on and names files by must be UIDs (PS3.5 9.1): a slash or 301
+// characters broke export, a NUL byte made a series reachable only by its archive id.
+void require_uid(const std::string& value, const char* element, const std::filesystem::path& path) {
+  if (auto fault = uid_fault(value, LeadingZeros::Tolerated))
+    throw Error(ErrorCode::kBadValue, path.string(), std::string(element) + " is not a UID: " + *fault);
+}
+
 }  // namespace
 
 void initialise_dicom_toolkit() {
@@ -158,6 +197,11 @@ InstanceHeader parse_instance_header(std::span<const std::byte> bytes, const std
   require(header.study_uid, "Study Instance UID (0020,000D)", path);
   require(header.series_uid, "Series Instance UID (0020,000E)", path);
   require(header.patient_id, "Patient ID (0010,0020)", path);
+  require_uid(header.sop_instance_uid, "SOP Instance UID (0008,0018)", path);
+  require_uid(header.sop_class_uid, "SOP Class UID (0008,0016)", path);
+  require_uid(header.study_uid, "Study Instance UID (0020,000D)", path);
+  require_uid(header.series_uid, "Series Instance UID (0020,000E)", path);
+  require_pixels_of_an_image(dataset, header, path);
   return header;
 }
 

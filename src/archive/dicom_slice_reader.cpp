@@ -20,6 +20,7 @@
 #include <limits>
 
 #include "archive/dicom_header.h"
+#include "archive/dicom_pixel_data.h"
 #include "archive/dicom_structure.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
@@ -123,8 +124,8 @@ struct SampleLayout {
 // must hold the whole frame; compressed data is allowed a generous 1:1000 ratio.
 void check_frame_size(const Reading& r, DcmPixelData& pixel_data, size_t frame_bytes) {
   constexpr size_t kMaxCompressionRatio = 1000;
-  const size_t stored = pixel_data.getLength();
-  const bool encapsulated = DcmXfer(r.dataset.getOriginalXfer()).isEncapsulated();
+  const size_t stored = stored_pixel_bytes(r.dataset, pixel_data);
+  const bool encapsulated = pixels_are_encapsulated(r.dataset);
   if (!encapsulated && stored < frame_bytes)
     r.fail(ErrorCode::kBadValue, "Pixel Data holds " + std::to_string(stored) + " bytes, Rows x Columns needs " +
                                      std::to_string(frame_bytes));
@@ -145,11 +146,8 @@ void read_pixels(const Reading& r, DicomSlice& slice, const std::string& photome
   r.dataset.findAndGetUint16(DCM_PixelRepresentation, representation);
   layout.is_signed = representation == 1;
 
-  DcmElement* element = nullptr;
-  if (r.dataset.findAndGetElement(DCM_PixelData, element).bad() || element == nullptr)
-    r.fail(ErrorCode::kMissingAttribute, "Pixel Data is missing");
-  // A damaged VR makes DCMTK read (7FE0,0010) as some other kind of element.
-  auto* pixel_data = dynamic_cast<DcmPixelData*>(element);
+  if (!r.dataset.tagExists(DCM_PixelData)) r.fail(ErrorCode::kMissingAttribute, "Pixel Data is missing");
+  auto* pixel_data = pixel_data_of(r.dataset);
   if (pixel_data == nullptr) r.fail(ErrorCode::kNotDicom, "Pixel Data (7FE0,0010) is not encoded as pixel data");
   const size_t count = size_t(slice.rows) * slice.columns;
   check_frame_size(r, *pixel_data, count * (layout.bits_allocated / 8));

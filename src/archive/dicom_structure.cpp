@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "archive/dicom_uid.h"
 #include "core/error.h"
 
 namespace maxillo {
@@ -84,23 +85,6 @@ class Reader {
   const std::filesystem::path& path_;
 };
 
-// PS3.5 9.1: components of digits separated by single dots, none empty, none with a leading
-// zero. (A fuzzing finding: "1.2.840.10008.14.2..80" passed a digits-and-dots check, this walk
-// read the data set as explicit VR while DCMTK, not knowing the syntax, guessed another
-// encoding and allocated 3.2 GB for a length it read from the wrong bytes.)
-bool is_uid(const std::string& text) {
-  if (text.empty() || text.size() > 64) return false;
-  size_t component_start = 0;
-  for (size_t i = 0; i <= text.size(); ++i) {
-    if (i < text.size() && text[i] >= '0' && text[i] <= '9') continue;
-    if (i < text.size() && text[i] != '.') return false;
-    const size_t length = i - component_start;
-    if (length == 0 || (length > 1 && text[component_start] == '0')) return false;
-    component_start = i + 1;
-  }
-  return true;
-}
-
 struct MetaInformation {
   size_t end = kPreamble;  // first byte of the data set
   std::string transfer_syntax;
@@ -136,7 +120,11 @@ MetaInformation read_meta(const Reader& in) {
         in.fail(ErrorCode::kNotDicom, at, "Transfer Syntax UID (0002,0010) is not of VR UI");
       std::string uid = in.text(at + header, length);
       while (!uid.empty() && (uid.back() == '\0' || uid.back() == ' ')) uid.pop_back();
-      if (!is_uid(uid)) in.fail(ErrorCode::kNotDicom, at, "Transfer Syntax UID (0002,0010) is not a UID");
+      // Strictly (a fuzzing finding: "1.2.840.10008.14.2..80" passed a digits-and-dots check, this
+      // walk read the data set as explicit VR while DCMTK, not knowing the syntax, guessed another
+      // encoding and allocated 3.2 GB for a length it read from the wrong bytes).
+      if (auto fault = uid_fault(uid))
+        in.fail(ErrorCode::kNotDicom, at, "Transfer Syntax UID (0002,0010) is not a UID: " + *fault);
       meta.transfer_syntax = uid;
     }
     at += header + length;

@@ -17,4 +17,25 @@ std::string derived_uid(std::string_view seed) {
   return "2.25." + digits;
 }
 
+std::optional<std::string> uid_fault(std::string_view text, LeadingZeros leading_zeros) {
+  if (text.empty()) return "it is empty";
+  if (text.size() > 64) return "it has " + std::to_string(text.size()) + " characters, more than 64";
+  size_t component_start = 0;
+  for (size_t i = 0; i <= text.size(); ++i) {
+    if (i < text.size() && text[i] >= '0' && text[i] <= '9') continue;
+    if (i < text.size() && text[i] != '.') {
+      const unsigned char c = static_cast<unsigned char>(text[i]);
+      return "character " + std::to_string(i + 1) + " is " +
+             (c >= 0x21 && c < 0x7f ? "'" + std::string(1, char(c)) + "'" : "byte " + std::to_string(int(c))) +
+             ", not a digit or a dot";
+    }
+    const size_t length = i - component_start;
+    if (length == 0) return "it has an empty component";
+    if (length > 1 && text[component_start] == '0' && leading_zeros == LeadingZeros::Refused)
+      return "a component starts with a zero";
+    component_start = i + 1;
+  }
+  return std::nullopt;
+}
+
 }  // namespace maxillo

@@ -5,12 +5,15 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>
-#include <optional>
 #include <cstring>
+#include <optional>
+#include <set>
+#include <utility>
 
 #include "archive/archive_sql.h"
 #include "archive/archive_state.h"
 #include "core/atomic_file.h"
+#include "core/log.h"
 #include "core/sha256.h"
 
 namespace maxillo {
@@ -25,7 +28,22 @@ ScannedFile failure(const std::filesystem::path& path, ErrorCode code, std::stri
   return item;
 }
 
-void list_folder(const std::filesystem::path& folder, FileList& list) {
+// The folders already listed, by device and inode, so that a symbolic link back up the tree (or
+// two links to one folder) is listed once and never loops.
+using ListedFolders = std::set<std::pair<dev_t, ino_t>>;
+
+bool first_visit(const std::filesystem::path& folder, ListedFolders& listed) {
+  struct stat info {};
+  if (::stat(folder.c_str(), &info) != 0) return true;  // the listing will say why it cannot be read
+  return listed.emplace(info.st_dev, info.st_ino).second;
+}
+
+// Symbolic links to folders are followed (a series linked into an import folder is imported).
+void list_folder(const std::filesystem::path& folder, FileList& list, ListedFolders& listed) {
+  if (!first_visit(folder, listed)) {
+    log::debug("import: ", folder.string(), " is a folder already listed (a symbolic link): skipped");
+    return;
+  }
   std::error_code error;
   std::filesystem::directory_iterator entries(folder, error);
   if (error) {
@@ -40,9 +58,8 @@ void list_folder(const std::filesystem::path& folder, FileList& list) {
   std::sort(sorted.begin(), sorted.end());
   for (const auto& entry : sorted) {
     std::error_code ignored;
-    if (entry.is_symlink(ignored) && entry.is_directory(ignored)) continue;  // no loops
     if (entry.is_directory(ignored))
-      list_folder(entry.path(), list);
+      list_folder(entry.path(), list, listed);
     else
       list.files.push_back(entry.path());
   }
@@ -69,10 +86,13 @@ std::optional<ScannedFile> refuse_oversized(const std::filesystem::path& path, c
 FileList list_input_files(const std::vector<std::filesystem::path>& paths) {
   FileList list;
   for (const auto& path : paths) {
+    // Per path named: a folder named twice is listed twice, as asked (its files are then
+    // already archived the second time); below each, every folder once.
+    ListedFolders listed;
     std::error_code error;
     auto status = std::filesystem::status(path, error);
     if (std::filesystem::is_directory(status))
-      list_folder(path, list);
+      list_folder(path, list, listed);
     else if (std::filesystem::exists(status) ||
              std::filesystem::is_symlink(std::filesystem::symlink_status(path, error)))
       list.files.push_back(path);

@@ -70,6 +70,10 @@ class Connection {
   // The index's clock in Unix seconds: the server's on PostgreSQL, so that a lease means the
   // same on every node whatever their own clocks say; this machine's for an embedded file.
   virtual int64_t clock_seconds() = 0;
+  // Whether the index this connection reads was replaced since it was opened (an embedded
+  // index file swapped by `archive rebuild-index`), in which case the connection is opened
+  // again on the new one. A server's database is never swapped under a connection.
+  virtual bool reopen_if_moved() { return false; }
 };
 
 // A prepared statement, reset and re-bound for each use.

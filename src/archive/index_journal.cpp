@@ -6,6 +6,8 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/log.h"
+#include "core/utc_time.h"
 
 namespace maxillo {
 namespace {
@@ -72,15 +74,84 @@ std::filesystem::path IndexJournal::path_of(int64_t sequence) const {
   return folder_ / padded(sequence / kEntriesPerFolder, 8) / (padded(sequence, 12) + ".json");
 }
 
+std::filesystem::path IndexJournal::pending_path_of(int64_t sequence) const {
+  return path_of(sequence).replace_extension(".pending");
+}
+
 bool IndexJournal::has(int64_t sequence) const {
   std::error_code ignored;
   return std::filesystem::exists(path_of(sequence), ignored);
 }
 
-void IndexJournal::write(const JournalEntry& entry) const {
-  auto path = path_of(entry.sequence);
+bool IndexJournal::has_pending(int64_t sequence) const {
+  std::error_code ignored;
+  return std::filesystem::exists(pending_path_of(sequence), ignored);
+}
+
+void IndexJournal::write_pending(const JournalEntry& entry) const {
+  const auto committed = path_of(entry.sequence);
+  if (has(entry.sequence))
+    throw Error(ErrorCode::kIndexDamaged, committed.string(),
+                "the journal already holds committed entry " + std::to_string(entry.sequence) +
+                    ", which the index does not have: the index is behind its journal (restored from an older "
+                    "copy, or it lost a commit); nothing was written. Rebuild it with `maxillo archive rebuild-index`");
+  const auto pending = pending_path_of(entry.sequence);
+  if (has_pending(entry.sequence)) set_aside_aborted(entry.sequence);
+  create_folders_durably(pending.parent_path());
+  write_file_atomically(pending, journal_entry_text(entry), Durability::Flushed);
+}
+
+void IndexJournal::set_aside_aborted(int64_t sequence) const {
+  const auto aborted = folder_ / "aborted";
+  create_folders_durably(aborted);
+  const std::string stem = padded(sequence, 12) + "-" + utc_stamp();
+  for (int copy = 0;; ++copy) {
+    const auto kept = aborted / (stem + (copy ? "-" + std::to_string(copy) : "") + ".pending");
+    if (!rename_without_replacing(pending_path_of(sequence), kept)) continue;  // never over another
+    sync_folder(aborted);
+    log::warning("journal entry ", sequence, " was left by a transaction that stopped before its commit; kept as ",
+                 kept.string());
+    return;
+  }
+}
+
+void IndexJournal::mark_committed(int64_t sequence) const {
+  try {
+    if (rename_without_replacing(pending_path_of(sequence), path_of(sequence))) return;
+  } catch (const Error&) {
+    if (has(sequence) && !has_pending(sequence)) return;  // marked by another process meanwhile
+    throw;
+  }
+  throw Error(ErrorCode::kIndexDamaged, path_of(sequence).string(),
+              "a committed journal entry of this number already exists beside the pending one");
+}
+
+bool IndexJournal::settle(int64_t committed_up_to) const {
+  if (committed_up_to <= 0 || !has_pending(committed_up_to)) return true;
+  try {
+    mark_committed(committed_up_to);
+    return true;
+  } catch (const Error& e) {
+    log::debug("journal entry ", committed_up_to, " left pending: ", e.reason());
+    return false;
+  }
+}
+
+void IndexJournal::write_committed(const JournalEntry& entry) const {
+  const auto path = path_of(entry.sequence);
+  const auto text = journal_entry_text(entry);
+  if (has(entry.sequence)) {
+    if (journal_entry_text(read(entry.sequence)) == text) return;
+    throw Error(ErrorCode::kConflict, path.string(), "holds another journal entry of this number; it is kept");
+  }
   create_folders_durably(path.parent_path());
-  write_file_atomically(path, journal_entry_text(entry), Durability::Flushed);
+  const auto temporary = temporary_sibling(path);
+  write_file_atomically(temporary, text, Durability::Flushed);
+  if (!rename_without_replacing(temporary, path)) {
+    std::filesystem::remove(temporary);
+    throw Error(ErrorCode::kConflict, path.string(), "was written by another process meanwhile; it is kept");
+  }
+  sync_folder(path.parent_path());
 }
 
 JournalEntry IndexJournal::read(int64_t sequence) const {

@@ -6,15 +6,21 @@
 //
 //   OBJECTS/journal/00000000/000000000001.json   entry 1 (a folder per 10,000 entries)
 //
-// An entry is written (temp file, fsync, rename, fsync of the folder) inside the index
-// transaction it describes, after BEGIN IMMEDIATE and before COMMIT, so:
+// An entry is written in two steps around the index transaction it describes:
+// - after BEGIN IMMEDIATE (the write lock) and before COMMIT, durably as a *pending* entry
+//   (NNN.pending: temp file, fsync, rename, fsync of the folder);
+// - after COMMIT, marked committed by renaming it to NNN.json.
+// So:
 // - every committed transaction has its entry on stable storage;
 // - entries are numbered in commit order by a counter kept in the index (index_state), which
 //   the write lock serialises;
-// - a transaction that dies between writing its entry and committing leaves an entry numbered
-//   one past the index's counter; the next transaction reuses that number and its rename
-//   replaces the stale entry. Hence entries 1..N (N = the index's counter) are exactly the
-//   committed history, and an entry N+2 proves the index is behind its journal.
+// - a committed entry (.json) is never written over: entries 1..N (N = the index's counter) are
+//   the committed history, and a committed entry N+1 proves the index is behind its journal
+//   (restored from an older copy, or lost its last commit);
+// - a pending entry numbered N+1 is a transaction that died before its commit: the next writer
+//   sets it aside under journal/aborted/ (kept, never deleted) and writes its own;
+// - a pending entry numbered N or below is a transaction that died between COMMIT and the mark:
+//   the index proves it committed, so the next writer or the next open marks it (`settle`).
 //
 // Each row is the whole row after the change, so replaying entries in order (an upsert per
 // row) reproduces the index table for table. Rows are JSON objects {column: value}; values are
@@ -51,13 +57,32 @@ class IndexJournal {
   // `folder` is OBJECTS/journal; it is created on the first write.
   explicit IndexJournal(std::filesystem::path folder);
 
+  // A committed entry's file (NNN.json) and a pending one's (NNN.pending).
   std::filesystem::path path_of(int64_t sequence) const;
+  std::filesystem::path pending_path_of(int64_t sequence) const;
+  // Whether entry `sequence` is committed.
   bool has(int64_t sequence) const;
-  // Durable before it returns (see above). Replaces a stale entry of the same number.
-  void write(const JournalEntry& entry) const;
+  bool has_pending(int64_t sequence) const;
+
+  // Under the index's write lock, before COMMIT; durable before it returns. Never replaces an
+  // entry: a committed entry of this number means the index is behind its journal (throws
+  // Error(kIndexDamaged)); a pending one was left by a transaction that died before its commit
+  // and is moved to journal/aborted/ first.
+  void write_pending(const JournalEntry& entry) const;
+  // After COMMIT: the pending entry becomes committed. Another process may have done it
+  // already (`settle`), which is fine.
+  void mark_committed(int64_t sequence) const;
+  // Marks entry `committed_up_to` committed when it is still pending (its writer died between
+  // COMMIT and the mark; the index's counter proves the commit). False when it could not be
+  // marked (a read-only archive): readers then do without it.
+  bool settle(int64_t committed_up_to) const;
+  // A committed entry copied from another journal (archive migrate): written when absent,
+  // left when the same entry is there, refused (Error(kConflict)) when another one is.
+  void write_committed(const JournalEntry& entry) const;
+
   // Throws Error(kIndexDamaged) when the entry is unreadable or not an entry.
   JournalEntry read(int64_t sequence) const;
-  // Every entry number present, ascending.
+  // Every committed entry number present, ascending.
   std::vector<int64_t> sequences() const;
   // True when the folder holds at least one entry (cheap: stops at the first).
   bool empty() const;
@@ -65,6 +90,9 @@ class IndexJournal {
   const std::filesystem::path& folder() const { return folder_; }
 
  private:
+  // A pending entry of a transaction that never committed, moved under journal/aborted/.
+  void set_aside_aborted(int64_t sequence) const;
+
   std::filesystem::path folder_;
 };
 

@@ -3,7 +3,7 @@
 #include "archive/archive_health.h"
 #include "archive/archive_state.h"
 #include "archive/dicom_header.h"
-#include "archive/import_batch.h"
+#include "archive/object_adoption.h"
 #include "archive/journal_replay.h"
 #include "archive/journalled_transaction.h"
 #include "core/atomic_file.h"
@@ -13,8 +13,6 @@
 
 namespace maxillo {
 namespace {
-
-constexpr size_t kAdoptionBatch = 500;
 
 void remove_index_files(const std::filesystem::path& index) {
   std::error_code ignored;
@@ -73,8 +71,8 @@ void check_instances(db::Connection& db, const ObjectStore& objects, ProgressDis
   progress.finish();
 }
 
-// DICOM objects that no journal entry named are indexed from their own headers, through the
-// import's own writer (so they are journalled like any import); other unnamed files are listed.
+// DICOM objects that no journal entry named are indexed from their own headers (object_adoption.h);
+// other unnamed files are listed.
 void adopt_unindexed_objects(db::Connection& db, ObjectStore& objects, const IndexJournal& journal,
                              RebuildReport& report) {
   std::vector<std::filesystem::path> candidates;
@@ -86,34 +84,9 @@ void adopt_unindexed_objects(db::Connection& db, ObjectStore& objects, const Ind
       indexed.reset();
     });
   }
-  std::sort(candidates.begin(), candidates.end());  // the same store gives the same ids
-  BatchWriter writer(db, objects, journal);
-  ImportReport imported;
-  for (const auto& path : candidates) {
-    ScannedFile file;
-    file.path = path;
-    try {
-      file.bytes = read_file(path);
-      file.sha256 = sha256_hex(file.bytes);
-      if (file.sha256 != sha256_named_by(path)) throw Error(ErrorCode::kArchiveCorrupt, path.string(), "damaged");
-      file.size = file.bytes.size();
-      file.header = parse_instance_header(file.bytes, path);
-    } catch (const Error&) {
-      report.unexplained.push_back(path);
-      continue;
-    }
-    std::string reason;
-    if (writer.add(std::move(file), reason) == ImportOutcome::Imported)
-      ++report.dicom_adopted;
-    else
-      report.unexplained.push_back(path);
-    if (writer.pending() >= kAdoptionBatch) writer.commit(imported, {});
-  }
-  writer.commit(imported, {});
-  for (const auto& problem : imported.problems) {
-    report.unexplained.push_back(problem.path);
-    --report.dicom_adopted;
-  }
+  auto adoption = adopt_objects(db, objects, journal, std::move(candidates), {});
+  report.dicom_adopted += adoption.adopted.size();
+  for (auto& path : adoption.not_adopted) report.unexplained.push_back(std::move(path));
 }
 
 void count_rows(db::Connection& db, RebuildReport& report) {
@@ -199,7 +172,7 @@ RebuildReport Archive::rebuild_index(const std::filesystem::path& folder, const 
   {
     ObjectStore objects(objects_folder(folder));
     sqlite::Database db(rebuilt, sqlite::OpenKind::Create);
-    configure_connection(db);
+    db.use_archive_settings();
     rebuild_into(db, objects, journal, options.progress, report);
     require_intact_index(db);
     db.execute("PRAGMA journal_mode = DELETE");  // folds the WAL into the file before it moves

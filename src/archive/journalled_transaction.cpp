@@ -1,6 +1,7 @@
 #include "archive/journalled_transaction.h"
 
 #include "archive/archive_state.h"
+#include "core/log.h"
 #include "core/utf8.h"
 #include "core/version.h"
 
@@ -60,19 +61,32 @@ void JournalledTransaction::all_rows_of(std::string_view table) {
 }
 
 void JournalledTransaction::commit() {
-  if (!entry_.rows.empty()) {
-    // Under the write lock taken by BEGIN IMMEDIATE: the counter gives commit order.
-    db::Statement next(db_,
-                       "UPDATE index_state SET journal_sequence = journal_sequence + 1 WHERE id = 1 "
-                       "RETURNING journal_sequence");
-    if (!next.step()) throw Error(ErrorCode::kIndexDamaged, db_.name(), "index_state row missing");
-    entry_.sequence = next.integer(0);
-    next.run();
-    entry_.at = utc_now();
-    entry_.program_version = kVersion;
-    journal_.write(entry_);
+  if (entry_.rows.empty()) {
+    transaction_.commit();
+    return;
   }
+  // Under the write lock taken by BEGIN IMMEDIATE: the counter gives commit order.
+  db::Statement next(db_,
+                     "UPDATE index_state SET journal_sequence = journal_sequence + 1 WHERE id = 1 "
+                     "RETURNING journal_sequence");
+  if (!next.step()) throw Error(ErrorCode::kIndexDamaged, db_.name(), "index_state row missing");
+  entry_.sequence = next.integer(0);
+  next.run();
+  entry_.at = utc_now();
+  entry_.program_version = kVersion;
+  // The entry before ours committed (the counter says so) even if its writer died before
+  // marking it: mark it, so that the committed entries stay 1..N without a gap.
+  if (!journal_.settle(entry_.sequence - 1))
+    throw Error(ErrorCode::kWriteFailed, journal_.pending_path_of(entry_.sequence - 1).string(),
+                "cannot mark this committed journal entry; nothing was written");
+  journal_.write_pending(entry_);
   transaction_.commit();
+  try {
+    journal_.mark_committed(entry_.sequence);
+  } catch (const Error& e) {
+    // Committed all the same: the next writer or the next open marks it (IndexJournal::settle).
+    log::warning("journal entry ", entry_.sequence, " committed but not yet marked: ", e.reason());
+  }
 }
 
 }  // namespace maxillo

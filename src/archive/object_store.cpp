@@ -112,7 +112,12 @@ void ObjectStore::write_new(const std::filesystem::path& path, std::span<const s
   {
     Descriptor file{::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0444)};
     if (file.fd < 0) fail(temporary, errno);
-    write_all(file.fd, bytes, temporary);
+    try {
+      write_all(file.fd, bytes, path);  // the error names the object, not its temporary name
+    } catch (const Error&) {
+      ::unlink(temporary.c_str());  // a disk that filled up leaves no partial file behind (issue 29)
+      throw;
+    }
   }
   if (::rename(temporary.c_str(), path.c_str()) != 0) {
     int error_number = errno;

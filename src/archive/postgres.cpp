@@ -166,6 +166,11 @@ Connection::Connection(const std::string& uri) : name_(without_password(uri)) {
     const std::string reason = connection_ ? without_trailing_space(PQerrorMessage(connection_)) : "out of memory";
     PQfinish(connection_);
     connection_ = nullptr;
+    // The server answered and refused (a wrong password, an unknown role or database, no
+    // pg_hba.conf entry): libpq reports its FATAL message. That is not an unreachable server.
+    if (reason.find("FATAL:") != std::string::npos)
+      throw Error(ErrorCode::kArchiveLoginRefused, name_,
+                  "the archive's index server refused the connection: " + reason);
     throw Error(ErrorCode::kArchiveUnreachable, name_, "cannot connect to the archive's index server: " + reason);
   }
   name_ = server_name(connection_);

@@ -3,6 +3,7 @@
 #include <sqlite3.h>
 
 #include <chrono>
+#include <cstdio>
 #include <thread>
 
 #include "core/error.h"
@@ -20,6 +21,8 @@ ErrorCode code_for(int status) {
     case SQLITE_LOCKED: return ErrorCode::kArchiveBusy;
     case SQLITE_CORRUPT:
     case SQLITE_NOTADB: return ErrorCode::kIndexDamaged;
+    case SQLITE_FULL: return ErrorCode::kWriteFailed;      // the disk is full: a write failed, nothing is damaged
+    case SQLITE_READONLY: return ErrorCode::kWriteFailed;  // a read-only archive: reading works, writing cannot
     default: return ErrorCode::kDatabase;
   }
 }
@@ -36,25 +39,79 @@ int open_flags(OpenKind kind) {
   switch (kind) {
     case OpenKind::Create: return SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_NOMUTEX;
     case OpenKind::Existing: return SQLITE_OPEN_READWRITE | SQLITE_OPEN_NOMUTEX;
-    case OpenKind::ReadOnly: return SQLITE_OPEN_READONLY | SQLITE_OPEN_NOMUTEX;
+    case OpenKind::ReadOnly:
+    case OpenKind::ReadOnlyUntouched: return SQLITE_OPEN_READONLY | SQLITE_OPEN_NOMUTEX;
   }
   return 0;
 }
+
+// "file:PATH?immutable=1" with the path's URI-reserved characters escaped (RFC 3986).
+std::string immutable_uri(const std::filesystem::path& file) {
+  std::string uri = "file:";
+  for (unsigned char c : file.string()) {
+    if (c == '%' || c == '?' || c == '#' || c < 0x20 || c >= 0x7f) {
+      char escaped[4];
+      std::snprintf(escaped, sizeof escaped, "%%%02X", c);
+      uri += escaped;
+    } else {
+      uri += char(c);
+    }
+  }
+  return uri + "?immutable=1";
+}
+
+bool has_write_ahead_log(const std::filesystem::path& file) {
+  std::error_code error;
+  const auto wal = std::filesystem::path(file.string() + "-wal");
+  return std::filesystem::exists(wal, error) && std::filesystem::file_size(wal, error) > 0;
+}
+
 }  // namespace
 
-Database::Database(const std::filesystem::path& file, OpenKind kind) : file_(file), name_(file.string()) {
-  int status = sqlite3_open_v2(file.c_str(), &db_, open_flags(kind), nullptr);
+Database::Database(const std::filesystem::path& file, OpenKind kind) : file_(file), name_(file.string()), kind_(kind) {
+  open();
+}
+
+Database::~Database() { sqlite3_close_v2(db_); }
+
+void Database::open() {
+  const bool immutable = kind_ == OpenKind::ReadOnlyUntouched && !has_write_ahead_log(file_);
+  const std::string name = immutable ? immutable_uri(file_) : file_.string();
+  int status = sqlite3_open_v2(name.c_str(), &db_, open_flags(kind_) | (immutable ? SQLITE_OPEN_URI : 0), nullptr);
   if (status != SQLITE_OK) {
     std::string reason = db_ ? sqlite3_errmsg(db_) : sqlite3_errstr(status);
     sqlite3_close(db_);
     db_ = nullptr;
-    throw Error(code_for(status), file.string(), with_recovery_hint(status, "cannot open: " + reason));
+    throw Error(code_for(status), file_.string(), with_recovery_hint(status, "cannot open: " + reason));
   }
   sqlite3_busy_timeout(db_, kBusyTimeoutMs);
   sqlite3_extended_result_codes(db_, 1);
+  if (archive_settings_) use_archive_settings();
 }
 
-Database::~Database() { sqlite3_close_v2(db_); }
+void Database::use_archive_settings() {
+  // WAL: readers never block the writer; synchronous=NORMAL in WAL keeps the index consistent
+  // after a crash (a lost last commit only leaves orphan objects, which verify --repair removes).
+  // Setting the journal mode writes the file: a read-only connection keeps the file's own.
+  if (kind_ != OpenKind::ReadOnly && kind_ != OpenKind::ReadOnlyUntouched) {
+    execute("PRAGMA journal_mode = WAL");
+    execute("PRAGMA synchronous = NORMAL");
+  }
+  execute("PRAGMA foreign_keys = ON");
+  // Checks each b-tree page as it is read, so damage is noticed where it is met.
+  execute("PRAGMA cell_size_check = ON");
+  archive_settings_ = true;
+}
+
+bool Database::reopen_if_moved() {
+  int moved = 0;
+  if (sqlite3_file_control(db_, "main", SQLITE_FCNTL_HAS_MOVED, &moved) != SQLITE_OK || !moved) return false;
+  sqlite3_close_v2(db_);
+  db_ = nullptr;
+  if (kind_ == OpenKind::Create) kind_ = OpenKind::Existing;  // never an empty index where one vanished
+  open();
+  return true;
+}
 
 void Database::fail(int status, std::string_view what) const {
   throw Error(code_for(status), name_, with_recovery_hint(status, std::string(what) + ": " + sqlite3_errmsg(db_)));

@@ -15,8 +15,12 @@ struct sqlite3;
 namespace maxillo::sqlite {
 
 // How a connection opens its file: Create makes a missing file; Existing refuses one (a lost
-// index must never be silently re-created, see archive_health.h).
-enum class OpenKind { Create, Existing, ReadOnly };
+// index must never be silently re-created, see archive_health.h). ReadOnlyUntouched reads a
+// file that nothing writes meanwhile (the caller holds its archive's store lock exclusively)
+// and leaves nothing beside it: a plain read-only connection to a WAL index creates its -wal
+// and -shm files, which `archive migrate` left in the source it promises not to change. With no
+// WAL beside the file, SQLite is told the file is immutable; with one, its files are used.
+enum class OpenKind { Create, Existing, ReadOnly, ReadOnlyUntouched };
 
 class Database final : public db::Connection {
  public:
@@ -37,13 +41,25 @@ class Database final : public db::Connection {
   void set_schema_version(int version) override;
   int64_t clock_seconds() override;
 
+  // The settings every connection to an archive index uses: WAL, synchronous=NORMAL, foreign
+  // keys, page checks. Kept when the connection is opened again.
+  void use_archive_settings();
+  // The file at this path was replaced (`archive rebuild-index` renames a new index in): this
+  // connection is opened again on the file now there. SQLite's SQLITE_FCNTL_HAS_MOVED compares
+  // the open file's inode with the path's.
+  bool reopen_if_moved() override;
+
   const std::filesystem::path& file() const { return file_; }
   sqlite3* handle() const { return db_; }
   [[noreturn]] void fail(int status, std::string_view what) const;
 
  private:
+  void open();
+
   std::filesystem::path file_;
   std::string name_;
+  OpenKind kind_;
+  bool archive_settings_ = false;
   sqlite3* db_ = nullptr;
 };
 

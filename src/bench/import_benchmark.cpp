@@ -93,6 +93,14 @@ Json run_import_benchmark(const ImportBenchOptions& options) {
   const auto workdir =
       options.workdir.empty() ? std::filesystem::temp_directory_path() / "maxillo-bench" : options.workdir;
   std::filesystem::remove_all(workdir);
+  // Removed however the run ends (a refused login, a failed import), not only when it succeeds.
+  struct RemovedOnExit {
+    std::filesystem::path folder;
+    ~RemovedOnExit() {
+      std::error_code ignored;
+      std::filesystem::remove_all(folder, ignored);
+    }
+  } removed_on_exit{workdir};
   std::vector<std::filesystem::path> inputs;
   const double generate_seconds = seconds_of([&] { inputs = generate_files(workdir / "input", options.count); });
 
@@ -103,7 +111,6 @@ Json run_import_benchmark(const ImportBenchOptions& options) {
     first.push_back(timed_import(archive.address(), inputs, options.workers, size_t(options.count), 0));
     again.push_back(timed_import(archive.address(), inputs, options.workers, 0, size_t(options.count)));
   }
-  std::filesystem::remove_all(workdir);
   const double first_rate = median(first), again_rate = median(again);
   return {{"count", options.count},
           {"runs", options.runs},

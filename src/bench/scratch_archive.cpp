@@ -12,9 +12,9 @@ ScratchArchive::ScratchArchive(const std::string& server, const std::filesystem:
     address_ = folder_;
     return;
   }
-  std::filesystem::create_directories(folder_);
   database_ = "maxillo_bench_" + std::to_string(::getpid()) + "_" + std::to_string(run);
-  run_on_server(server_, "CREATE DATABASE " + database_);
+  run_on_server(server_, "CREATE DATABASE " + database_);  // first: a refused login leaves no folder
+  std::filesystem::create_directories(folder_);
   address_ = server_ + database_ + "?objects=" + folder_.string();
 }
 

@@ -38,7 +38,10 @@ int run(const NightlyArguments& a, const GlobalOptions& global) {
   }
   std::cout << report.count(nightly::NightlyOutcome::kValidated) << " validated, "
             << report.count(nightly::NightlyOutcome::kUpToDate) << " up to date, "
-            << report.count(nightly::NightlyOutcome::kFailed) << " failed\n";
+            << report.count(nightly::NightlyOutcome::kFailed) << " failed";
+  const int left = report.count(nightly::NightlyOutcome::kNotValidated);
+  if (left) std::cout << ", " << left << " not validated";
+  std::cout << "\n";
   if (options.claim && !options.summary_only)
     std::cout << "worker done: every case is finished; `nightly --summary-only` writes the summary\n";
   else if (report.summary_written)
@@ -47,7 +50,9 @@ int run(const NightlyArguments& a, const GlobalOptions& global) {
     std::cout << "summary up to date: " << report.summary_pdf.string() << "\n";
   else
     std::cout << "no validated case: no summary\n";
-  return report.count(nightly::NightlyOutcome::kFailed) ? exit_code_for(ErrorCode::kBatchPartlyFailed) : 0;
+  // A summary that lists cases left unvalidated (a worker cancelled before the queue was done)
+  // is a batch not finished either: exit 1, so a scheduler's job record says so.
+  return report.count(nightly::NightlyOutcome::kFailed) || left ? exit_code_for(ErrorCode::kBatchPartlyFailed) : 0;
 }
 
 }  // namespace

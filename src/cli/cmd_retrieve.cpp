@@ -48,7 +48,13 @@ void run_retrieve(const RetrieveArguments& a, CommandContext& ctx) {
     for (const auto& problem : report.imported.problems)
       std::cerr << problem.path.string() << ": " << problem.reason << "\n";
     all_ok &= report.imported.all_ok() && report.failed_by_peer == 0 && report.received > 0;
-    if (report.received == 0) std::cerr << study << ": the peer sent nothing (no such study there?)\n";
+    if (report.received == 0 && report.sent_by_peer > 0 && options.move_port != 0)
+      std::cerr << study << ": the peer says it sent " << report.sent_by_peer << " instances, but none reached "
+                << options.calling_ae << " on port " << options.move_port
+                << ": the peer knows our AE title at another address or port; configure it with this machine's "
+                   "address and the --move-port\n";
+    else if (report.received == 0)
+      std::cerr << study << ": the peer sent nothing (no such study there?)\n";
     results.push_back({{"study", study},
                        {"received", report.received},
                        {"failed_at_peer", report.failed_by_peer},

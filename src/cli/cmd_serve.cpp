@@ -105,10 +105,11 @@ void run_serve(const ServeArguments& a, CommandContext& ctx) {
   net::StorageServer server(options);
   {
     StopOnSignal stop_on_signal(server);
-    if (!ctx.global.quiet)
-      std::cerr << "serve: " << options.ae_title << " listening on port " << options.port
-                << (options.tls.enabled ? " (DICOM TLS)" : "") << "\n";
-    server.run();
+    server.run([&] {
+      if (!ctx.global.quiet)
+        std::cerr << "serve: " << options.ae_title << " listening on port " << options.port
+                  << (options.tls.enabled ? " (DICOM TLS)" : "") << "\n";
+    });
   }
   const auto counts = server.counts();
   if (ctx.global.json) {

@@ -30,6 +30,8 @@ void print_objects(const Archive& archive, const VerifyReport& report, bool repa
     std::cerr << archive.object_path(sha).string() << ": corrupt (content no longer matches its SHA-256; "
               << "importing the original file again restores it)" << owners(sha) << "\n";
   const bool moved = repair && report.repair_refused.empty();
+  for (const auto& path : report.adopted)
+    std::cerr << path.string() << ": a DICOM object an interrupted import left, adopted (indexed from its header)\n";
   for (const auto& path : report.orphans)
     std::cerr << path.string() << (moved ? ": orphan object, moved to quarantine\n" : ": orphan object\n");
   for (const auto& path : report.temporaries)
@@ -40,19 +42,29 @@ void print_objects(const Archive& archive, const VerifyReport& report, bool repa
 
 void print_report(const Archive& archive, const VerifyReport& report, bool repair, bool ok) {
   if (report.index_check != "ok") std::cerr << "index: " << report.index_check << "\n";
+  if (!report.journal_check_failure.empty())
+    std::cerr << "index: could not be compared with its journal: " << report.journal_check_failure << "\n";
   for (const auto& difference : report.journal_differences) std::cerr << "index: " << difference << "\n";
   print_objects(archive, report, repair);
   if (!report.repair_refused.empty()) std::cerr << "repair refused, nothing changed: " << report.repair_refused << "\n";
-  std::cout << "index " << (report.index_intact() ? "intact" : "DAMAGED") << "; " << report.objects_checked
+  const char* index_state = !report.index_intact()                  ? "DAMAGED"
+                            : !report.journal_check_failure.empty() ? "NOT CHECKED against its journal"
+                                                                    : "intact";
+  std::cout << "index " << index_state << "; " << report.objects_checked
             << " objects checked: " << report.missing.size() << " missing, " << report.corrupt.size() << " corrupt, "
             << report.orphans.size() << " orphans, " << report.temporaries.size() << " temporary files";
-  if (repair) std::cout << "; " << report.quarantined << " quarantined, " << report.restored.size() << " restored";
+  if (repair)
+    std::cout << "; " << report.adopted.size() << " adopted, " << report.quarantined << " quarantined, "
+              << report.restored.size() << " restored";
   if (repair && report.within_grace > 0)
     std::cout << "; " << report.within_grace << " left in place, younger than the grace period (--grace)";
   std::cout << (ok ? " - consistent\n" : " - INCONSISTENT\n");
   if (!repair && (!report.orphans.empty() || !report.temporaries.empty()))
-    std::cout
-        << "`maxillo verify --repair` moves orphans and temporary files into the quarantine (nothing is deleted)\n";
+    std::cout << (report.leftovers_are_few() ? "the orphans and temporary files are what interrupted writes leave "
+                                               "(harmless); "
+                                             : "")
+              << "`maxillo verify --repair` adopts orphan DICOM objects (as importing them again would) and moves "
+                 "the rest into the quarantine (nothing is deleted)\n";
 }
 
 void run_verify(const VerifyArguments& args, CommandContext& ctx) {
@@ -76,7 +88,9 @@ void run_verify(const VerifyArguments& args, CommandContext& ctx) {
   } else {
     print_report(archive, report, args.repair, ok);
   }
-  ErrorCode failure = report.index_intact() ? ErrorCode::kArchiveCorrupt : ErrorCode::kIndexDamaged;
+  ErrorCode failure = !report.index_intact()                  ? ErrorCode::kIndexDamaged
+                      : !report.journal_check_failure.empty() ? ErrorCode::kDatabase
+                                                              : ErrorCode::kArchiveCorrupt;
   ctx.exit_code = ok ? 0 : exit_code_for(failure);
 }
 

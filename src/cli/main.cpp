@@ -42,6 +42,16 @@ void refuse_non_finite_numbers(CLI::App& app) {
     refuse_non_finite_numbers(*subcommand);
 }
 
+// An empty value names no file, folder, series or patient: `--out ''` ended in an internal error
+// (issue 29). Every option that takes a value refuses an empty one, as a usage error.
+void refuse_empty_values(CLI::App& app) {
+  static const CLI::Validator non_empty([](std::string& text) { return text.empty() ? "must not be empty" : ""; }, "",
+                                        "");
+  for (CLI::Option* option : app.get_options())
+    if (option->get_type_size_min() > 0) option->check(non_empty);
+  for (CLI::App* subcommand : app.get_subcommands([](CLI::App*) { return true; })) refuse_empty_values(*subcommand);
+}
+
 int run(int argc, char** argv) {
   CLI::App app{"maxillo: cranio-maxillofacial planning, simulation and reports", "maxillo"};
   app.require_subcommand(1);
@@ -63,6 +73,7 @@ int run(int argc, char** argv) {
     command.attach(*sub, context);
   }
   refuse_non_finite_numbers(app);
+  refuse_empty_values(app);
 
   try {
     app.parse(argc, argv);

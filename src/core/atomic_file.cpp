@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <cerrno>
+#include <cstdio>  // renameat2, RENAME_NOREPLACE
 #include <cstring>
 #include <random>
 
@@ -101,6 +102,21 @@ void write_file_atomically(const std::filesystem::path& path, std::span<const st
 }
 
 void sync_folder(const std::filesystem::path& folder) { fsync_folder(folder); }
+
+bool rename_without_replacing(const std::filesystem::path& from, const std::filesystem::path& to) {
+  if (::renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_NOREPLACE) == 0) return true;
+  if (errno == EEXIST) return false;
+  if (errno != EINVAL && errno != ENOSYS && errno != ENOTSUP)
+    throw Error(ErrorCode::kWriteFailed, from.string(), std::string("cannot rename: ") + std::strerror(errno));
+  // A file system without RENAME_NOREPLACE (some network file systems): a hard link is
+  // refused for an existing name too, and the second name is then removed.
+  if (::link(from.c_str(), to.c_str()) != 0) {
+    if (errno == EEXIST) return false;
+    throw Error(ErrorCode::kWriteFailed, from.string(), std::string("cannot rename: ") + std::strerror(errno));
+  }
+  ::unlink(from.c_str());
+  return true;
+}
 
 void create_folders_durably(const std::filesystem::path& folder) {
   if (folder.empty() || std::filesystem::is_directory(folder)) return;

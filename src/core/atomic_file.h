@@ -29,6 +29,11 @@ void create_folders_durably(const std::filesystem::path& folder);
 // fsync(2) of a folder: its entries (created, renamed, removed files) reach stable storage.
 void sync_folder(const std::filesystem::path& folder);
 
+// rename(2) that never replaces: false (nothing changed) when `to` exists. renameat2's
+// RENAME_NOREPLACE where the file system has it, else link(2) then unlink(2), which refuse an
+// existing name the same way. Throws Error(WriteFailed) on any other failure.
+bool rename_without_replacing(const std::filesystem::path& from, const std::filesystem::path& to);
+
 // A unique name beside `path` for a temporary file (same folder, so rename is atomic).
 std::filesystem::path temporary_sibling(const std::filesystem::path& path);
 

@@ -3,8 +3,10 @@
 #include <dcmtk/config/osconfig.h>
 #include <dcmtk/dcmdata/dcdeftag.h>
 #include <dcmtk/dcmdata/dcuid.h>
+#include <dcmtk/dcmnet/diutil.h>
 
 #include <chrono>
+#include <cstdio>
 #include <optional>
 
 #include "archive/instance_source.h"
@@ -85,11 +87,13 @@ void check_outcome(const OFCondition& sent, OFList<RetrieveResponse*>& responses
   for (RetrieveResponse* response : responses) {
     final_status = response->m_status;
     report.failed_by_peer = response->m_numberOfFailedSubops;
+    report.sent_by_peer = response->m_numberOfCompletedSubops;
     delete response;
   }
   if (sent.bad()) throw Error(ErrorCode::kNetwork, to_string(peer), service + " failed: " + sent.text());
   if (final_status != STATUS_Success && (final_status & 0xf000) != 0xb000)
-    throw Error(ErrorCode::kNetwork, to_string(peer), service + " ended with status " + std::to_string(final_status));
+    throw Error(ErrorCode::kNetwork, to_string(peer),
+                service + " ended with status " + status_text(service, final_status));
 }
 
 // Asks the peer for the study and waits for its final response.
@@ -123,6 +127,13 @@ void request_study(const DicomPeer& peer, const std::string& study_uid, const st
 }
 
 }  // namespace
+
+std::string status_text(const std::string& service, uint16_t status) {
+  char code[8];
+  std::snprintf(code, sizeof code, "0x%04X", unsigned(status));
+  const char* meaning = service == "C-MOVE" ? DU_cmoveStatusString(status) : DU_cgetStatusString(status);
+  return std::string(code) + " (" + meaning + ")";
+}
 
 RetrieveReport retrieve_study(const DicomPeer& peer, const std::string& study_uid, Archive& archive,
                               const RetrieveOptions& options) {

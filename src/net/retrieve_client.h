@@ -26,9 +26,14 @@ struct RetrieveOptions {
   ProgressDisplay progress = ProgressDisplay::Auto;
 };
 
+// A retrieve's DIMSE status as a person reads it: "0xC000 (Failed: UnableToProcess)" (service:
+// "C-GET" or "C-MOVE", whose statuses DCMTK names).
+std::string status_text(const std::string& service, uint16_t status);
+
 struct RetrieveReport {
   size_t received = 0;        // instances the peer sent
   size_t failed_by_peer = 0;  // sub-operations the peer reported failed
+  size_t sent_by_peer = 0;    // sub-operations the peer reported completed (instances it says it sent)
   ImportReport imported;      // what the archive made of the received instances
   double seconds = 0;
 };

@@ -10,7 +10,13 @@
 #include <chrono>
 #include <optional>
 #include <thread>
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
 #include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 
 #include "archive/archive.h"
 #include "archive/archive_location.h"
@@ -20,6 +26,7 @@
 #include "net/no_nagle_delay.h"
 #include "net/group_commit.h"
 #include "net/pending_studies.h"
+#include "net/receive_failure_log.h"
 #include "net/stable_studies.h"
 #include "net/stable_study_action.h"
 #include "net/storage_contexts.h"
@@ -49,10 +56,12 @@ namespace {
 struct StoreAnswer {
   Uint16 status = STATUS_Success;
   std::string reason;
+  bool already_archived = false;  // success: the same bytes were archived before
 };
 
 StoreAnswer answer_for(const GroupCommit::Result& result) {
-  if (result.outcome == ImportOutcome::Imported || result.outcome == ImportOutcome::AlreadyArchived) return {};
+  if (result.outcome == ImportOutcome::Imported) return {};
+  if (result.outcome == ImportOutcome::AlreadyArchived) return {STATUS_Success, "", true};
   // Input errors (20-39) and conflicts are the sender's data; anything else is ours.
   const int exit_code = exit_code_for(result.code);
   const bool senders_data = (exit_code >= 20 && exit_code < 40) || result.outcome == ImportOutcome::Conflict;
@@ -82,25 +91,30 @@ class ArchivingSCP : public DcmThreadSCP {
     return OFFalse;
   }
 
-  // Contexts we will refuse are logged with the reason (DCMTK's own log is silenced).
+  // Contexts we will refuse, with the reason (DCMTK's own log is silenced): one line, and the
+  // list at -v. A sender such as storescu proposes a hundred classes it may never use.
   void notifyAssociationRequest(const T_ASC_Parameters& request, DcmSCPActionType& action) override {
     DcmThreadSCP::notifyAssociationRequest(request, action);
-    for (const auto& refusal : refused_contexts(request))
-      log::warning("serve: ", request.DULparams.callingAPTitle, " proposed ", refusal, " (refused)");
+    const auto refusals = refused_contexts(request);
+    if (refusals.empty()) return;
+    log::info("serve: ", request.DULparams.callingAPTitle, " proposed ", refusals.size(),
+              " presentation contexts we do not accept (-v lists them)");
+    for (const auto& refusal : refusals)
+      log::debug("serve: ", request.DULparams.callingAPTitle, " proposed ", refusal, " (refused)");
   }
 
   void notifyAssociationAcknowledge() override {
     ++shared_.associations;
     calling_ae_ = getPeerAETitle().c_str();
     source_label_ = network_source(calling_ae_, getPeerIP().c_str());
-    stored_ = failed_ = 0;
+    stored_ = already_ = failed_ = 0;
     log::info("serve: association from ", calling_ae_, " (", getPeerIP().c_str(), ")");
   }
 
   void notifyAssociationTermination() override {
     if (!calling_ae_.empty())
-      log::info("serve: association from ", calling_ae_, " ended: ", stored_, " instances archived, ", failed_,
-                " refused");
+      log::info("serve: association from ", calling_ae_, " ended: ", stored_, " instances archived, ", already_,
+                " already archived, ", failed_, " refused");
     calling_ae_.clear();
     archive_.reset();
   }
@@ -130,7 +144,7 @@ class ArchivingSCP : public DcmThreadSCP {
       return sendSTOREResponse(context.presentationContextID, request.MessageID, request.AffectedSOPClassUID,
                                request.AffectedSOPInstanceUID, answer.status, &detail);
     }
-    ++stored_;
+    ++(answer.already_archived ? already_ : stored_);
     return sendSTOREResponse(context.presentationContextID, request, STATUS_Success);
   }
 
@@ -174,7 +188,7 @@ class ArchivingSCP : public DcmThreadSCP {
   std::optional<Archive> archive_;  // this association's, to look up studies for the stable-study action
   std::string calling_ae_;
   std::string source_label_;  // each instance's recorded source: dicom://AE@ADDRESS
-  int64_t stored_ = 0, failed_ = 0;
+  int64_t stored_ = 0, already_ = 0, failed_ = 0;
 };
 
 // DcmSCPPool constructs its SCPs without arguments; this pool hands each the shared state.
@@ -228,6 +242,26 @@ void clear_incoming(const std::filesystem::path& incoming) {
   for (const auto& entry : std::filesystem::directory_iterator(incoming)) std::filesystem::remove(entry.path());
 }
 
+// DCMTK binds the port inside its listening loop, with no word before: try the bind here first
+// (with SO_REUSEADDR, as DCMTK does), so that a taken port is an error before anything says
+// "listening". Another process could take it in between; the loop then fails as before.
+void require_port_free(uint16_t port) {
+  const int probe = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+  if (probe < 0) return;
+  const int on = 1;
+  ::setsockopt(probe, SOL_SOCKET, SO_REUSEADDR, &on, sizeof on);
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_addr.s_addr = htonl(INADDR_ANY);
+  address.sin_port = htons(port);
+  const bool bound = ::bind(probe, reinterpret_cast<const sockaddr*>(&address), sizeof address) == 0;
+  const int error_number = errno;
+  ::close(probe);
+  if (!bound)
+    throw Error(ErrorCode::kWriteFailed, "port " + std::to_string(port),
+                std::string("cannot listen: ") + std::strerror(error_number));
+}
+
 }  // namespace
 
 StorageServer::StorageServer(StorageServerOptions options) : shared_(std::make_unique<Shared>()) {
@@ -264,7 +298,8 @@ StorageServer::StorageServer(StorageServerOptions options) : shared_(std::make_u
 
 StorageServer::~StorageServer() = default;
 
-void StorageServer::run() {
+void StorageServer::run(const std::function<void()>& on_listening) {
+  require_port_free(shared_->options.port);
   ArchivingPool pool(*shared_);
   configure(pool.getConfig(), shared_->options);
   if (shared_->tls) pool.getConfig().setTransportLayer(shared_->tls.get());
@@ -290,6 +325,13 @@ void StorageServer::run() {
       for (int tick = 0; tick < 10 && listening; ++tick) std::this_thread::sleep_for(std::chrono::milliseconds(100));
     }
   });
+  // A connection that fails before its association (a failed TLS handshake) is logged and
+  // counted as a refusal, like a refused AE title.
+  const ReceiveFailureLog receive_failures([&](const std::string& reason) {
+    log::warning("serve: a connection failed before its association: ", reason);
+    ++shared_->refused;
+  });
+  if (on_listening) on_listening();
   const OFCondition result = pool.listen();
   listening = false;
   pass_stop_on.join();

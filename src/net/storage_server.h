@@ -24,6 +24,7 @@
 #include <atomic>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -74,8 +75,9 @@ class StorageServer {
   StorageServer(const StorageServer&) = delete;
   StorageServer& operator=(const StorageServer&) = delete;
 
-  // Listens on 0.0.0.0:port until stop(). Error(kWriteFailed) when the port cannot be opened.
-  void run();
+  // Listens on 0.0.0.0:port until stop(). Error(kWriteFailed) when the port cannot be opened,
+  // before `on_listening` is called (so "listening" is never said of a port taken by another).
+  void run(const std::function<void()>& on_listening = {});
   // Stops accepting associations; run() returns once those in flight have ended. Any thread.
   void stop();
   StorageServerCounts counts() const;

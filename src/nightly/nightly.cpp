@@ -21,6 +21,19 @@ std::string text_of(const std::vector<std::byte>& bytes) {
   return std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size());
 }
 
+// The work queue as the summary reads it: what the workers left of each item, and when.
+struct WorkQueueState {
+  std::map<std::string, Archive::WorkRecord> records;  // by item
+  int64_t now = 0;                                     // the index's clock
+};
+
+WorkQueueState read_work_queue(const Archive& archive) {
+  WorkQueueState state;
+  for (auto& record : archive.work_records(kNightlyQueue)) state.records.emplace(record.item, std::move(record));
+  state.now = archive.clock_seconds();
+  return state;
+}
+
 struct EligibleCase {
   int64_t case_id = 0;
   std::string key;  // validation inputs hash
@@ -41,7 +54,7 @@ std::vector<int64_t> shard_cases(const Archive& archive, const NightlyOptions& o
 // Validates the case unless `stored` holds its up-to-date validation; fills `stored` with the
 // validation made.
 NightlyCase process_case(Archive& archive, const EligibleCase& c, const NightlyOptions& options,
-                         std::optional<records::StoredValidation>& stored) {
+                         const WorkQueueState& queue, std::optional<records::StoredValidation>& stored) {
   NightlyCase result;
   result.case_id = c.case_id;
   if (stored) {
@@ -49,8 +62,8 @@ NightlyCase process_case(Archive& archive, const EligibleCase& c, const NightlyO
     return result;
   }
   if (options.summary_only) {
-    result.reason = "not validated yet (summary only)";
-    return result;
+    const auto record = queue.records.find(nightly_work_item(c.case_id, c.key));
+    return unfinished_case(c.case_id, record == queue.records.end() ? nullptr : &record->second, queue.now);
   }
   const auto started = std::chrono::steady_clock::now();
   const auto validation = casework::validate_case(archive, c.case_id, options.validation,
@@ -64,12 +77,13 @@ NightlyCase process_case(Archive& archive, const EligibleCase& c, const NightlyO
 
 // One case of the run: nothing when it has no post-operative CT, plan or landmarks.
 std::optional<NightlyCase> nightly_case(Archive& archive, int64_t case_id, const casework::CaseInputsHash& inputs,
-                                        const NightlyOptions& options, std::vector<records::StoredValidation>& shown) {
+                                        const NightlyOptions& options, const WorkQueueState& queue,
+                                        std::vector<records::StoredValidation>& shown) {
   auto key = nightly_key(inputs);
   if (!key) return std::nullopt;
   const EligibleCase eligible{case_id, *key};
   auto stored = records::find_validation(archive, inputs.artefacts, eligible.key);
-  NightlyCase result = process_case(archive, eligible, options, stored);
+  NightlyCase result = process_case(archive, eligible, options, queue, stored);
   if (stored) shown.push_back(std::move(*stored));
   return result;
 }
@@ -163,11 +177,12 @@ NightlyReport run_nightly(Archive& archive, const NightlyOptions& options) {
   NightlyReport report;
   std::vector<records::StoredValidation> shown;
   const auto cases = shard_cases(archive, options);
+  const WorkQueueState queue = options.summary_only ? read_work_queue(archive) : WorkQueueState{};
   const auto inputs =
       casework::validation_inputs_hashes(archive, cases, options.validation);  // the scan: a few queries
   for (int64_t case_id : cases) {
     try {  // whatever one case throws, the others still run
-      auto result = nightly_case(archive, case_id, inputs.at(case_id), options, shown);
+      auto result = nightly_case(archive, case_id, inputs.at(case_id), options, queue, shown);
       if (!result) continue;
       report.cases.push_back(*result);
       log::info("case ", case_id, ": ", to_string(result->outcome));

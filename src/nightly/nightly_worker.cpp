@@ -133,6 +133,29 @@ std::string nightly_work_item(int64_t case_id, const std::string& inputs_hash) {
   return "case:" + std::to_string(case_id) + ":" + inputs_hash;
 }
 
+NightlyCase unfinished_case(int64_t case_id, const Archive::WorkRecord* record, int64_t now) {
+  static const std::string kFinish =
+      "; `maxillo nightly --claim` (or scripts/cluster/nightly-slurm.sh again) finishes it, then `nightly "
+      "--summary-only`";
+  NightlyCase result{case_id, NightlyOutcome::kNotValidated, "", 0};
+  if (record == nullptr) {
+    result.reason = "not validated: no worker has offered it yet" + kFinish;
+  } else if (record->state == "failed") {
+    result.outcome = NightlyOutcome::kFailed;
+    result.reason = "failed on worker " + record->holder + ": " + record->reason;
+  } else if (record->state == "pending" && record->expires_at > now) {
+    result.reason = "being validated by worker " + record->holder + " (lease for " +
+                    std::to_string(record->expires_at - now) + " s more)";
+  } else if (record->state == "pending" && record->claims > 0) {
+    result.reason = "not validated: its worker " + record->holder + " stopped before finishing it" + kFinish;
+  } else if (record->state == "pending") {
+    result.reason = "not validated: no worker claimed it (the workers stopped first)" + kFinish;
+  } else {
+    result.reason = "not validated: its work item is " + record->state + " (" + record->reason + ")" + kFinish;
+  }
+  return result;
+}
+
 std::optional<std::pair<int64_t, std::string>> parse_nightly_work_item(const std::string& item) {
   if (!item.starts_with("case:")) return std::nullopt;
   const auto colon = item.find(':', 5);

@@ -26,4 +26,10 @@ std::optional<std::pair<int64_t, std::string>> parse_nightly_work_item(const std
 
 NightlyReport run_nightly_worker(Archive& archive, const NightlyOptions& options);
 
+// What the work queue says of a case the summary finds without a validation of its current
+// inputs (`record`: its item, or null when no worker offered it), at `now` on the index's
+// clock: failed (kFailed, with the worker's reason), or left (kNotValidated: being validated,
+// its worker stopped before finishing it, or never claimed), with how to finish it.
+NightlyCase unfinished_case(int64_t case_id, const Archive::WorkRecord* record, int64_t now);
+
 }  // namespace maxillo::nightly

@@ -170,6 +170,22 @@ TEST(ArchiveImport, EveryBadInputIsNamedWithItsReasonWhileTheRestImports) {
   EXPECT_EQ(archive.series().size(), 1u);
 }
 
+// Issue 29, fault 8: a folder holding only a symbolic link to a series imported nothing and
+// said nothing. Links to folders are followed; a link back up the tree is listed once.
+TEST(ArchiveImport, ASymbolicLinkToASeriesFolderIsFollowedAndALoopIsListedOnce) {
+  TemporaryFolder folder;
+  testing::write_series(folder / "elsewhere" / "series", 3);
+  std::filesystem::create_directories(folder / "in");
+  std::filesystem::create_directory_symlink(folder / "elsewhere" / "series", folder / "in" / "series");
+  std::filesystem::create_directory_symlink(folder / "in", folder / "in" / "loop");
+  std::filesystem::create_directory_symlink(folder / "elsewhere" / "series", folder / "in" / "same-again");
+  Archive archive = Archive::open(testing::archive_at(folder / "archive"), OpenMode::CreateIfMissing);
+  ImportReport report = archive.import_paths({folder / "in"}, quiet());
+  EXPECT_EQ(report.imported, 3u);
+  EXPECT_EQ(report.files(), 3u);  // each file once, though two links lead to it and one loops
+  EXPECT_TRUE(report.all_ok());
+}
+
 TEST(ArchiveImport, TruncationAnywhereInThePixelsOrHeaderIsDetected) {
   TemporaryFolder folder;
   auto spare = testing::write_series(folder / "spare", 1);

@@ -1,5 +1,10 @@
 // Verify, repair, export, resolve and artefacts.
 #include <gtest/gtest.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <csignal>
 
 #include "archive/archive.h"
 #include "archive_fixture.h"
@@ -73,6 +78,67 @@ TEST(ArchiveVerify, ReimportingTheOriginalsRestoresALostObject) {
   EXPECT_TRUE(archive.verify(RepairMode::ReportOnly, ProgressDisplay::Never).consistent());
 }
 
+// Issue 29, fault 6: a kill -9 between an object's write and the commit of its rows left an
+// object no row names (and sometimes a temporary file), and verify said INCONSISTENT until the
+// instance was sent again. Such leftovers are harmless; repair adopts the DICOM object.
+TEST(ArchiveVerify, AnInterruptedImportsLeftoversAreHarmlessAndRepairAdoptsTheDicomObject) {
+  TemporaryFolder folder;
+  Archive archive = archive_with_series(folder);
+  auto unsent = testing::write_series(folder / "unsent", 1, "P9");
+  const auto bytes = read_file(unsent.files[0]);
+  const auto object = archive.object_path(sha256_hex(bytes));
+  std::filesystem::create_directories(object.parent_path());
+  write_file_atomically(object, bytes);  // written and synced, its rows never committed
+  std::ofstream(object.parent_path() / ".next.tmp-99999-0-1") << "half an object";
+
+  VerifyReport before = archive.verify(RepairMode::ReportOnly, ProgressDisplay::Never);
+  EXPECT_EQ(before.orphans.size(), 1u);
+  EXPECT_EQ(before.temporaries.size(), 1u);
+  EXPECT_TRUE(before.consistent());
+
+  VerifyReport repaired = archive.verify(VerifyOptions{RepairMode::Repair, false, ProgressDisplay::Never, 0});
+  ASSERT_EQ(repaired.adopted.size(), 1u);
+  EXPECT_EQ(repaired.adopted[0], object);
+  EXPECT_EQ(repaired.quarantined, 1u);  // the temporary file
+  EXPECT_TRUE(std::filesystem::exists(object));
+  EXPECT_NO_THROW(archive.resolve_case("P9"));
+  VerifyReport after = archive.verify(RepairMode::ReportOnly, ProgressDisplay::Never);
+  EXPECT_TRUE(after.orphans.empty());
+  EXPECT_TRUE(after.temporaries.empty());
+  EXPECT_TRUE(after.journal_differences.empty());  // the adoption is journalled like an import
+  // Sending the instance again finds it archived.
+  EXPECT_EQ(archive.import_paths({unsent.files[0]}, testing::quiet()).already_archived, 1u);
+}
+
+// Issue 29, fault 5: an object write that failed half-way (a full disk) left its temporary file,
+// and verify then said INCONSISTENT for ever. The write is made to fail here by a file-size
+// limit in a child process (EFBIG, as ENOSPC would, without mounting a small file system).
+TEST(ArchiveVerify, AnObjectWriteThatFailsLeavesNoTemporaryFile) {
+  TemporaryFolder folder;
+  const auto address = testing::archive_at(folder / "archive");
+  { archive_with_series(folder); }
+  auto large = write_ct_series(testing::small_volume(1, 256), testing::patient_metadata("P8"), folder / "large");
+  const pid_t child = ::fork();
+  if (child == 0) {
+    ::signal(SIGXFSZ, SIG_IGN);
+    const rlimit limit{64 * 1024, 64 * 1024};  // below one 256 x 256 slice (128 KiB)
+    ::setrlimit(RLIMIT_FSIZE, &limit);
+    try {
+      Archive::open(address).import_paths({large.files[0]}, testing::quiet());
+    } catch (const Error& e) {
+      ::_exit(e.code() == ErrorCode::kWriteFailed ? 0 : 2);
+    }
+    ::_exit(1);
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0) << "the import did not fail with a write error";
+  VerifyReport report = Archive::open(address).verify(RepairMode::ReportOnly, ProgressDisplay::Never);
+  EXPECT_TRUE(report.temporaries.empty());
+  EXPECT_TRUE(report.consistent());
+}
+
 TEST(ArchiveVerify, RepairQuarantinesOrphansAndTemporariesAndDeletesNothing) {
   TemporaryFolder folder;
   Archive archive = archive_with_series(folder);
@@ -86,6 +152,7 @@ TEST(ArchiveVerify, RepairQuarantinesOrphansAndTemporariesAndDeletesNothing) {
   EXPECT_EQ(before.orphans.size(), 1u);
   EXPECT_EQ(before.temporaries.size(), 1u);
   EXPECT_TRUE(before.data_intact());
+  EXPECT_TRUE(before.consistent());  // what an interrupted write leaves is no damage
   // No grace period: these strays were made just now (a server archive would leave them).
   VerifyReport repaired = archive.verify(VerifyOptions{RepairMode::Repair, false, ProgressDisplay::Never, 0});
   EXPECT_EQ(repaired.quarantined, 2u);

@@ -8,6 +8,7 @@
 
 #include "archive/archive.h"
 #include "archive/index_comparison.h"
+#include "archive/index_journal.h"
 #include "archive_fixture.h"
 #include "core/atomic_file.h"
 #include "core/sha256.h"
@@ -190,10 +191,77 @@ std::filesystem::path archive_with_old_index(const TemporaryFolder& folder, int 
   return path;
 }
 
-TEST(IndexLoss, OneJournalEntryPastTheIndexIsWhatAKilledCommitLeavesAndIsAccepted) {
+// Issue 29, fault 1: an index one commit behind its journal was taken for a killed commit and
+// accepted, and the next commit wrote over the journal entry that held the lost import.
+TEST(IndexLoss, AnIndexOneCommitBehindItsJournalIsRefusedAndRebuilt) {
   TemporaryFolder folder;
   auto path = archive_with_old_index(folder, 1);
-  EXPECT_NO_THROW(Archive::open(path));
+  EXPECT_EQ(open_error(path), ErrorCode::kIndexDamaged);
+  Archive::rebuild_index(path, quiet_rebuild());
+  expect_same_tables(folder / "newest.sqlite", index_of(path));
+}
+
+IndexJournal journal_of(const std::filesystem::path& archive) { return IndexJournal(archive / "objects" / "journal"); }
+
+// What a transaction killed between writing its entry and COMMIT leaves: a pending entry one
+// past the index's counter. It is no commit, so the archive opens; the next writer keeps it
+// aside and writes its own entry of that number.
+TEST(IndexLoss, APendingEntryOfAKilledTransactionIsKeptAsideNeverWrittenOver) {
+  TemporaryFolder folder;
+  auto path = archive_with_old_index(folder, 1);
+  const auto journal = journal_of(path);
+  std::filesystem::rename(journal.path_of(2), journal.pending_path_of(2));
+  const std::string killed = testing::read_text(journal.pending_path_of(2));
+
+  Archive archive = Archive::open(path);
+  testing::write_series(folder / "next", 2, "P9");
+  EXPECT_EQ(archive.import_paths({folder / "next"}, quiet()).imported, 2u);
+
+  EXPECT_TRUE(journal.has(2));
+  EXPECT_FALSE(journal.has_pending(2));
+  EXPECT_NE(testing::read_text(journal.path_of(2)), killed);
+  std::vector<std::filesystem::path> kept;
+  for (const auto& entry : std::filesystem::directory_iterator(journal.folder() / "aborted")) kept.push_back(entry);
+  ASSERT_EQ(kept.size(), 1u);
+  EXPECT_EQ(testing::read_text(kept[0]), killed);
+  EXPECT_TRUE(archive.verify(RepairMode::ReportOnly, ProgressDisplay::Never).journal_differences.empty());
+}
+
+// A writer that died between COMMIT and marking its entry committed: the index's counter
+// proves the commit, so the next open marks it, and the journal replays to the same index.
+TEST(IndexLoss, AnEntryCommittedButNotYetMarkedIsMarkedAtOpen) {
+  TemporaryFolder folder;
+  auto path = archive_with_every_kind_of_row(folder);
+  const auto journal = journal_of(path);
+  const int64_t last = journal.sequences().back();
+  std::filesystem::rename(journal.path_of(last), journal.pending_path_of(last));
+
+  Archive archive = Archive::open(path);
+  EXPECT_TRUE(journal.has(last));
+  EXPECT_FALSE(journal.has_pending(last));
+  EXPECT_TRUE(archive.verify(RepairMode::ReportOnly, ProgressDisplay::Never).journal_differences.empty());
+}
+
+// Issue 29, fault 2: `archive rebuild-index --force` swapped a new index in while an import
+// that had opened the archive before waited for the store lock; the import then wrote into the
+// replaced index and its rows were lost to the archive. A writer follows the swap.
+TEST(IndexLoss, AWriterThatWaitedForARebuildWritesIntoTheRebuiltIndex) {
+  TemporaryFolder folder;
+  auto path = archive_with_every_kind_of_row(folder);
+  Archive waiting = Archive::open(path);  // opened before the rebuild, as the racing import was
+  const size_t patients_before = waiting.patients().size();
+  RebuildReport rebuilt = Archive::rebuild_index(path, quiet_rebuild(true));
+  ASSERT_TRUE(std::filesystem::exists(rebuilt.previous_index));
+
+  testing::write_series(folder / "late", 3, "P7");
+  EXPECT_EQ(waiting.import_paths({folder / "late"}, quiet()).imported, 3u);
+
+  Archive now = Archive::open(path);
+  EXPECT_EQ(now.patients().size(), patients_before + 1);
+  auto report = now.verify(RepairMode::ReportOnly, ProgressDisplay::Never);
+  EXPECT_TRUE(report.orphans.empty());
+  EXPECT_TRUE(report.journal_differences.empty());
+  EXPECT_TRUE(report.index_intact());
 }
 
 TEST(IndexLoss, AnIndexTwoCommitsBehindItsJournalIsRefusedAndRebuilt) {
@@ -271,10 +339,13 @@ TEST(Repair, ManyOrphansStopTheRepairUnlessForcedAndNothingIsEverDeleted) {
   EXPECT_EQ(refused.quarantined, 0u);
   EXPECT_EQ(files_below(objects), stored);
 
+  // Forced, the DICOM orphans are adopted (indexed from their headers, as importing them again
+  // would): nothing moves and nothing is deleted.
   VerifyReport forced = archive.verify(VerifyOptions{RepairMode::Repair, true, ProgressDisplay::Never, 0});
-  EXPECT_EQ(forced.quarantined, 12u);
-  EXPECT_EQ(files_below(objects), stored);  // moved, not deleted
-  EXPECT_EQ(files_below(objects / "quarantine"), 12u);
+  EXPECT_EQ(forced.adopted.size(), 12u);
+  EXPECT_EQ(forced.quarantined, 0u);
+  EXPECT_EQ(files_below(objects), stored + 1);  // the adoption's journal entry
+  EXPECT_NO_THROW(archive.resolve_case("P2"));
   EXPECT_TRUE(archive.verify(RepairMode::ReportOnly, ProgressDisplay::Never).consistent());
 }
 

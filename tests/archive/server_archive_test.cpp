@@ -7,6 +7,7 @@
 #include <atomic>
 #include <chrono>
 #include <fstream>
+#include <regex>
 #include <thread>
 
 #include "archive/archive.h"
@@ -73,6 +74,24 @@ TEST(ServerArchive, AnUnreachableServerIsNamedInTheArchiveRange) {
     EXPECT_NE(e.subject().find("127.0.0.1"), std::string::npos) << e.subject();
     EXPECT_EQ(std::string(e.what()).find("secret"), std::string::npos);
     EXPECT_EQ(e.subject().find("secret"), std::string::npos) << e.subject();
+  }
+}
+
+// Issue 29, fault 11: a login the server refuses was "unreachable" (48).
+TEST(ServerArchive, ALoginTheServerRefusesHasItsOwnCodeNotUnreachable) {
+  if (!testing::on_server()) GTEST_SKIP() << "no test PostgreSQL server";
+  TemporaryFolder folder;
+  const std::string server = testing::test_postgres_server();  // postgresql://postgres@127.0.0.1:PORT/
+  const std::string unknown_role = std::regex_replace(server, std::regex("postgres@"), "no_such_role@") + "postgres";
+  for (const std::string& address : {unknown_role, server + "no_such_database"}) {
+    try {
+      Archive::open(address + "?objects=" + folder.path().string());
+      ADD_FAILURE() << address << " opened";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), ErrorCode::kArchiveLoginRefused) << e.what();
+      EXPECT_EQ(exit_code_for(e.code()), 50);
+      EXPECT_NE(std::string(e.what()).find("does not exist"), std::string::npos) << e.what();
+    }
   }
 }
 

@@ -87,6 +87,46 @@ TEST(ArchiveCli, UnreadableFileIsNamedAsPermissionDeniedAndTheRestImports) {
   EXPECT_NE(result.output.find("3 imported"), std::string::npos) << result.output;
 }
 
+// Issue 29, fault 8: on an archive its user may only read, `list` failed ("attempt to write a
+// readonly database", exit 45) and `export --deidentify` wanted to create deidentify.key.
+// Reading works read-only, and leaves the archive exactly as it was.
+TEST(ArchiveCli, AReadOnlyArchiveCanBeListedAndExportedAndIsLeftUnchanged) {
+  if (::geteuid() == 0 && !testing::tool_available("setpriv")) GTEST_SKIP() << "running as root without setpriv";
+  TemporaryFolder folder;
+  testing::write_series(folder / "in", 3);
+  const auto archive = folder / "archive";
+  ASSERT_EQ(testing::run_maxillo({"--archive", archive.string(), "import", (folder / "in").string()}, folder.path())
+                .exit_code,
+            0);
+  ASSERT_EQ(testing::run_command("chmod -R a=rX " + testing::quote(archive)).exit_code, 0);
+  std::filesystem::permissions(folder.path(), std::filesystem::perms::all);
+  std::filesystem::create_directories(folder / "exports");
+  std::filesystem::permissions(folder / "exports", std::filesystem::perms::all);
+  auto files_of = [&] {
+    std::vector<std::string> names;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(archive)) names.push_back(entry.path());
+    std::sort(names.begin(), names.end());
+    return names;
+  };
+  const auto before = files_of();
+  const std::string as_user = ::geteuid() == 0 ? "setpriv --reuid=65534 --regid=65534 --clear-groups " : "";
+  auto maxillo = [&](const std::string& arguments) {
+    return testing::run_command(as_user + MAXILLO_BINARY + " --archive " + testing::quote(archive) + " " + arguments +
+                                " 2>&1");
+  };
+  const auto listed = maxillo("list series");
+  EXPECT_EQ(listed.exit_code, 0) << listed.output;
+  EXPECT_NE(listed.output.find("axial"), std::string::npos) << listed.output;
+  const auto exported = maxillo("export 1 --deidentify --out " + testing::quote(folder / "exports" / "anonymous"));
+  EXPECT_EQ(exported.exit_code, 0) << exported.output;
+  EXPECT_NE(exported.output.find("3 de-identified files"), std::string::npos) << exported.output;
+  EXPECT_NE(exported.output.find("read-only"), std::string::npos) << exported.output;
+  const auto imported = maxillo("import " + testing::quote(folder / "in"));
+  EXPECT_NE(imported.exit_code, 0) << imported.output;  // writing cannot work, and says why
+  EXPECT_EQ(files_of(), before);
+  testing::run_command("chmod -R u+w " + testing::quote(archive));
+}
+
 TEST(ArchiveCli, ListShowVerifyAndExportByteIdentical) {
   TemporaryFolder folder;
   auto written = testing::write_series(folder / "in", 4);

@@ -62,6 +62,19 @@ TEST_F(InputChecks, ARejectedPlanStoresNothing) {
   EXPECT_EQ(run({"plan", "show", "case:1"}).exit_code, 0);
 }
 
+// Issue 29, fault 8: `export SERIES --out ''` was an internal error (exit 60).
+TEST_F(InputChecks, AnEmptyValueIsAUsageErrorNamingTheOption) {
+  for (const std::vector<std::string>& args : {std::vector<std::string>{"export", "1", "--out", ""},
+                                               {"report", "case:1", "--out", ""},
+                                               {"export", "", "--out", "x"}}) {
+    auto result = run(args);
+    EXPECT_EQ(result.exit_code, exit_code_for(ErrorCode::kUsage)) << args[0] << ": " << result.err;
+    EXPECT_NE(result.err.find("must not be empty"), std::string::npos) << result.err;
+  }
+  auto export_option = run({"export", "1", "--out", ""});
+  EXPECT_NE(export_option.err.find("--out"), std::string::npos) << export_option.err;
+}
+
 TEST_F(InputChecks, SimulateOptionsHaveRanges) {
   for (std::vector<std::string> bad : {std::vector<std::string>{"--advance", "nan"},
                                        {"--advance", "1e6"},

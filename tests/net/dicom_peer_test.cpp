@@ -3,6 +3,7 @@
 
 #include "core/error.h"
 #include "net/dicom_peer.h"
+#include "net/retrieve_client.h"
 
 namespace maxillo::net {
 namespace {
@@ -42,6 +43,14 @@ TEST(AllowedPeer, MatchesTheTitleAndTheAddressWhenGiven) {
   EXPECT_FALSE(is_allowed({}, "SCANNER", "127.0.0.1")) << "nobody is allowed by default";
   EXPECT_EQ(error_of([] { parse_allowed_peer(""); }), ErrorCode::kUsage);
   EXPECT_EQ(error_of([] { parse_allowed_peer("PACS@"); }), ErrorCode::kUsage);
+}
+
+// Issue 29, fault 13: a C-GET failure printed "status 49152".
+TEST(RetrieveStatus, IsShownInHexadecimalWithItsMeaning) {
+  EXPECT_EQ(status_text("C-GET", 0xC000).substr(0, 9), "0xC000 (F");
+  EXPECT_NE(status_text("C-GET", 0xC000).find("Failed"), std::string::npos) << status_text("C-GET", 0xC000);
+  EXPECT_NE(status_text("C-MOVE", 0xA801).find("0xA801"), std::string::npos);
+  EXPECT_NE(status_text("C-MOVE", 0xA801).find("Refused"), std::string::npos) << status_text("C-MOVE", 0xA801);
 }
 
 }  // namespace

@@ -175,5 +175,21 @@ TEST_F(OrthancPeer, SendReceiveFindRetrieveAndTheReportBack) {
   EXPECT_EQ(found.size(), 1u) << "the report is in the study it belongs to";
 }
 
+// Issue 29, fault 13: the PACS delivered the C-MOVE to the port it knows for our AE title (here
+// a running `maxillo serve`), not to the --move-port we listened on; the retrieve said "the peer
+// sent nothing (no such study there?)".
+TEST_F(OrthancPeer, AMoveDeliveredToAnotherPortOfOursIsNamedAsSuch) {
+  const auto theirs = testing::write_series(folder_ / "theirs", "NETMOVE", 2, 5);
+  for (const auto& file : theirs.files) rest_json("POST", "/instances", "--data-binary @" + quote(file));
+  const auto elsewhere =
+      testing::run_maxillo({"--archive", (folder_ / "elsewhere").string(), "retrieve", "--from", orthanc_peer(),
+                            theirs.study_instance_uid, "--move-port", std::to_string(testing::free_loopback_port())},
+                           folder_.path());
+  EXPECT_NE(elsewhere.exit_code, 0);
+  EXPECT_NE(elsewhere.err.find("the peer says it sent 2 instances, but none reached"), std::string::npos)
+      << elsewhere.err;
+  EXPECT_EQ(elsewhere.err.find("no such study"), std::string::npos) << elsewhere.err;
+}
+
 }  // namespace
 }  // namespace maxillo

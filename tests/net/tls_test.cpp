@@ -120,6 +120,11 @@ TEST_F(ServeTls, ArchivesFromACallerTheCaSignedAndRefusesEveryOtherCaller) {
   EXPECT_EQ(testing::stop_process(server_), 0);
   server_ = -1;
   EXPECT_NE(testing::slurp(folder_ / "serve.out").find("5 instances archived"), std::string::npos);
+  // The three failed handshakes are logged and counted as refusals (issue 29, fault 12).
+  EXPECT_NE(testing::slurp(folder_ / "serve.out").find("(3 refused)"), std::string::npos)
+      << testing::slurp(folder_ / "serve.out");
+  EXPECT_NE(testing::slurp(folder_ / "serve.err").find("a connection failed before its association"), std::string::npos)
+      << testing::slurp(folder_ / "serve.err");
 }
 
 TEST_F(ServeTls, MaxilloSendsAndEchoesOverTlsAndVerifiesTheServer) {

@@ -142,5 +142,45 @@ TEST(NightlyWorkers, WorkersShareTheCasesAndEachIsFinishedOnce) {
   EXPECT_TRUE(run_nightly(archive, options).cases.empty());  // failed cases wait for new inputs
 }
 
+// Issue 29, fault 9: the summary after the workers (a Slurm job with afterany) says what they
+// left: a case a cancelled worker held, a case nobody claimed, a failed case, each with how to
+// finish it, and the batch counts as not done.
+TEST(NightlyWorkers, TheSummarySaysWhatTheWorkersLeftAndHowToFinishIt) {
+  TemporaryFolder folder;
+  Archive archive = Archive::open(testing::archive_at(folder / "archive"), OpenMode::CreateIfMissing);
+  std::vector<int64_t> cases;
+  for (const char* patient : {"P1", "P2", "P3", "P4"}) cases.push_back(eligible_case(archive, folder, patient));
+  NightlyOptions options;
+  options.out = folder / "nightly";
+  std::vector<std::string> items;
+  for (int64_t id : cases)
+    items.push_back(nightly_work_item(id, casework::validation_inputs_hash(archive, id, options.validation).value()));
+  archive.offer_work(kNightlyQueue, {items[0], items[1], items[2]});  // P4: never offered
+  const int64_t now = archive.clock_seconds();
+  ASSERT_EQ(archive.claim_work(kNightlyQueue, "cancelled", now - 100, 10), items[0]);  // lease ended
+  ASSERT_EQ(archive.claim_work(kNightlyQueue, "failing", now - 95, 600), items[1]);    // items[0] still held then
+  ASSERT_TRUE(archive.finish_work(kNightlyQueue, items[1], "failing", "failed", "no bone found"));
+
+  options.summary_only = true;
+  const NightlyReport report = run_nightly(archive, options);
+  ASSERT_EQ(report.cases.size(), 4u);
+  auto reason_of = [&](size_t n) { return report.cases[n].reason; };
+  EXPECT_EQ(report.cases[0].outcome, NightlyOutcome::kNotValidated);
+  EXPECT_NE(reason_of(0).find("its worker cancelled stopped before finishing it"), std::string::npos) << reason_of(0);
+  EXPECT_EQ(report.cases[1].outcome, NightlyOutcome::kFailed);
+  EXPECT_NE(reason_of(1).find("failed on worker failing: no bone found"), std::string::npos) << reason_of(1);
+  EXPECT_NE(reason_of(2).find("no worker claimed it"), std::string::npos) << reason_of(2);
+  EXPECT_NE(reason_of(3).find("no worker has offered it"), std::string::npos) << reason_of(3);
+  for (size_t n : {0u, 2u, 3u}) EXPECT_NE(reason_of(n).find("nightly --claim"), std::string::npos) << reason_of(n);
+}
+
+TEST(NightlyWorkers, ACaseUnderALiveLeaseIsBeingValidated) {
+  Archive::WorkRecord record{"case:1:abc", "pending", "node7:42", "", 1, 1000};
+  const NightlyCase held = unfinished_case(1, &record, 990);
+  EXPECT_EQ(held.outcome, NightlyOutcome::kNotValidated);
+  EXPECT_NE(held.reason.find("being validated by worker node7:42 (lease for 10 s more)"), std::string::npos)
+      << held.reason;
+}
+
 }  // namespace
 }  // namespace maxillo::nightly

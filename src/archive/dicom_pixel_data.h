@@ -1,0 +1,26 @@
+#pragma once
+// How many bytes of pixels a DICOM data set really holds, native or encapsulated, shared by
+// the import's check (an image without its pixels is refused) and the slice reader (a frame is
+// allocated only for what is stored). Private to the archive module: it speaks DCMTK's types.
+#include <dcmtk/config/osconfig.h>
+#include <dcmtk/dcmdata/dcdatset.h>
+#include <dcmtk/dcmdata/dcpixel.h>
+
+#include <cstddef>
+
+namespace maxillo {
+
+// Whether the data set's pixels are stored compressed (an encapsulated transfer syntax).
+bool pixels_are_encapsulated(DcmDataset& dataset);
+
+// The bytes of Pixel Data as stored: the value's length for native pixels; for encapsulated
+// pixels the sum of the fragments' lengths (the Basic Offset Table item left out). DCMTK's
+// getLength() answers for the native representation, which encapsulated data does not have
+// yet, so it said 0 for every compressed file (issue 29, fault 3).
+size_t stored_pixel_bytes(DcmDataset& dataset, DcmPixelData& pixel_data);
+
+// The Pixel Data element of the data set, or null when there is none (or it is not encoded as
+// pixel data).
+DcmPixelData* pixel_data_of(DcmDataset& dataset);
+
+}  // namespace maxillo
