@@ -113,13 +113,14 @@ TEST(ImageInputChecks, UidsThatAreNotUidsAreRefusedNamingTheElement) {
       {DCM_SeriesInstanceUID, std::string("1.2.3\0\0.4", 9), "Series Instance UID (0020,000E)"},
   };
   int n = 0;
-  for (const auto& [tag, uid, element] : bad) {
-    auto file = edited_copy(series.files[0], folder / ("bad" + std::to_string(n++) + ".dcm"),
-                            [&](DcmDataset& d) { d.putAndInsertOFStringArray(tag, OFString(uid.data(), uid.size())); });
+  for (const BadUid& b : bad) {
+    auto file = edited_copy(series.files[0], folder / ("bad" + std::to_string(n++) + ".dcm"), [&](DcmDataset& d) {
+      d.putAndInsertOFStringArray(b.tag, OFString(b.uid.data(), b.uid.size()));
+    });
     auto problem = refused_at_import(folder, file);
     EXPECT_EQ(problem.code, ErrorCode::kBadValue);
     EXPECT_NE(problem.reason.find("is not a UID"), std::string::npos) << problem.reason;
-    EXPECT_NE(problem.reason.find(element + " is not a UID"), std::string::npos) << problem.reason;
+    EXPECT_NE(problem.reason.find(b.element + " is not a UID"), std::string::npos) << problem.reason;
   }
 }
 
