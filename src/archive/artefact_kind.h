@@ -31,6 +31,7 @@ enum class ArtefactKind {
   kValidationImage,      // a validation's pictures (PNG)
   kChartWits,            // the Wits appraisal over the follow-up (PNG)
   kReport,               // the consultation report (PDF)
+  kOrientation,          // the CT's header checked against the anatomy, or confirmed by hand (JSON)
 };
 
 // Every kind, in the order above (for tables and tests).
@@ -45,7 +46,8 @@ inline constexpr ArtefactKind kAllArtefactKinds[] = {
     ArtefactKind::kSplintRender,        ArtefactKind::kSimulation,
     ArtefactKind::kSimulationImage,     ArtefactKind::kValidation,
     ArtefactKind::kValidationDistances, ArtefactKind::kValidationImage,
-    ArtefactKind::kChartWits,           ArtefactKind::kReport};
+    ArtefactKind::kChartWits,           ArtefactKind::kReport,
+    ArtefactKind::kOrientation};
 
 // The name the index stores: "landmarks", "plan-result", "render-skin-frontal", ...
 std::string kind_name(ArtefactKind kind);

@@ -11,6 +11,7 @@
 #include "core/sha256.h"
 #include "mesh/mesh_io.h"
 #include "records/case_landmarks.h"
+#include "casework/case_orientation.h"
 #include "casework/case_surfaces.h"
 #include "records/derivation.h"
 #include "records/plan_archive.h"
@@ -192,6 +193,7 @@ SimulationResult simulate_case(Archive& archive, int64_t case_id, const Simulati
                                const CaseTissues* given) {
   auto contents = archive.case_contents(case_id);
   const int64_t series = records::primary_series(contents);
+  require_trusted_orientation(archive, case_id, "the face prediction");
   const LandmarkSet landmarks = records::latest_landmarks(archive, case_id);
   if (landmarks.empty())
     throw Error(ErrorCode::kBadValue, "case:" + std::to_string(case_id),

@@ -5,6 +5,7 @@
 #include "core/log.h"
 #include "records/case_landmarks.h"
 #include "records/derivation.h"
+#include "casework/case_orientation.h"
 #include "casework/case_tissues.h"
 #include "casework/plan_outputs.h"
 #include "records/plan_result_record.h"
@@ -20,6 +21,7 @@ CasePlanResult apply_case_plan(Archive& archive, int64_t case_id, const std::fil
   const auto plan = records::latest_plan(archive, case_id);
   if (!plan) throw Error(ErrorCode::kNotFound, subject, "the case has no plan: make one with `maxillo plan create`");
   out.plan = *plan;
+  require_trusted_orientation(archive, case_id, "planning");
   const LandmarkSet landmarks = records::latest_landmarks(archive, case_id);
   if (landmarks.empty())
     throw Error(ErrorCode::kNotFound, subject, "the case has no landmarks: attach them with `maxillo ceph add`");

@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "core/json.h"
 #include "core/log.h"
+#include "imaging/head_orientation.h"
 #include "imaging/volume_file.h"
 
 namespace maxillo::cli {
@@ -54,6 +55,10 @@ void run_convert(const ConvertOptions& options, CommandContext& ctx) {
   metadata.series_description = options.series_description;
   log::debug("convert: patient '", options.patient_name, "' id '", options.patient_id, "'");
   const WrittenSeries written = write_ct_series(volume, metadata, options.out);
+  // The header this conversion gave the volume, checked against the anatomy: a wrong
+  // --direction or a missing --hu-offset is said now, not discovered when planning refuses.
+  const HeadOrientation orientation = check_head_orientation(volume);
+  if (orientation.contradicts_header()) log::warning(options.input.string(), ": ", orientation.finding());
 
   Json result = {{"input", options.input.string()},
                  {"folder", options.out.string()},
@@ -62,14 +67,19 @@ void run_convert(const ConvertOptions& options, CommandContext& ctx) {
                  {"series_instance_uid", written.series_instance_uid},
                  {"size", {g.size.x(), g.size.y(), g.size.z()}},
                  {"spacing_mm", {g.spacing.x(), g.spacing.y(), g.spacing.z()}},
-                 {"origin_lps_mm", {g.origin.x(), g.origin.y(), g.origin.z()}}};
+                 {"origin_lps_mm", {g.origin.x(), g.origin.y(), g.origin.z()}},
+                 {"orientation",
+                  {{"contradicts_header", orientation.contradicts_header()},
+                   {"finding", orientation.finding()},
+                   {"grey_values", orientation.grey.describe()}}}};
   if (ctx.global.json) {
     std::cout << result.dump(2) << "\n";
     return;
   }
   std::cout << "wrote " << written.files.size() << " CT slices of " << g.size.x() << " x " << g.size.y() << " ("
             << g.spacing.x() << " x " << g.spacing.y() << " x " << g.spacing.z() << " mm) to " << options.out.string()
-            << "\nseries " << written.series_instance_uid << "\n";
+            << "\nseries " << written.series_instance_uid << "\norientation: " << orientation.finding()
+            << "\ngrey values: " << orientation.grey.describe() << "\n";
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include "archive/archive.h"
 #include "archive/archive_json.h"
 #include "cli/command.h"
+#include "records/orientation_record.h"
 
 namespace maxillo::cli {
 namespace {
@@ -58,12 +59,31 @@ void list_series(const Archive& archive, bool json) {
   }
 }
 
+// With each case, what the orientation check of its CT said (records/orientation_record.h):
+// CONTRADICTS marks a case whose header disagrees with the anatomy and is not yet confirmed.
 void list_cases(const Archive& archive, bool json) {
   auto rows = archive.cases();
-  if (json) return print_json(rows);
-  std::printf("%-5s %-7s %-12s %s\n", "id", "patient", "label", "created");
+  std::vector<int64_t> ids;
+  for (const auto& r : rows) ids.push_back(r.id);
+  const auto orientations = records::latest_orientations(archive, ids);
+  auto orientation_of = [&](int64_t id) {
+    const auto found = orientations.find(id);
+    return records::orientation_summary(found == orientations.end() ? nullptr : &found->second);
+  };
+  if (json) {
+    Json list = Json::array();
+    for (const auto& r : rows) {
+      Json row = to_json(r);
+      row["orientation"] = orientation_of(r.id);
+      list.push_back(row);
+    }
+    std::cout << json_text(list) << "\n";
+    return;
+  }
+  std::printf("%-5s %-7s %-12s %-20s %s\n", "id", "patient", "label", "created", "orientation");
   for (const auto& r : rows)
-    std::printf("%-5lld %-7lld %-12s %s\n", ll(r.id), ll(r.patient), r.label.c_str(), r.created_at.c_str());
+    std::printf("%-5lld %-7lld %-12s %-20s %s\n", ll(r.id), ll(r.patient), r.label.c_str(), r.created_at.c_str(),
+                orientation_of(r.id).c_str());
 }
 
 void list_flags(const Archive& archive, bool json) {

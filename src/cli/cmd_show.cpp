@@ -5,6 +5,7 @@
 #include "archive/archive.h"
 #include "archive/archive_json.h"
 #include "cli/command.h"
+#include "records/orientation_record.h"
 
 namespace maxillo::cli {
 namespace {
@@ -40,6 +41,8 @@ Json describe_item(const Archive& archive, const ResolvedItem& item) {
       Json json = to_json(archive.case_contents(item.id));
       json["artefacts"] = Json::array();
       for (const auto& a : archive.artefacts(item.id)) json["artefacts"].push_back(to_json(a));
+      const auto orientation = records::latest_orientations(archive, {item.id});
+      if (!orientation.empty()) json["orientation"] = records::to_json(orientation.begin()->second);
       return json;
     }
   }

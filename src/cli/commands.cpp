@@ -28,6 +28,7 @@ void attach_validate(CLI::App&, CommandContext&);
 void attach_nightly(CLI::App&, CommandContext&);
 void attach_sample_postop(CLI::App&, CommandContext&);
 void attach_role(CLI::App&, CommandContext&);
+void attach_orientation(CLI::App&, CommandContext&);
 void attach_serve(CLI::App&, CommandContext&);
 void attach_echo(CLI::App&, CommandContext&);
 void attach_send(CLI::App&, CommandContext&);
@@ -48,6 +49,9 @@ std::span<const CommandSpec> command_table() {
                   attach_archive},
       CommandSpec{"role", "Archive", "set a series' role in its case (preop, postop, follow-up, unassigned)",
                   attach_role},
+      CommandSpec{"orientation", "Archive",
+                  "does the case's CT header agree with the anatomy (face anterior, vertex superior); --confirm",
+                  attach_orientation},
       CommandSpec{"export", "Archive", "write a series' original files into a folder", attach_export},
       CommandSpec{"bench", "Archive", "benchmarks (bench import, bench cube, bench occlusion)", attach_bench},
       CommandSpec{"serve", "Network", "DICOM storage server: archive what scanners and PACS send (C-STORE, C-ECHO)",

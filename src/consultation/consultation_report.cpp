@@ -6,6 +6,7 @@
 
 #include "archive/artefact_kind.h"
 #include "archive/instance_source.h"
+#include "casework/case_orientation.h"
 #include "core/atomic_file.h"
 #include "core/progress.h"
 #include "core/utc_time.h"
@@ -90,7 +91,7 @@ report::ReportModel model_header(const Archive& archive, const CaseContents& con
 }
 
 report::Section summary_section(const CaseContents& contents, int64_t series, const casework::CaseSurfaces& surfaces,
-                                const LandmarkSet& landmarks) {
+                                const LandmarkSet& landmarks, const records::OrientationRecord& orientation) {
   std::string description;
   for (const auto& entry : contents.series)
     if (entry.series.id == series) description = entry.series.description + " (" + entry.role + ")";
@@ -99,6 +100,9 @@ report::Section summary_section(const CaseContents& contents, int64_t series, co
       {"Skin surface", std::to_string(surfaces.skin.face_count()) + " triangles"},
       {"Bone surface", std::to_string(surfaces.bone.face_count()) + " triangles"},
       {"Landmarks", landmarks.empty() ? "none attached" : std::to_string(landmarks.size()) + " points"},
+      {"Orientation check",
+       orientation.finding +
+           (orientation.confirmed_at.empty() ? "" : " Confirmed by hand at " + orientation.confirmed_at + ".")},
   }};
   return {"summary", {facts}};
 }
@@ -160,7 +164,11 @@ ConsultationResult write_consultation_report(Archive& archive, int64_t case_id, 
 
   start = Clock::now();
   auto model = model_header(archive, contents);
-  model.sections.push_back(summary_section(contents, series, surfaces, landmarks));
+  const auto orientation = casework::case_orientation(archive, case_id);
+  if (!orientation.trusted())
+    model.warning_banner =
+        "THE CT HEADER CONTRADICTS THE ANATOMY: LEFT AND RIGHT CANNOT BE TRUSTED (see Summary; not for planning)";
+  model.sections.push_back(summary_section(contents, series, surfaces, landmarks, orientation));
   model.sections.push_back(views_section(views));
   model.sections.push_back(sections::case_cephalometry_section(archive, case_id, sex_for_norms(contents.patient.sex)));
   if (auto plan_result = records::latest_plan_result(archive, case_id))

@@ -251,6 +251,9 @@ void PdfDocument::save(const std::filesystem::path& path) {
     impl.draw_aligned(impl.style.header_right, impl.left, impl.text_width(), header_baseline, Align::Right,
                       impl.regular, size, look::kMuted);
     impl.stroke_line(impl.left, header_baseline - 5, impl.right, header_baseline - 5, 0.5, look::kRule);
+    if (!impl.style.warning_banner.empty())
+      impl.draw_aligned(impl.style.warning_banner, impl.left, impl.text_width(), header_baseline - 16, Align::Centre,
+                        impl.bold, size, look::kWarning);
     impl.stroke_line(impl.left, footer_baseline + 11, impl.right, footer_baseline + 11, 0.5, look::kRule);
     impl.draw_text(impl.style.footer_text, impl.left, footer_baseline, impl.regular, size, look::kMuted);
     impl.draw_aligned("page " + std::to_string(i + 1) + " of " + std::to_string(total), impl.left, impl.text_width(),

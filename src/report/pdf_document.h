@@ -24,9 +24,12 @@ struct PageStyle {
   std::filesystem::path regular_font;  // TrueType files (see fonts.h: resolve_font)
   std::filesystem::path bold_font;
   double body_size_pt = 10;
-  std::string header_left;     // e.g. the report title
-  std::string header_right;    // e.g. the patient's name and ID
-  std::string footer_text;     // e.g. "Not a diagnosis: planning aid, verify clinically"
+  std::string header_left;   // e.g. the report title
+  std::string header_right;  // e.g. the patient's name and ID
+  std::string footer_text;   // e.g. "Not a diagnosis: planning aid, verify clinically"
+  // Drawn in red under the running header of every page when not empty: what makes the whole
+  // document unsafe to act on (a CT whose header contradicts the anatomy).
+  std::string warning_banner;
   std::string document_title;  // PDF metadata
 };
 

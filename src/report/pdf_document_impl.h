@@ -22,6 +22,7 @@ inline constexpr Rgb kText{0.13, 0.14, 0.16};
 inline constexpr Rgb kMuted{0.42, 0.44, 0.47};
 inline constexpr Rgb kAccent{0.11, 0.29, 0.45};
 inline constexpr Rgb kRule{0.75, 0.78, 0.82};
+inline constexpr Rgb kWarning{0.80, 0.05, 0.05};
 inline constexpr Rgb kHeaderFill{0.86, 0.90, 0.94};
 inline constexpr Rgb kZebraFill{0.955, 0.962, 0.972};
 inline constexpr double kLeading = 1.38;     // line height / font size

@@ -61,6 +61,7 @@ struct ReportModel {
   std::vector<SeriesRow> series;  // shown in the "patient" section
   std::string generated_at;       // ISO 8601, e.g. "2024-05-02T14:03:11Z"
   std::string program_version;    // maxillo::kVersion
+  std::string warning_banner;     // red on every page when not empty (PageStyle::warning_banner)
   std::vector<Section> sections;  // any order; the template orders them
 };
 

@@ -25,6 +25,7 @@ PageStyle page_style(const ReportModel& model, const ReportTemplate& t) {
   style.header_right =
       format_person_name(model.patient.name) + (model.patient.id.empty() ? "" : "  ·  ID " + model.patient.id);
   style.footer_text = t.footer;
+  style.warning_banner = model.warning_banner;
   style.document_title = t.title;
   return style;
 }

@@ -14,6 +14,7 @@
 #include "bench/occlusion_benchmark.h"
 #include "bench/register_benchmark.h"
 #include "bench/timing.h"
+#include "core/error.h"
 #include "support/temporary_folder.h"
 
 namespace maxillo::bench {
@@ -68,6 +69,16 @@ TEST(ImportBenchmark, FirstImportAndReimportInFourLines) {
   EXPECT_EQ(lines[0].rfind("generated 12 files of 256x256 in ", 0), 0u) << lines[0];
   EXPECT_NE(lines[0].find("; 1 importer(s) at once, index on SQLite"), std::string::npos) << lines[0];
   EXPECT_EQ(lines[3].rfind("ratio re-import / first: ", 0), 0u) << lines[3];
+}
+
+// Issue 29, fault 14: a login the server refuses left the work folder behind.
+TEST(ImportBenchmark, AFailedRunLeavesNoWorkFolderBehind) {
+  TemporaryFolder folder;
+  ImportBenchOptions options;
+  options.count = 3, options.runs = 1, options.workdir = folder / "work";
+  options.postgres = "postgresql://no_such_role@127.0.0.1:1/";  // nothing listens on port 1
+  EXPECT_THROW(run_import_benchmark(options), Error);
+  EXPECT_FALSE(std::filesystem::exists(folder / "work"));
 }
 
 TEST(IndexBenchmark, TimesEveryQueryAndGivesTheNightlyScanItsFolder) {
