@@ -188,6 +188,21 @@ std::unique_ptr<Archive::State> open_embedded(const ArchiveLocation& location, O
   return state;
 }
 
+// `archive rebuild-index` fills a server archive's new, empty database while it holds the store
+// lock alone, in its own transactions: a command opening the database meanwhile finds it empty
+// or behind its journal, and is told to wait rather than that the index is lost (issue 29).
+void refuse_while_rebuilding(Archive::State& state) {
+  auto& server = static_cast<postgres::Connection&>(state.db);
+  if (server.try_lock(postgres::kStoreLockKey, true)) {
+    server.unlock(postgres::kStoreLockKey, true);
+    return;
+  }
+  throw Error(
+      ErrorCode::kArchiveBusy, state.location.shown,
+      "the archive's index is being rebuilt: `archive rebuild-index` (or `verify`) holds the archive alone; run "
+      "the command again when it has finished");
+}
+
 // A server archive: the shared object folder must exist (it is made once, on the shared
 // storage, not by whichever node comes first), and a database without a schema is a new
 // archive only while that folder holds nothing.
@@ -199,6 +214,7 @@ std::unique_ptr<Archive::State> open_on_server(const ArchiveLocation& location, 
         "the shared object folder " + location.folder.string() + " does not exist (make it on the shared storage)");
   auto state = std::make_unique<Archive::State>(location, connect_index(location, sqlite::OpenKind::Existing));
   if (state->db.schema_version() == 0) {
+    refuse_while_rebuilding(*state);
     if (holds_any_file(location.objects_folder()))
       throw Error(ErrorCode::kIndexDamaged, location.shown,
                   "the index database is empty but the shared object folder holds archived data; it is never "
@@ -232,7 +248,12 @@ Archive Archive::open(const std::filesystem::path& where, OpenMode mode) {
   // The last entry's writer may have died between its COMMIT and its mark: the counter proves
   // the commit, so it is marked (best effort: a read-only archive's readers do without it).
   state->journal.settle(journal_sequence(state->db));
-  require_index_not_behind_journal(state->db, state->journal);
+  try {
+    require_index_not_behind_journal(state->db, state->journal);
+  } catch (const Error& e) {
+    if (e.code() == ErrorCode::kIndexDamaged && !location.embedded()) refuse_while_rebuilding(*state);
+    throw;
+  }
   if (mode != OpenMode::MigrationTarget) require_no_unfinished_migration(location.objects_folder(), location.shown);
   state->address = where;
   return Archive(std::move(state));

@@ -249,6 +249,13 @@ void Connection::lock(int64_t key, bool shared) {
           ")");
 }
 
+bool Connection::try_lock(int64_t key, bool shared) {
+  db::Statement attempt(*this,
+                        std::string(shared ? "SELECT pg_try_advisory_lock_shared(" : "SELECT pg_try_advisory_lock(") +
+                            std::to_string(key) + ")");
+  return attempt.step() && attempt.text(0) == "t";
+}
+
 void Connection::unlock(int64_t key, bool shared) noexcept {
   std::string sql = std::string(shared ? "SELECT pg_advisory_unlock_shared(" : "SELECT pg_advisory_unlock(") +
                     std::to_string(key) + ")";

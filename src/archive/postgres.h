@@ -47,6 +47,9 @@ class Connection final : public db::Connection {
   // Session-level advisory locks, released by unlock or when the connection ends (a killed
   // process's locks go with its connection).
   void lock(int64_t key, bool shared);
+  // The lock if it can be had now (then held, as lock() holds it); false when another session
+  // holds it in a conflicting mode.
+  bool try_lock(int64_t key, bool shared);
   void unlock(int64_t key, bool shared) noexcept;
 
   pg_conn* handle() const { return connection_; }

@@ -117,6 +117,33 @@ TEST(ServerArchive, ALostDatabaseBesideStoredObjectsIsRefusedAndNeverRecreatedEm
   EXPECT_EQ(client.value("SELECT COUNT(*) FROM pg_tables WHERE schemaname = 'public'"), "0");
 }
 
+// Issue 29, fault 2 on the server engine: while `archive rebuild-index` fills the new database
+// (holding the store lock alone), a command that opens it is told to wait, not that the index
+// is lost; once the lock is free it is refused as before.
+TEST(ServerArchive, AnOpenDuringARebuildIsToldToWait) {
+  REQUIRE_SERVER();
+  TemporaryFolder folder;
+  testing::write_series(folder / "in", 2);
+  {
+    Archive archive = Archive::open(testing::archive_at(folder / "objects"), OpenMode::CreateIfMissing);
+    archive.import_paths({folder / "in"}, quiet());
+  }
+  const std::string database = testing::new_test_database();
+  const std::string address = database + "?objects=" + (folder / "objects").string();
+  {
+    postgres::Connection rebuild(database);
+    rebuild.lock(postgres::kStoreLockKey, false);  // as rebuild-index holds it
+    try {
+      Archive::open(address);
+      ADD_FAILURE() << "opened during the rebuild";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), ErrorCode::kArchiveBusy);
+      EXPECT_NE(std::string(e.what()).find("being rebuilt"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_EQ(open_error(address), ErrorCode::kIndexDamaged);
+}
+
 TEST(ServerArchive, ALostDatabaseIsRebuiltFromTheSharedFolderRowForRow) {
   REQUIRE_SERVER();
   TemporaryFolder folder;
