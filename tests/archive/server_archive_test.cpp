@@ -102,16 +102,25 @@ TEST(ServerArchive, AMissingSharedObjectFolderIsRefusedBeforeAnythingIsWritten) 
   EXPECT_FALSE(std::filesystem::exists(folder / "absent"));
 }
 
+// A server archive of one small series in folder/objects whose database is then lost: the
+// address of the same shared folder with a new, empty database (and that database's).
+struct LostDatabase {
+  std::string database, address;
+};
+LostDatabase archive_whose_database_is_lost(const TemporaryFolder& folder) {
+  testing::write_series(folder / "in", 3);
+  Archive archive = Archive::open(testing::archive_at(folder / "objects"), OpenMode::CreateIfMissing);
+  archive.import_paths({folder / "in"}, quiet());
+  LostDatabase lost;
+  lost.database = testing::new_test_database();
+  lost.address = lost.database + "?objects=" + (folder / "objects").string();
+  return lost;
+}
+
 TEST(ServerArchive, ALostDatabaseBesideStoredObjectsIsRefusedAndNeverRecreatedEmpty) {
   REQUIRE_SERVER();
   TemporaryFolder folder;
-  testing::write_series(folder / "in", 3);
-  {
-    Archive archive = Archive::open(testing::archive_at(folder / "objects"), OpenMode::CreateIfMissing);
-    archive.import_paths({folder / "in"}, quiet());
-  }
-  // The index is lost: the same shared folder, an empty database.
-  const std::string lost = testing::new_test_database() + "?objects=" + (folder / "objects").string();
+  const std::string lost = archive_whose_database_is_lost(folder).address;
   EXPECT_EQ(open_error(lost, OpenMode::CreateIfMissing), ErrorCode::kIndexDamaged);
   Client client(lost);
   EXPECT_EQ(client.value("SELECT COUNT(*) FROM pg_tables WHERE schemaname = 'public'"), "0");
@@ -123,13 +132,7 @@ TEST(ServerArchive, ALostDatabaseBesideStoredObjectsIsRefusedAndNeverRecreatedEm
 TEST(ServerArchive, AnOpenDuringARebuildIsToldToWait) {
   REQUIRE_SERVER();
   TemporaryFolder folder;
-  testing::write_series(folder / "in", 2);
-  {
-    Archive archive = Archive::open(testing::archive_at(folder / "objects"), OpenMode::CreateIfMissing);
-    archive.import_paths({folder / "in"}, quiet());
-  }
-  const std::string database = testing::new_test_database();
-  const std::string address = database + "?objects=" + (folder / "objects").string();
+  const auto [database, address] = archive_whose_database_is_lost(folder);
   {
     postgres::Connection rebuild(database);
     rebuild.lock(postgres::kStoreLockKey, false);  // as rebuild-index holds it
