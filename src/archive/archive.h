@@ -23,6 +23,7 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -52,6 +53,7 @@ struct ImportReport {
   size_t identity_flags = 0;            // new identity flags raised by this import
   size_t restored = 0;                  // already archived files whose lost or damaged object file was written again
   std::vector<ImportProblem> problems;  // in the order met
+  std::set<int64_t> cases_with_new_images;  // the (default) cases of the patients new instances went to
   size_t files() const { return imported + already_archived + conflicts + failed; }
   bool all_ok() const { return conflicts == 0 && failed == 0; }
 };

@@ -84,6 +84,7 @@ void BatchWriter::commit(ImportReport& report, const ImportOptions& options) {
   report.imported += outcome.imported;
   report.already_archived += outcome.already_archived;
   report.identity_flags += outcome.identity_flags;
+  report.cases_with_new_images.merge(outcome.cases_with_new_images);
   if (options.on_archived)
     for (const auto& [path, result] : archived) options.on_archived(path, result);
   for (auto& problem : problems) {
@@ -125,6 +126,7 @@ ImportOutcome BatchWriter::insert(const ScannedFile& file, const std::string& no
   // archived_outcome() found no row for this SOP Instance UID, under the write lock.
   if (s.step()) transaction_->inserted_row("instances", s);
   s.reset();
+  report.cases_with_new_images.insert(patient.default_case);
   return ImportOutcome::Imported;
 }
 

@@ -1,10 +1,14 @@
 // maxillo import PATH...: archive DICOM files (folders recursively). One line per bad file on
 // stderr ("path: reason"), a summary on stdout, exit 1 when anything failed or conflicted.
 #include <iostream>
+#include <set>
 
 #include "archive/archive.h"
 #include "archive/archive_json.h"
+#include "casework/case_orientation.h"
 #include "cli/command.h"
+#include "core/error.h"
+#include "core/log.h"
 
 namespace maxillo::cli {
 namespace {
@@ -28,6 +32,19 @@ std::string summary_line(const ImportReport& r) {
   return line;
 }
 
+// Each case that gained images has its CT's header checked against the anatomy now (issue 28),
+// so that a contradiction is said at import (a warning naming the case), not first when planning
+// refuses. A case whose images make no volume (a report, a single slice) is not checked.
+void check_orientations(Archive& archive, const std::set<int64_t>& cases) {
+  for (int64_t case_id : cases) {
+    try {
+      casework::case_orientation(archive, case_id);
+    } catch (const Error& e) {
+      log::debug("case:", case_id, ": orientation not checked: ", e.what());
+    }
+  }
+}
+
 void run_import(const ImportArguments& args, CommandContext& ctx) {
   Archive archive = Archive::open(resolve_archive_dir(ctx.global), OpenMode::CreateIfMissing);
   ImportOptions options;
@@ -37,6 +54,7 @@ void run_import(const ImportArguments& args, CommandContext& ctx) {
     std::cerr << problem.path.string() << ": " << problem.reason << "\n";
   };
   ImportReport report = archive.import_paths(args.paths, options);
+  check_orientations(archive, report.cases_with_new_images);
   if (ctx.global.json)
     std::cout << json_text(to_json(report)) << "\n";
   else

@@ -25,7 +25,10 @@ TEST(OrientationCheck, AHeaderThatContradictsTheAnatomyIsFlaggedRefusedAndConfir
   ASSERT_EQ(converted.exit_code, 0) << converted.output;
   EXPECT_NE(converted.output.find("the vertex points inferior"), std::string::npos) << converted.output;
   EXPECT_NE(converted.output.find("mapped to -1000 and 40 HU"), std::string::npos) << converted.output;
-  ASSERT_EQ(run_command(maxillo + " -q import " + quote(folder / "dicom")).exit_code, 0);
+  const auto imported = run_command(maxillo + " import " + quote(folder / "dicom") + " 2>&1");
+  ASSERT_EQ(imported.exit_code, 0) << imported.output;
+  EXPECT_NE(imported.output.find("case:1: the header contradicts the anatomy"), std::string::npos)
+      << "said at import: " << imported.output;
 
   const auto checked = run_command(maxillo + " orientation 1 2>&1");
   EXPECT_EQ(checked.exit_code, 26) << checked.output;
