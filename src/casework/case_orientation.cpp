@@ -22,10 +22,8 @@ CaseCt case_ct(const Archive& archive, int64_t case_id) {
   return ct;
 }
 
-}  // namespace
-
-records::OrientationRecord case_orientation(Archive& archive, int64_t case_id, const Volume* ct) {
-  const CaseCt checked = case_ct(archive, case_id);
+// The record of this CT content: stored, or the check run now and stored.
+records::OrientationRecord orientation_of(Archive& archive, int64_t case_id, const CaseCt& checked, const Volume* ct) {
   if (auto stored = records::stored_orientation(archive, case_id, checked.content_hash)) return *stored;
   const Volume loaded = ct ? Volume{} : records::load_archived_series(archive, checked.series);
   const auto record = records::orientation_record(checked.series, check_head_orientation(ct ? *ct : loaded));
@@ -35,6 +33,12 @@ records::OrientationRecord case_orientation(Archive& archive, int64_t case_id, c
   else
     log::debug("case:", case_id, ": ", record.finding);
   return record;
+}
+
+}  // namespace
+
+records::OrientationRecord case_orientation(Archive& archive, int64_t case_id, const Volume* ct) {
+  return orientation_of(archive, case_id, case_ct(archive, case_id), ct);
 }
 
 void require_trusted_orientation(Archive& archive, int64_t case_id, const std::string& what) {
@@ -48,9 +52,10 @@ void require_trusted_orientation(Archive& archive, int64_t case_id, const std::s
 }
 
 records::OrientationRecord confirm_orientation(Archive& archive, int64_t case_id) {
-  auto record = case_orientation(archive, case_id);
+  const CaseCt checked = case_ct(archive, case_id);  // the series' content hashed once
+  auto record = orientation_of(archive, case_id, checked, nullptr);
   record.confirmed_at = utc_now();
-  records::store_orientation(archive, case_id, case_ct(archive, case_id).content_hash, record);
+  records::store_orientation(archive, case_id, checked.content_hash, record);
   return record;
 }
 
