@@ -3,6 +3,7 @@
 // mirrored or rotated), as a wrong direction matrix or slice order would give them.
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <fstream>
 #include <utility>
@@ -131,6 +132,16 @@ TEST(HeadOrientation, TheRealCadaverHeadAndItsFlippedCopy) {
   const HeadOrientation flipped = check_head_orientation(with_header_changed(head, kFlipY));
   EXPECT_EQ(flipped.face, AxisVerdict::kReversed) << flipped.finding();
   EXPECT_TRUE(flipped.contradicts_header());
+
+  // The head as scanned in another pose: turned up to 15 degrees about each axis (the patient
+  // frame of a head tilted on the table). The check reads the same anatomy and still agrees.
+  for (int axis = 0; axis < 3; ++axis)
+    for (double degrees : {-15.0, 15.0}) {
+      const Eigen::Matrix3d turn = Eigen::AngleAxisd(degrees * M_PI / 180, Eigen::Vector3d::Unit(axis)).matrix();
+      const HeadOrientation posed = check_head_orientation(with_header_changed(head, turn));
+      EXPECT_FALSE(posed.contradicts_header()) << axis << " " << degrees << ": " << posed.finding();
+      EXPECT_EQ(posed.face, AxisVerdict::kAsTheHeaderSays) << axis << " " << degrees << ": " << posed.finding();
+    }
 
   // The raw slices as a MetaImage with an identity direction: no HU offset (CT numbers, HU +
   // 1024) and the slices stored vertex first, so the vertex lies at -z.
