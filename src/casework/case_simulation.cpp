@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "casework/automatic_landmarks.h"
 #include "ceph/landmark_frame.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
@@ -194,10 +195,12 @@ SimulationResult simulate_case(Archive& archive, int64_t case_id, const Simulati
   auto contents = archive.case_contents(case_id);
   const int64_t series = records::primary_series(contents);
   require_trusted_orientation(archive, case_id, "the face prediction");
-  const LandmarkSet landmarks = records::latest_landmarks(archive, case_id);
-  if (landmarks.empty())
-    throw Error(ErrorCode::kBadValue, "case:" + std::to_string(case_id),
-                "the case has no landmarks: attach them first (maxillo ceph add)");
+  const std::string subject = "case:" + std::to_string(case_id);
+  const auto stored = case_landmarks(archive, case_id);
+  if (!stored || stored->landmarks.empty())
+    throw Error(ErrorCode::kBadValue, subject, "the case has no landmarks and no CT to find them on");
+  require_confirmed_landmarks(*stored, subject, request.accept_flagged);
+  const LandmarkSet& landmarks = stored->landmarks;
   planning::validate_plan(request.plan, "plan");
 
   const CaseTissues loaded = given ? CaseTissues{} : load_case_tissues(archive, case_id, landmarks);

@@ -29,7 +29,8 @@ struct SimulationRequest {
   // The case's face model when the caller has it (PlannedCase::face_model with these options);
   // null: built here. A model of other tissues, landmarks or meshing options is refused.
   std::shared_ptr<const FaceModel> face_model;
-  std::filesystem::path out;  // folder (created) for the files and pictures
+  std::filesystem::path out;    // folder (created) for the files and pictures
+  bool accept_flagged = false;  // use automatic landmarks that failed a check (automatic_landmarks.h)
 };
 
 struct Uncertainty {

@@ -5,6 +5,7 @@
 #include "core/log.h"
 #include "records/case_landmarks.h"
 #include "records/derivation.h"
+#include "casework/automatic_landmarks.h"
 #include "casework/case_orientation.h"
 #include "casework/case_tissues.h"
 #include "casework/plan_outputs.h"
@@ -15,16 +16,18 @@
 namespace maxillo::casework {
 
 CasePlanResult apply_case_plan(Archive& archive, int64_t case_id, const std::filesystem::path& out_dir,
-                               const CaseTissues* tissues) {
+                               const CaseTissues* tissues, bool accept_flagged) {
   const std::string subject = "case:" + std::to_string(case_id);
   CasePlanResult out;
   const auto plan = records::latest_plan(archive, case_id);
   if (!plan) throw Error(ErrorCode::kNotFound, subject, "the case has no plan: make one with `maxillo plan create`");
   out.plan = *plan;
   require_trusted_orientation(archive, case_id, "planning");
-  const LandmarkSet landmarks = records::latest_landmarks(archive, case_id);
-  if (landmarks.empty())
-    throw Error(ErrorCode::kNotFound, subject, "the case has no landmarks: attach them with `maxillo ceph add`");
+  const auto stored = case_landmarks(archive, case_id);
+  if (!stored || stored->landmarks.empty())
+    throw Error(ErrorCode::kNotFound, subject, "the case has no landmarks and no CT to find them on");
+  require_confirmed_landmarks(*stored, subject, accept_flagged);
+  const LandmarkSet& landmarks = stored->landmarks;
 
   out.tissues = tissues ? *tissues : load_case_tissues(archive, case_id, landmarks);
   out.result =

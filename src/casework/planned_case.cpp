@@ -2,6 +2,7 @@
 
 #include <mutex>
 
+#include "casework/automatic_landmarks.h"
 #include "core/error.h"
 #include "core/log.h"
 #include "core/sha256.h"
@@ -40,9 +41,10 @@ PlannedCase load_planned_case(Archive& archive, int64_t case_id, const CaseTissu
   const std::string subject = "case:" + std::to_string(case_id);
   PlannedCase c;
   c.case_id = case_id;
-  c.landmarks = records::latest_landmarks(archive, case_id);
-  if (c.landmarks.empty())
-    throw Error(ErrorCode::kNotFound, subject, "the case has no landmarks: attach them first (maxillo ceph add)");
+  const auto stored = case_landmarks(archive, case_id);
+  if (!stored || stored->landmarks.empty())
+    throw Error(ErrorCode::kNotFound, subject, "the case has no landmarks and no CT to find them on");
+  c.landmarks = stored->landmarks;
   auto plan = records::latest_plan(archive, case_id);
   if (!plan) throw Error(ErrorCode::kNotFound, subject, "the case has no plan: make one first (maxillo plan create)");
   c.plan = std::move(*plan);

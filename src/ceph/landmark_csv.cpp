@@ -11,19 +11,24 @@ LandmarkSet parse_csv(std::string_view text, const std::string& source) {
   std::string raw;
   size_t number = 0;
   bool first_content = true;
+  bool more_columns = false;  // a header "label,x,y,z,..." announces columns after the point
   while (std::getline(in, raw)) {
     ++number;
     std::string_view line = trim(raw);
     if (line.empty() || line.front() == '#') continue;
     auto fields = split(line, ',');
-    if (first_content && lower(line) == "label,x,y,z") {  // optional header
+    if (first_content && lower(line).starts_with("label,x,y,z")) {  // optional header
       first_content = false;
+      more_columns = lower(line) != "label,x,y,z";
       continue;
     }
     first_content = false;
-    if (fields.size() != 4)
-      out.fail(line_name(number), "expected 4 columns label,x,y,z, found " + std::to_string(fields.size()));
+    if (more_columns ? fields.size() < 4 : fields.size() != 4)
+      out.fail(line_name(number), std::string(more_columns ? "expected at least" : "expected") +
+                                      " 4 columns label,x,y,z, found " + std::to_string(fields.size()));
     std::string where = line_name(number);
+    // An absent landmark (as `landmarks detect` writes one): a label without coordinates.
+    if (more_columns && trim(fields[1]).empty() && trim(fields[2]).empty() && trim(fields[3]).empty()) continue;
     Eigen::Vector3d p(out.parse_number(fields[1], "x", where), out.parse_number(fields[2], "y", where),
                       out.parse_number(fields[3], "z", where));
     out.add(std::string(fields[0]), p, where);

@@ -12,8 +12,10 @@
 // or the control point (JSON content): missing column, non-numeric coordinate, duplicate label,
 // empty label, unknown coordinate system. Unreadable files: Error(kFileNotFound/...).
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "ceph/landmark.h"
 
@@ -27,6 +29,17 @@ LandmarkFormat landmark_format_for(const std::filesystem::path& path);
 LandmarkSet read_landmarks(const std::filesystem::path& path);
 // Crash-safe write (temporary file + rename); Error(kWriteFailed) on failure.
 void write_landmarks(const std::filesystem::path& path, const LandmarkSet& landmarks);
+
+// A control point of a 3D Slicer markups file: a position, or none ("missing", as an absent
+// landmark is written), and a description shown beside it.
+struct MarkupPoint {
+  std::string label;
+  std::optional<Eigen::Vector3d> position;
+  std::string description;
+  bool selected = true;
+};
+// The markups document (.mrk.json, LPS) of these points.
+std::string format_markup_points(const std::vector<MarkupPoint>& points);
 
 // The same on text; source_name only labels errors.
 LandmarkSet parse_landmarks(std::string_view text, LandmarkFormat format, const std::string& source_name);

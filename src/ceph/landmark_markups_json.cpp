@@ -1,16 +1,14 @@
 // 3D Slicer markups JSON (.mrk.json, schema v1.0.3).
 #include "ceph/landmark_format_support.h"
+#include "ceph/landmark_io.h"
 #include "core/json.h"
 #include "core/json_input.h"
 
 namespace maxillo::landmark_format {
-namespace {
 
 constexpr const char* kMarkupsSchema =
     "https://raw.githubusercontent.com/slicer/slicer/master/Modules/Loadable/Markups/Resources/Schema/"
     "markups-schema-v1.0.3.json#";
-
-}  // namespace
 
 LandmarkSet parse_markups_json(std::string_view text, const std::string& source) {
   Collector out(source);
@@ -36,6 +34,8 @@ LandmarkSet parse_markups_json(std::string_view text, const std::string& source)
     size_t point_number = 0;
     for (const Json& point : markup["controlPoints"]) {
       ++point_number;
+      // A point not placed (Slicer's "missing", as `landmarks detect` writes an absent one).
+      if (point.contains("positionStatus") && point["positionStatus"] == "missing") continue;
       std::string where = where_markup + ", control point " + std::to_string(point_number);
       if (!point.contains("label") || !point["label"].is_string()) out.fail(where, "missing \"label\"");
       where += " ('" + point["label"].get<std::string>() + "')";
@@ -54,19 +54,31 @@ LandmarkSet parse_markups_json(std::string_view text, const std::string& source)
 }
 
 std::string format_markups_json(const LandmarkSet& set) {
-  Json points = Json::array();
+  std::vector<MarkupPoint> points;
+  for (const auto& l : set) points.push_back({l.label, l.position, "", true});
+  return format_markup_points(points);
+}
+
+}  // namespace maxillo::landmark_format
+
+namespace maxillo {
+
+std::string format_markup_points(const std::vector<MarkupPoint>& points) {
+  Json control_points = Json::array();
   int id = 0;
-  for (const auto& l : set)
-    points.push_back({{"id", std::to_string(++id)},
-                      {"label", l.label},
-                      {"description", ""},
-                      {"associatedNodeID", ""},
-                      {"position", {l.position.x(), l.position.y(), l.position.z()}},
-                      {"orientation", {-1.0, 0.0, 0.0, 0.0, -1.0, 0.0, 0.0, 0.0, 1.0}},
-                      {"selected", true},
-                      {"locked", false},
-                      {"visibility", true},
-                      {"positionStatus", "defined"}});
+  for (const auto& p : points) {
+    const Eigen::Vector3d at = p.position.value_or(Eigen::Vector3d::Zero());
+    control_points.push_back({{"id", std::to_string(++id)},
+                              {"label", p.label},
+                              {"description", p.description},
+                              {"associatedNodeID", ""},
+                              {"position", {at.x(), at.y(), at.z()}},
+                              {"orientation", {-1.0, 0.0, 0.0, 0.0, -1.0, 0.0, 0.0, 0.0, 1.0}},
+                              {"selected", p.selected},
+                              {"locked", false},
+                              {"visibility", p.position.has_value()},
+                              {"positionStatus", p.position ? "defined" : "missing"}});
+  }
   Json markup = {{"type", "Fiducial"},
                  {"coordinateSystem", "LPS"},
                  {"coordinateUnits", "mm"},
@@ -74,10 +86,10 @@ std::string format_markups_json(const LandmarkSet& set) {
                  {"fixedNumberOfControlPoints", false},
                  {"labelFormat", "%N-%d"},
                  {"lastUsedControlPointNumber", id},
-                 {"controlPoints", points},
+                 {"controlPoints", control_points},
                  {"measurements", Json::array()}};
-  Json document = {{"@schema", kMarkupsSchema}, {"markups", Json::array({markup})}};
+  Json document = {{"@schema", landmark_format::kMarkupsSchema}, {"markups", Json::array({markup})}};
   return document.dump(4) + "\n";
 }
 
-}  // namespace maxillo::landmark_format
+}  // namespace maxillo

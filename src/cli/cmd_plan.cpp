@@ -135,16 +135,17 @@ void print_result(const planning::PlanResult& r) {
     std::printf("forward simulation %-4s error %.3f mm\n", p.label.c_str(), p.error_mm);
 }
 
-int run_apply(const std::string& case_text, const std::filesystem::path& out, bool predict_face,
+int run_apply(const std::string& case_text, const std::filesystem::path& out, bool predict_face, bool accept_flagged,
               const GlobalOptions& global) {
   auto archive = Archive::open(resolve_archive_dir(global));
   const int64_t case_id = archive.resolve_case(case_text);
-  const casework::CasePlanResult applied = casework::apply_case_plan(archive, case_id, out);
+  const casework::CasePlanResult applied = casework::apply_case_plan(archive, case_id, out, nullptr, accept_flagged);
   if (predict_face && !applied.result.moves.empty()) {
     // The face for the planned moves (soft tissue engine, pipeline/case_simulation.h).
     casework::SimulationRequest simulation;
     simulation.plan = applied.plan.plan;
     simulation.out = out / "soft-tissue";
+    simulation.accept_flagged = accept_flagged;
     const auto predicted = casework::simulate_case(archive, case_id, simulation, &applied.tissues);
     if (!global.json)
       std::printf("predicted face: largest skin displacement %.1f mm (%s)\n", predicted.views.max_displacement_mm,
@@ -227,8 +228,13 @@ void attach_plan(CLI::App& app, CommandContext& ctx) {
                    "soft-tissue/ (the predicted face)")
       ->required();
   apply->add_flag("--no-face", *no_face, "skip the soft-tissue prediction of the planned face");
-  apply->callback(
-      [apply_case, out, no_face, &ctx] { ctx.exit_code = run_apply(*apply_case, *out, !*no_face, ctx.global); });
+  auto accept_flagged = std::make_shared<bool>(false);
+  apply->add_flag(
+      "--accept-flagged", *accept_flagged,
+      "plan on automatic landmarks that failed a check (see `maxillo landmarks detect`) without confirming them");
+  apply->callback([apply_case, out, no_face, accept_flagged, &ctx] {
+    ctx.exit_code = run_apply(*apply_case, *out, !*no_face, *accept_flagged, ctx.global);
+  });
 }
 
 }  // namespace maxillo::cli

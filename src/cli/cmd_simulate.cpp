@@ -24,6 +24,7 @@ struct SimulateOptions {
   int max_tets = 100000;
   double cell_mm = 4.0;
   bool uncertainty = false;
+  bool accept_flagged = false;
   std::filesystem::path out = "simulation";
 };
 
@@ -42,6 +43,7 @@ casework::SimulationRequest make_request(const SimulateOptions& o) {
   request.options.meshing.max_tets = o.max_tets;
   request.options.meshing.cell_size_mm = o.cell_mm;
   request.uncertainty = o.uncertainty;
+  request.accept_flagged = o.accept_flagged;
   request.out = o.out;
   return request;
 }
@@ -94,6 +96,8 @@ void attach_simulate(CLI::App& app, CommandContext& ctx) {
   app.add_option("--cell-mm", options->cell_mm, "target tetrahedron size, mm (grows to meet --max-tets)")
       ->check(kCellMm)
       ->capture_default_str();
+  app.add_flag("--accept-flagged", options->accept_flagged,
+               "predict on automatic landmarks that failed a check (see `maxillo landmarks detect`)");
   app.add_flag("--uncertainty", options->uncertainty,
                "also solve with the other models and Poisson ratios 0.45 and 0.49: per-vertex spread");
   app.add_option("--out", options->out, "output folder: predicted skin (vtp, stl, ply), model (vtu), renders, json")

@@ -20,6 +20,7 @@ void attach_demo(CLI::App&, CommandContext&);
 void attach_sample(CLI::App&, CommandContext&);
 void attach_occlude(CLI::App&, CommandContext&);
 void attach_ceph(CLI::App&, CommandContext&);
+void attach_landmarks(CLI::App&, CommandContext&);
 void attach_followup(CLI::App&, CommandContext&);
 void attach_plan(CLI::App&, CommandContext&);
 void attach_simulate(CLI::App&, CommandContext&);
@@ -68,6 +69,9 @@ std::span<const CommandSpec> command_table() {
                   "rigid registration of a post-operative CT to the pre-operative CT (mutual information)",
                   attach_register},
       CommandSpec{"report", "Reports", "consultation report of a case as PDF", attach_report},
+      CommandSpec{"landmarks", "Cephalometry",
+                  "find the cephalometric landmarks automatically (landmarks detect), with confidences and checks",
+                  attach_landmarks},
       CommandSpec{"ceph", "Cephalometry", "cephalometric measurements, time points, ISBI check", attach_ceph},
       CommandSpec{"followup", "Cephalometry", "follow-up tables of a case or a cohort CSV", attach_followup},
       CommandSpec{"sample", "General", "write the synthetic phantom: DICOM CT series and landmarks", attach_sample},

@@ -11,8 +11,11 @@
 #include "core/progress.h"
 #include "core/utc_time.h"
 #include "core/version.h"
+#include "casework/automatic_landmarks.h"
+#include "core/log.h"
 #include "records/case_landmarks.h"
 #include "sections/cephalometry_section.h"
+#include "sections/landmark_section.h"
 #include "records/derivation.h"
 #include "records/plan_archive.h"
 #include "sections/planning_section.h"
@@ -90,8 +93,26 @@ report::ReportModel model_header(const Archive& archive, const CaseContents& con
   return model;
 }
 
+// "29 points placed by hand", or how many were found automatically and which are in doubt.
+std::string landmark_summary(const std::optional<records::StoredLandmarks>& stored, const std::string& failure) {
+  if (!stored || stored->landmarks.empty())
+    return failure.empty() ? "none attached" : "none attached; the automatic detection failed: " + failure;
+  if (!stored->automatic) return std::to_string(stored->landmarks.size()) + " points (" + stored->source + ")";
+  std::string text = std::to_string(stored->landmarks.size()) + " points found automatically (" +
+                     stored->automatic->method + "), no landmark file attached";
+  if (!stored->automatic->flagged.empty()) {
+    text += "; flagged, not for planning until confirmed:";
+    for (const auto& [label, why] : stored->automatic->flagged) text += " " + label + " (" + why + ");";
+  }
+  if (!stored->automatic->absent.empty()) {
+    text += " absent:";
+    for (const auto& [label, why] : stored->automatic->absent) text += " " + label;
+  }
+  return text;
+}
+
 report::Section summary_section(const CaseContents& contents, int64_t series, const casework::CaseSurfaces& surfaces,
-                                const LandmarkSet& landmarks, const records::OrientationRecord& orientation) {
+                                const std::string& landmarks, const records::OrientationRecord& orientation) {
   std::string description;
   for (const auto& entry : contents.series)
     if (entry.series.id == series) description = entry.series.description + " (" + entry.role + ")";
@@ -99,7 +120,7 @@ report::Section summary_section(const CaseContents& contents, int64_t series, co
       {"Series analysed", description},
       {"Skin surface", std::to_string(surfaces.skin.face_count()) + " triangles"},
       {"Bone surface", std::to_string(surfaces.bone.face_count()) + " triangles"},
-      {"Landmarks", landmarks.empty() ? "none attached" : std::to_string(landmarks.size()) + " points"},
+      {"Landmarks", landmarks},
       {"Orientation check",
        orientation.finding +
            (orientation.confirmed_at.empty() ? "" : " Confirmed by hand at " + orientation.confirmed_at + ".")},
@@ -157,7 +178,17 @@ ConsultationResult write_consultation_report(Archive& archive, int64_t case_id, 
   progress.advance();
 
   start = Clock::now();
-  auto landmarks = records::latest_landmarks(archive, case_id);
+  // A case without landmarks gets the set detected on its CT (stored, so that the sections
+  // below read it); a scan the detection cannot read still gets its report, saying why.
+  std::string detection_failure;
+  std::optional<records::StoredLandmarks> stored_landmarks;
+  try {
+    stored_landmarks = casework::case_landmarks(archive, case_id);
+  } catch (const Error& e) {
+    detection_failure = e.what();
+    log::warning("case:", case_id, ": ", detection_failure);
+  }
+  const LandmarkSet landmarks = stored_landmarks ? stored_landmarks->landmarks : LandmarkSet{};
   auto views = casework::case_views(archive, case_id, surfaces, landmarks, options.views);
   result.seconds_views = seconds_since(start);
   progress.advance();
@@ -168,8 +199,11 @@ ConsultationResult write_consultation_report(Archive& archive, int64_t case_id, 
   if (!orientation.trusted())
     model.warning_banner =
         "THE CT HEADER CONTRADICTS THE ANATOMY: LEFT AND RIGHT CANNOT BE TRUSTED (see Summary; not for planning)";
-  model.sections.push_back(summary_section(contents, series, surfaces, landmarks, orientation));
+  model.sections.push_back(
+      summary_section(contents, series, surfaces, landmark_summary(stored_landmarks, detection_failure), orientation));
   model.sections.push_back(views_section(views));
+  if (auto landmarks_page = sections::landmark_section(stored_landmarks))
+    model.sections.push_back(std::move(*landmarks_page));
   model.sections.push_back(sections::case_cephalometry_section(archive, case_id, sex_for_norms(contents.patient.sex)));
   if (auto plan_result = records::latest_plan_result(archive, case_id))
     model.sections.push_back(sections::planning_section(*plan_result));

@@ -59,7 +59,33 @@ StoredLandmarks read_landmark_record(const ArtefactRecord& record) {
       r.fail("date", "must be YYYY-MM-DD or empty");
   }
   stored.created_at = record.created_at;
+  if (r.has("automatic")) {
+    JsonReader a = r.object("automatic");
+    AutomaticFacts facts;
+    facts.method = a.required_text("method");
+    for (const auto& [label, value] : a.at("confidence").items())
+      facts.confidence[label] = value.is_number() ? value.get<double>() : 0.0;
+    for (const auto& [label, value] : a.at("flagged").items())
+      facts.flagged[label] = value.is_string() ? value.get<std::string>() : std::string();
+    for (const auto& [label, value] : a.at("absent").items())
+      facts.absent[label] = value.is_string() ? value.get<std::string>() : std::string();
+    stored.automatic = std::move(facts);
+  }
   return stored;
+}
+
+// The newest landmark artefact given by hand, else the newest automatic one.
+const ArtefactRecord* preferred_record(const std::vector<ArtefactRecord>& artefacts) {
+  const ArtefactRecord* by_hand = nullptr;
+  const ArtefactRecord* automatic = nullptr;
+  for (const auto& record : artefacts) {
+    if (record.kind != kLandmarksKind) continue;
+    const Json parameters = Json::parse(record.parameters_json, nullptr, /*allow_exceptions=*/false);
+    const bool detected = parameters.is_object() && parameters.contains("automatic");
+    const ArtefactRecord*& newest = detected ? automatic : by_hand;
+    if (!newest || record.id > newest->id) newest = &record;
+  }
+  return by_hand ? by_hand : automatic;
 }
 
 LandmarkSet read_set(const Archive& archive, const ArtefactRecord& record) {
@@ -105,9 +131,35 @@ LandmarkSet latest_landmarks(const Archive& archive, int64_t case_id) {
 }
 
 LandmarkSet latest_landmarks(const Archive& archive, const std::vector<ArtefactRecord>& artefacts) {
-  const ArtefactRecord* newest = newest_artefact(artefacts, kLandmarksKind);
-  if (!newest) return {};
-  return read_set(archive, *newest);
+  const ArtefactRecord* preferred = preferred_record(artefacts);
+  if (!preferred) return {};
+  return read_set(archive, *preferred);
+}
+
+std::optional<StoredLandmarks> preferred_landmarks(const Archive& archive, int64_t case_id) {
+  const auto artefacts = archive.artefacts(case_id);
+  const ArtefactRecord* preferred = preferred_record(artefacts);
+  if (!preferred) return std::nullopt;
+  StoredLandmarks stored = read_landmark_record(*preferred);
+  stored.landmarks = read_set(archive, *preferred);
+  return stored;
+}
+
+void attach_automatic_landmarks(Archive& archive, int64_t case_id, const LandmarkSet& present,
+                                const AutomaticFacts& facts) {
+  auto text = format_landmarks(present, LandmarkFormat::kSlicerMarkupsJson);
+  auto sha = archive.store_object(text);
+  const Json automatic{
+      {"method", facts.method}, {"confidence", facts.confidence}, {"flagged", facts.flagged}, {"absent", facts.absent}};
+  const Json parameters{{"source", "automatic (" + facts.method + ")"},
+                        {"count", present.size()},
+                        {"frame", frame_json({})},
+                        {"automatic", automatic}};
+  Sha256 inputs;
+  inputs.update(sha);
+  inputs.update("\nautomatic " + facts.method);
+  archive.add_artefact(
+      NewArtefact{case_id, kLandmarksKind, sha, "application/json", inputs.hex_digest(), parameters.dump()});
 }
 
 std::vector<StoredLandmarks> landmark_history(const Archive& archive, int64_t case_id) {

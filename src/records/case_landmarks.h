@@ -9,6 +9,7 @@
 // plane, z = 0; see ceph/sagittal_projection.h): "frame" then says "cephalogram" and the
 // parameters carry the CephalogramAxes used to read it.
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -37,10 +38,20 @@ void attach_landmarks(Archive& archive, int64_t case_id, const LandmarkSet& land
 void attach_landmarks(Archive& archive, int64_t case_id, const LandmarkSet& landmarks, const std::string& source,
                       const TimePoint& time_point, const LandmarkFrame& frame = {});
 
-// The newest landmark set attached to the case; empty when there is none.
+// The landmarks of preferred_landmarks (by hand before automatic); empty when there are none.
 LandmarkSet latest_landmarks(const Archive& archive, int64_t case_id);
 // The same, among the case's artefacts already read (archive.artefacts(case_id)).
 LandmarkSet latest_landmarks(const Archive& archive, const std::vector<ArtefactRecord>& artefacts);
+
+// What an automatic detection (`maxillo landmarks detect`) said of the set beside the points:
+// kept in the artefact's parameters ("automatic") so that planning can refuse the flagged ones
+// and the report can show every doubt.
+struct AutomaticFacts {
+  std::string method;                          // e.g. "maxillo-landmarks 1"
+  std::map<std::string, double> confidence;    // label -> 0..1 (present landmarks)
+  std::map<std::string, std::string> flagged;  // label -> why (its failed checks, or weak evidence)
+  std::map<std::string, std::string> absent;   // label -> why it is not in the set
+};
 
 struct StoredLandmarks {
   int64_t artefact_id = 0;
@@ -50,7 +61,17 @@ struct StoredLandmarks {
   std::string created_at;
   int version = 1;  // 1 = first set stored for this time point, 2 = its first revision, ...
   LandmarkSet landmarks;
+  std::optional<AutomaticFacts> automatic;  // set for a detected set, empty for one given by hand
 };
+
+// Stores a detected set (its present landmarks) with the facts of its detection; its source is
+// "automatic (<method>)".
+void attach_automatic_landmarks(Archive& archive, int64_t case_id, const LandmarkSet& present,
+                                const AutomaticFacts& facts);
+
+// The set a case works with: the newest set given by hand (a file, `ceph add`), which always
+// takes precedence, else the newest automatic set; nullopt when the case has none.
+std::optional<StoredLandmarks> preferred_landmarks(const Archive& archive, int64_t case_id);
 
 // Every stored set of the case, oldest first (the history).
 std::vector<StoredLandmarks> landmark_history(const Archive& archive, int64_t case_id);

@@ -2,6 +2,7 @@
 // would run it: wrap as DICOM, import, report. Skipped where the data is absent.
 #include <gtest/gtest.h>
 
+#include "support/cadaver_dicom.h"
 #include "support/pdf_tools.h"
 #include "support/temporary_folder.h"
 
@@ -10,17 +11,13 @@ namespace {
 using testing::quote;
 using testing::run_command;
 
-const std::filesystem::path kCthead = std::filesystem::path(MAXILLO_SHARED_DATA) / "cthead-stanford";
-
 TEST(CadaverReport, WrapImportAndReport) {
-  if (!std::filesystem::exists(kCthead / "slices" / "CThead.1"))
-    GTEST_SKIP() << "real data absent: " << kCthead << " (see ../shared/data/README.md)";
+  if (!testing::cadaver_present())
+    GTEST_SKIP() << "real data absent: " << testing::cadaver_data() << " (see ../shared/data/README.md)";
   testing::TemporaryFolder folder("maxillo-cadaver");
   const std::string maxillo = std::string(MAXILLO_BINARY) + " --archive " + quote(folder / "archive");
 
-  auto wrap =
-      run_command(std::string("bash ") + MAXILLO_SOURCE_DIR + "/scripts/cthead-to-dicom " + quote(folder / "ct") +
-                  " --data " + quote(kCthead / "slices") + " --maxillo " + MAXILLO_BINARY + " 2>&1");
+  const auto wrap = testing::wrap_cadaver_as_dicom(folder / "ct");
   ASSERT_EQ(wrap.exit_code, 0) << wrap.output;
   auto import = run_command(maxillo + " import " + quote(folder / "ct") + " 2>&1");
   ASSERT_EQ(import.exit_code, 0) << import.output;
@@ -31,7 +28,9 @@ TEST(CadaverReport, WrapImportAndReport) {
   EXPECT_EQ(run_command("qpdf --check " + quote(folder / "report.pdf") + " >/dev/null 2>&1").exit_code, 0);
   auto text = testing::pdf_text(folder / "report.pdf");
   EXPECT_NE(text.find("CThead"), std::string::npos);
-  EXPECT_NE(text.find("patient axes"), std::string::npos) << "no landmarks: the camera uses the scanner axes";
+  // No landmark file: the landmarks are found on the CT and stored, and the report says so.
+  EXPECT_NE(text.find("found automatically"), std::string::npos) << text.substr(0, 2000);
+  EXPECT_NE(text.find("SNA"), std::string::npos) << "the cephalometry of the automatic landmarks";
   auto views = testing::pdf_images(folder / "report.pdf", folder / "images");
   ASSERT_EQ(views.size(), 6u);
   for (const auto& view : views) EXPECT_GT(view.foreground_fraction, 0.1) << view.file;

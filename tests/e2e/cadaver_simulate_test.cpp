@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "core/json.h"
+#include "support/cadaver_dicom.h"
 #include "support/run_command.h"
 #include "support/temporary_folder.h"
 
@@ -14,8 +15,6 @@ namespace maxillo {
 namespace {
 using testing::quote;
 using testing::run_command;
-
-const std::filesystem::path kCthead = std::filesystem::path(MAXILLO_SHARED_DATA) / "cthead-stanford";
 
 // Landmarks placed by hand on mid-sagittal and axial slices of the scan as wrapped by
 // scripts/cthead-to-dicom (LPS mm; the head's midline is at x = -21.5). Within a few mm: enough
@@ -41,13 +40,11 @@ PoL,40.5,20,110
 )";
 
 TEST(CadaverSimulate, LeFortAdvancementOnTheRealHead) {
-  if (!std::filesystem::exists(kCthead / "slices" / "CThead.1"))
-    GTEST_SKIP() << "real data absent: " << kCthead << " (see ../shared/data/README.md)";
+  if (!testing::cadaver_present())
+    GTEST_SKIP() << "real data absent: " << testing::cadaver_data() << " (see ../shared/data/README.md)";
   testing::TemporaryFolder folder("maxillo-cadaver-simulate");
   const std::string maxillo = std::string(MAXILLO_BINARY) + " --archive " + quote(folder / "archive");
-  auto wrap =
-      run_command(std::string("bash ") + MAXILLO_SOURCE_DIR + "/scripts/cthead-to-dicom " + quote(folder / "ct") +
-                  " --data " + quote(kCthead / "slices") + " --maxillo " + MAXILLO_BINARY + " 2>&1");
+  const auto wrap = testing::wrap_cadaver_as_dicom(folder / "ct");
   ASSERT_EQ(wrap.exit_code, 0) << wrap.output;
   ASSERT_EQ(run_command(maxillo + " import " + quote(folder / "ct") + " 2>&1").exit_code, 0);
   std::ofstream(folder / "landmarks.csv") << kLandmarks;

@@ -1,0 +1,225 @@
+#include "landmarking/landmark_detection.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "core/error.h"
+#include "landmarking/bone_surface.h"
+#include "landmarking/head_volume.h"
+#include "landmarking/landmark_template.h"
+#include "landmarking/lateral_landmarks.h"
+#include "landmarking/mandible_landmarks.h"
+#include "landmarking/midline_landmarks.h"
+#include "landmarking/profile.h"
+#include "landmarking/sella.h"
+
+namespace maxillo::landmarking {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180;
+constexpr double kSnAboveFrankfortDeg = 7;  // adult mean: S-N rises this much anteriorly over Frankfort
+constexpr double kSurfaceSpacingMm = 1.5;   // the symmetry search's grid
+constexpr double kCoarseSpacingMm = 1.0;    // the frame-finding head volumes
+constexpr double kMinBoneCm3 = 40;          // less is not a skull
+
+// A frame (frame -> LPS) with the given axes (columns) and origin.
+Eigen::Isometry3d frame_of(const Eigen::Vector3d& x, const Eigen::Vector3d& y, const Eigen::Vector3d& origin) {
+  Eigen::Isometry3d f = Eigen::Isometry3d::Identity();
+  f.linear().col(0) = x.normalized();
+  f.linear().col(1) = (y - y.dot(f.linear().col(0)) * f.linear().col(0)).normalized();
+  f.linear().col(2) = f.linear().col(0).cross(f.linear().col(1));
+  f.translation() = origin;
+  return f;
+}
+
+// The frame turned about its x axis (the midsagittal normal) so that `direction` (frame
+// coordinates, in the sagittal plane) points anterior and `rise_deg` above the horizontal.
+Eigen::Isometry3d pitched(const Eigen::Isometry3d& frame, const Eigen::Vector3d& direction, double rise_deg,
+                          const Eigen::Vector3d& new_origin) {
+  const double current = std::atan2(direction.z(), -direction.y());
+  // The new axes are the old ones turned by rise - current about x: a vector's angle above the
+  // anterior horizontal then grows by that much. Points keep their LPS place.
+  const Eigen::Matrix3d turn =
+      Eigen::AngleAxisd(rise_deg * kDeg - current, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  Eigen::Isometry3d f = Eigen::Isometry3d::Identity();
+  f.linear() = frame.linear() * turn;
+  f.translation() = frame * new_origin;
+  return f;
+}
+
+// The head's box in a frame whose origin is sella (mm, for S-N = 70 mm, scaled).
+FrameBox head_box(double scale) {
+  return {scale * Eigen::Vector3d(-82, -128, -140), scale * Eigen::Vector3d(82, 62, 48)};
+}
+
+void require_a_head(const Volume& ct, const std::string& subject) {
+  const auto& g = ct.geometry;
+  const Eigen::Vector3d extent = g.spacing.cwiseProduct((g.size.array() - 1).cast<double>().matrix());
+  if (g.size.minCoeff() < 16 || extent.minCoeff() < 60)
+    throw Error(ErrorCode::kBadValue, subject,
+                "the volume is too small to hold a head (" + std::to_string(int(extent.x())) + " x " +
+                    std::to_string(int(extent.y())) + " x " + std::to_string(int(extent.z())) +
+                    " mm; landmarks need the skull from the orbits to the chin)");
+}
+
+struct Frames {
+  Plane midsagittal;
+  double asymmetry = 0;
+  Eigen::Isometry3d sagittal;  // P: x = midsagittal normal, y = the scan's posterior in the plane
+};
+
+Frames sagittal_frame(const Volume& ct, const GreyCalibration& grey, const std::string& subject) {
+  const BoneSurface bone = sample_bone_surface(ct, grey.from_hu(kBoneHu + 100), kSurfaceSpacingMm);
+  if (bone.bone_cm3 < kMinBoneCm3 || bone.points.size() < 200)
+    throw Error(ErrorCode::kBadValue, subject,
+                "no bone found (" + std::to_string(int(bone.bone_cm3)) + " cm3 above " +
+                    std::to_string(int(kBoneHu + 100)) + " HU, as the grey values were read: " + grey.describe() +
+                    "): not a head CT, or a scan without its skull");
+  Plane initial{{1, 0, 0}, bone.bone_centre.x()};
+  const SymmetryPlane symmetry = find_symmetry_plane(bone.points, *bone.distance, initial);
+  Frames f;
+  f.midsagittal = refine_on_grey_values(ct, grey, bone.points, symmetry.plane);
+  if (f.midsagittal.normal.x() < 0) f.midsagittal = {-f.midsagittal.normal, -f.midsagittal.offset};
+  f.asymmetry = symmetry.mean_distance_mm;
+  const Eigen::Vector3d on_plane =
+      bone.bone_centre - f.midsagittal.signed_distance(bone.bone_centre) * f.midsagittal.normal;
+  f.sagittal = frame_of(f.midsagittal.normal, Eigen::Vector3d::UnitY(), on_plane);
+  return f;
+}
+
+}  // namespace
+
+bool DetectedLandmark::flagged() const {
+  if (!position) return false;
+  if (confidence < 0.5) return true;
+  for (const auto& c : checks)
+    if (!c.passed) return true;
+  return false;
+}
+
+LandmarkSet LandmarkDetection::present() const {
+  LandmarkSet set;
+  for (const auto& l : landmarks)
+    if (l.position) set.push_back({l.label, *l.position});
+  return set;
+}
+
+const DetectedLandmark* LandmarkDetection::find(const std::string& label) const {
+  for (const auto& l : landmarks)
+    if (l.label == label) return &l;
+  return nullptr;
+}
+
+namespace {
+
+// Sella and nasion in the sagittal frame P, where the pitch is still the scan's: sella's window
+// from the bone's extent, nasion's from sella.
+struct SellaNasion {
+  Eigen::Vector3d s, n;  // P frame
+};
+
+SellaNasion find_sella_and_nasion(const Volume& ct, const GreyCalibration& grey, const Eigen::Isometry3d& p_frame,
+                                  const std::string& subject) {
+  // The skull's extent in P from a midline head volume.
+  const FrameBox wide{{-12, -160, -170}, {12, 160, 170}};
+  const HeadVolume midline(ct, grey, p_frame, wide, 2.0);
+  double y_front = 1e9, y_back = -1e9, z_top = -1e9;
+  for (double z = wide.lo.z(); z <= wide.hi.z(); z += 2)
+    for (double y = wide.lo.y(); y <= wide.hi.y(); y += 2)
+      if (midline.hu({0, y, z}) >= kBoneHu) {
+        y_front = std::min(y_front, y);
+        y_back = std::max(y_back, y);
+        z_top = std::max(z_top, z);
+      }
+  if (y_back - y_front < 60) throw Error(ErrorCode::kBadValue, subject, "no skull in the midsagittal plane");
+  const double length = y_back - y_front;
+  const FrameBox sella_window{{0, y_front + 0.2 * length, z_top - 135}, {0, y_front + 0.7 * length, z_top - 55}};
+  const FrameBox box{{-15, y_front - 35, z_top - 170}, {15, y_back + 5, z_top + 5}};
+  const HeadVolume section(ct, grey, p_frame, box, kCoarseSpacingMm);
+  const auto sella = find_sella(section, sella_window);
+  if (!sella)
+    throw Error(ErrorCode::kBadValue, subject,
+                "no sella turcica found in the midsagittal plane: not a head CT, or a field of view without the "
+                "cranial base (landmarks need it to set the head's frame)");
+  // Nasion: S-N is about 70 mm and rises 7 degrees; the scan's pitch may add +-20 degrees.
+  const RuleFinding n = find_nasion(section, sella->centre + Eigen::Vector3d(0, -68, 8.5));
+  if (!n.position) throw Error(ErrorCode::kBadValue, subject, "no nasion found in front of the sella: " + n.note);
+  return {sella->centre, *n.position};
+}
+
+}  // namespace
+
+LandmarkDetection detect_landmarks(const Volume& ct, const std::string& subject, const DetectionOptions& options) {
+  require_a_head(ct, subject);
+  LandmarkDetection result;
+  result.grey = estimate_grey_calibration(ct);
+  const Frames frames = sagittal_frame(ct, result.grey, subject);
+  result.midsagittal = frames.midsagittal;
+  result.asymmetry_mm = frames.asymmetry;
+  // Provisional head frame: origin at sella, S-N rising 7 degrees.
+  const SellaNasion sn = find_sella_and_nasion(ct, result.grey, frames.sagittal, subject);
+  result.scale = std::clamp((sn.n - sn.s).norm() / 70.0, 0.8, 1.3);
+  Eigen::Isometry3d frame = pitched(frames.sagittal, sn.n - sn.s, kSnAboveFrankfortDeg, sn.s);
+  result.frame_source = "S-N rising 7 degrees over Frankfort (porion or orbitale missing)";
+  // Frankfort from porion and orbitale, found in the provisional frame.
+  {
+    const HeadVolume coarse(ct, result.grey, frame, head_box(result.scale), kCoarseSpacingMm);
+    Eigen::Vector3d po = Eigen::Vector3d::Zero(), orb = Eigen::Vector3d::Zero();
+    int po_count = 0, or_count = 0;
+    for (int side : {-1, 1}) {
+      const std::string suffix = side > 0 ? "L" : "R";
+      const RuleFinding p = find_porion(coarse, expected_position("Po" + suffix, result.scale), side);
+      const RuleFinding o = find_orbitale(coarse, expected_position("Or" + suffix, result.scale), side);
+      if (p.position) po += *p.position, ++po_count;
+      if (o.position) orb += *o.position, ++or_count;
+    }
+    if (po_count && or_count) {
+      const Eigen::Vector3d forward = orb / or_count - po / po_count;
+      frame = pitched(frame, Eigen::Vector3d(0, forward.y(), forward.z()), 0, Eigen::Vector3d::Zero());
+      result.frame_source = "Frankfort horizontal (porion and orbitale)";
+    }
+  }
+  result.head_frame = frame;
+  // Every landmark, read in the head volume at the fine spacing.
+  const HeadVolume head(ct, result.grey, frame, head_box(result.scale), options.fine_spacing_mm);
+  Findings found;
+  if (auto s = find_sella(head, {{0, -14, -14}, {0, 14, 14}}))
+    found["S"] = RuleFinding::found(s->centre, evidence_between(1.5 - s->fit_rms_mm, 0, 1));
+  else
+    found["S"] = RuleFinding::absent("no sella turcica in the head frame");
+  found["N"] = find_nasion(head, expected_position("N", result.scale));
+  for (int side : {-1, 1}) {
+    const std::string suffix = side > 0 ? "L" : "R";
+    found["Po" + suffix] = find_porion(head, expected_position("Po" + suffix, result.scale), side);
+    found["Or" + suffix] = find_orbitale(head, expected_position("Or" + suffix, result.scale), side);
+  }
+  find_maxillary_midline(head, result.scale, found);
+  find_symphysis(head, result.scale, found);
+  for (int side : {-1, 1}) find_ramus_landmarks(head, result.scale, side, found);
+  find_incisors(head, result.scale, found);
+  find_soft_tissue_profile(head, result.scale, found);
+
+  FramePoints points;
+  for (const auto& [label, f] : found)
+    if (f.position) points[label] = *f.position;
+  const auto checks = check_landmarks(points, result.scale);
+  for (const auto& label : detected_labels()) {
+    DetectedLandmark l;
+    l.label = label;
+    const auto it = found.find(label);
+    if (it == found.end()) {
+      l.note = "not detected by this version of the method";
+    } else {
+      l.note = it->second.note;
+      if (it->second.position) l.position = head.to_lps(*it->second.position);
+      l.confidence = it->second.evidence;
+    }
+    if (auto c = checks.find(label); c != checks.end()) l.checks = c->second;
+    for (const auto& c : l.checks)
+      if (!c.passed) l.confidence = std::min(l.confidence, 0.3);
+    result.landmarks.push_back(std::move(l));
+  }
+  return result;
+}
+
+}  // namespace maxillo::landmarking

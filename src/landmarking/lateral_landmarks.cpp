@@ -1,0 +1,180 @@
+#include "landmarking/lateral_landmarks.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "landmarking/profile.h"
+
+namespace maxillo::landmarking {
+namespace {
+
+constexpr double kCanalAirHu = -200;  // the canal's air, partial volume included
+constexpr double kCanalWallReachMm = 7;
+
+struct Grid3 {
+  Eigen::Vector3d lo;
+  double step;
+  int nx, ny, nz;
+  Eigen::Vector3d at(int i, int j, int k) const { return lo + step * Eigen::Vector3d(i, j, k); }
+  int index(int i, int j, int k) const { return i + nx * (j + ny * k); }
+};
+
+// The 6-connected regions of marked voxels, in the order of their first voxel.
+std::vector<std::vector<int>> regions_of(const std::vector<uint8_t>& marked, const Grid3& g) {
+  std::vector<uint8_t> seen(marked.size(), 0);
+  std::vector<std::vector<int>> regions;
+  for (int start = 0; start < int(marked.size()); ++start) {
+    if (!marked[size_t(start)] || seen[size_t(start)]) continue;
+    std::vector<int> region{start};
+    seen[size_t(start)] = 1;
+    for (size_t next = 0; next < region.size(); ++next) {
+      const int i = region[next] % g.nx, j = (region[next] / g.nx) % g.ny, k = region[next] / (g.nx * g.ny);
+      const int around[6][3] = {{i - 1, j, k}, {i + 1, j, k}, {i, j - 1, k},
+                                {i, j + 1, k}, {i, j, k - 1}, {i, j, k + 1}};
+      for (const auto& n : around) {
+        if (n[0] < 0 || n[1] < 0 || n[2] < 0 || n[0] >= g.nx || n[1] >= g.ny || n[2] >= g.nz) continue;
+        const int index = g.index(n[0], n[1], n[2]);
+        if (marked[size_t(index)] && !seen[size_t(index)]) {
+          seen[size_t(index)] = 1;
+          region.push_back(index);
+        }
+      }
+    }
+    regions.push_back(std::move(region));
+  }
+  return regions;
+}
+
+// The external acoustic meatus among the air spaces inside the temporal bone: the one that
+// opens at the bone's lateral surface (no bone for 12 mm lateral to its outermost voxel), the
+// most lateral of them; the middle ear and the mastoid cells lie deeper and stay closed.
+std::vector<int> outer_canal(const HeadVolume& v, const std::vector<uint8_t>& canal, const Grid3& g, int side) {
+  std::vector<int> best;
+  double best_outer = -1e9;
+  for (auto& region : regions_of(canal, g)) {
+    if (double(region.size()) * std::pow(g.step, 3) < 4) continue;
+    int outermost = region.front();
+    for (int index : region)
+      if (side * g.at(index % g.nx, 0, 0).x() > side * g.at(outermost % g.nx, 0, 0).x()) outermost = index;
+    const Eigen::Vector3d p = g.at(outermost % g.nx, (outermost / g.nx) % g.ny, outermost / (g.nx * g.ny));
+    if (first_crossing(v, p + Eigen::Vector3d(side * g.step, 0, 0), {double(side), 0, 0}, 12, kBoneHu, 0.5))
+      continue;  // bone lateral to it: a closed space
+    if (side * p.x() > best_outer) {
+      best_outer = side * p.x();
+      best = std::move(region);
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+RuleFinding find_porion(const HeadVolume& v, const Eigen::Vector3d& expected, int side) {
+  Grid3 g;
+  g.step = std::max(0.5, v.spacing());
+  const double lateral = std::abs(expected.x());
+  const double x_near = lateral - 30, x_far = lateral + 15;
+  g.lo = {side > 0 ? x_near : -x_far, expected.y() - 20, expected.z() - 16};
+  g.nx = int((x_far - x_near) / g.step) + 1;
+  g.ny = int(40 / g.step) + 1;
+  g.nz = int(32 / g.step) + 1;
+  std::vector<uint8_t> canal(size_t(g.nx * g.ny * g.nz), 0);
+  for (int k = 0; k < g.nz; ++k)
+    for (int j = 0; j < g.ny; ++j)
+      for (int i = 0; i < g.nx; ++i) {
+        const Eigen::Vector3d p = g.at(i, j, k);
+        if (v.hu(p) >= kCanalAirHu) continue;
+        canal[size_t(g.index(i, j, k))] =
+            first_crossing(v, p, {0, 0, 1}, kCanalWallReachMm, kBoneHu, 0.5).has_value() &&
+            first_crossing(v, p, {0, 0, -1}, kCanalWallReachMm, kBoneHu, 0.5).has_value();
+      }
+  const std::vector<int> region = outer_canal(v, canal, g, side);
+  if (region.empty())
+    return RuleFinding::absent(v.scanned(expected) ? "no ear canal inside the temporal bone"
+                                                   : "the ear canal lies outside the scanned field");
+  // The lateral opening: the region's outermost voxels. The canal's axis: the centre of its
+  // cross-sections (a cylinder's region is symmetric about its axis).
+  double outer = -1e9;
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (int index : region) {
+    const Eigen::Vector3d p = g.at(index % g.nx, (index / g.nx) % g.ny, index / (g.nx * g.ny));
+    outer = std::max(outer, side * p.x());
+    centre += p;
+  }
+  centre /= double(region.size());
+  const double extent = outer - (side > 0 ? g.lo.x() : -(g.lo.x() + (g.nx - 1) * g.step));
+  // The canal's roof above its axis, 1.5 mm inside the opening; then the bone's lateral surface
+  // along the roof's line.
+  const Eigen::Vector3d inside(side * (outer - 1.5), centre.y(), centre.z());
+  const auto roof = first_edge(v, inside, {0, 0, 1}, kCanalWallReachMm, kBoneHu);
+  if (!roof) return RuleFinding::absent("the ear canal has no bony roof");
+  // (0.6 mm above the roof: inside its bone, whatever the voxel size, so that the ray cannot run
+  // along the canal itself.)
+  const Eigen::Vector3d outside(side * (outer + 15), centre.y(), roof->z() + 0.6);
+  const auto surface = first_edge(v, outside, {-double(side), 0, 0}, 25, kBoneHu);
+  if (!surface) return RuleFinding::absent("no bone lateral to the ear canal");
+  return RuleFinding::found({surface->x(), centre.y(), roof->z()}, evidence_between(extent, 4, 12),
+                            extent < 12 ? "a short bony ear canal" : "");
+}
+
+RuleFinding find_orbitale(const HeadVolume& v, const Eigen::Vector3d& expected, int side) {
+  // In each sagittal section across the orbit, rays from the front end on the face below the
+  // rim and on the orbital floor above it; the floor lies far behind for a small rise, so where
+  // the depth of the hit starts to grow faster than 2 mm per mm of height, the ray has passed the
+  // rim. Or is the lowest rim point across the orbit's width.
+  const std::string orbit = side > 0 ? "the left orbit" : "the right orbit";
+  Profile rim;  // z holds x, y holds the rim's height; the rim's front is kept apart
+  std::vector<double> rim_front;
+  for (double dx = -12; dx <= 12.01; dx += 0.5) {
+    const double x = expected.x() + dx;
+    Profile section = anterior_profile(v, expected.z() + 14, expected.z() - 12, expected.y() - 30, expected.y() + 40,
+                                       kBoneHu, x, 0, 0.25);
+    std::reverse(section.begin(), section.end());  // upwards
+    for (size_t i = 2; i < section.size(); ++i) {
+      const double rise = section[i].z - section[i - 2].z;
+      if (rise > 0.75) continue;  // a gap in the section
+      if ((section[i].y - section[i - 2].y) / rise > 2) {
+        if (i > 4) {
+          rim.push_back({x, (section[i].z + section[i - 2].z) / 2, 0});
+          rim_front.push_back(section[i - 2].y);
+        }
+        break;
+      }
+    }
+  }
+  if (rim.size() < 8)
+    return RuleFinding::absent(v.scanned(expected) ? "no inferior orbital rim in front of " + orbit
+                                                   : orbit + " lies outside the scanned field");
+  // The rim's heights smoothed across x (5 columns, 2 mm): the sections' steps are 0.25 mm.
+  Profile smooth = rim;
+  for (size_t i = 2; i + 2 < rim.size(); ++i)
+    smooth[i].y = (rim[i - 2].y + rim[i - 1].y + rim[i].y + rim[i + 1].y + rim[i + 2].y) / 5;
+  rim = smooth;
+  const int lowest = most_anterior(rim);  // smallest "y": the lowest rim height
+  // The rim's bottom is flat (an orbit's outline is close to an ellipse), so its lowest sample
+  // says little about where across the orbit it lies: the bottom is placed midway between the
+  // two places where the rim has risen 1.5 mm above it, and its height fitted there.
+  const double level = rim[size_t(lowest)].y + 1.5;
+  std::optional<double> medial, lateral;
+  for (int i = lowest; i > 0 && !medial; --i)
+    if (rim[size_t(i - 1)].y >= level)
+      medial = rim[size_t(i)].z + (level - rim[size_t(i)].y) / (rim[size_t(i - 1)].y - rim[size_t(i)].y) *
+                                      (rim[size_t(i - 1)].z - rim[size_t(i)].z);
+  for (int i = lowest; i + 1 < int(rim.size()) && !lateral; ++i)
+    if (rim[size_t(i + 1)].y >= level)
+      lateral = rim[size_t(i)].z + (level - rim[size_t(i)].y) / (rim[size_t(i + 1)].y - rim[size_t(i)].y) *
+                                       (rim[size_t(i + 1)].z - rim[size_t(i)].z);
+  const double x = medial && lateral ? (*medial + *lateral) / 2 : rim[size_t(lowest)].z;
+  int nearest = lowest;
+  for (int i = 0; i < int(rim.size()); ++i)
+    if (std::abs(rim[size_t(i)].z - x) < std::abs(rim[size_t(nearest)].z - x)) nearest = i;
+  const double z = refined_extremum(rim, nearest, 6).y;
+  const auto front = first_crossing(v, {x, expected.y() - 30, z}, {0, 1, 0}, 70, kBoneHu);
+  const bool at_end = !medial || !lateral;
+  return RuleFinding::found(
+      {x, front ? front->y() : rim_front[size_t(lowest)], z}, at_end ? 0.3 : 1,
+      at_end ? "the rim does not rise on both sides of its lowest point within the searched width" : "");
+}
+
+}  // namespace maxillo::landmarking

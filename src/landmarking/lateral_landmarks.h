@@ -1,0 +1,23 @@
+#pragma once
+// The bilateral landmarks, one side at a time (side = +1 for the patient's left, x > 0; -1 for
+// the right), in the head frame of midline_landmarks.h:
+//
+//   Po  porion (anatomical): the most superior point of the bony external acoustic meatus, at its
+//       lateral opening
+//   Or  orbitale: the lowest point of the inferior margin of the orbit
+#include "landmarking/head_volume.h"
+#include "landmarking/rule_finding.h"
+
+namespace maxillo::landmarking {
+
+// The ear canal is found as the air inside the temporal bone (bone close above and below)
+// within 20 mm of `expected` that opens at the bone's lateral surface (the middle ear and the
+// mastoid cells lie deeper and stay closed); Po is the top of the canal where it leaves the bone.
+RuleFinding find_porion(const HeadVolume& v, const Eigen::Vector3d& expected, int side);
+
+// Seen from the front, rays below the orbit end on the maxilla and zygoma while rays into the
+// orbit's opening go deep: the rim's lower edge is where that depth jumps, and Or is the lowest
+// point of the edge across the orbit's width.
+RuleFinding find_orbitale(const HeadVolume& v, const Eigen::Vector3d& expected, int side);
+
+}  // namespace maxillo::landmarking

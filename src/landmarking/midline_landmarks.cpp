@@ -1,0 +1,329 @@
+#include "landmarking/midline_landmarks.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <vector>
+
+#include "landmarking/landmark_template.h"
+#include "landmarking/profile.h"
+
+namespace maxillo::landmarking {
+namespace {
+
+constexpr double kMidlineSlabMm = 1.5;  // bone profiles: the most anterior bone within this of x = 0
+// Crowns against lips and air: low enough to keep a thin incisal edge that the partial volume
+// has faded (the edge itself is placed at the half maximum, first_edge).
+constexpr double kToothSurfaceHu = 500;
+// The anterior nasal spine thins to a tip of a millimetre or two, faded by the partial volume.
+constexpr double kSpineHu = 150;
+
+Eigen::Vector3d midline_point(const ProfilePoint& p) { return {0, p.y, p.z}; }
+
+// Whether profile[i] is at least as extreme in y (sign -1: minimum = most anterior, +1: maximum =
+// most posterior) as every sample within `reach_mm` above and below, and not within `reach_mm`
+// of the profile's ends.
+bool is_local_extremum(const Profile& profile, int i, int sign, double reach_mm) {
+  const double z = profile[size_t(i)].z;
+  if (std::abs(z - profile.front().z) < reach_mm || std::abs(z - profile.back().z) < reach_mm) return false;
+  for (const auto& other : profile)
+    if (std::abs(other.z - z) <= reach_mm && sign * (other.y - profile[size_t(i)].y) > 0) return false;
+  return true;
+}
+
+// Index of the first local extremum met reading the profile from its top (or its bottom); -1 if none.
+int local_extremum(const Profile& profile, int sign, double reach_mm, bool from_bottom) {
+  const int n = int(profile.size());
+  for (int step = 0; step < n; ++step) {
+    const int i = from_bottom ? n - 1 - step : step;
+    if (is_local_extremum(profile, i, sign, reach_mm)) return i;
+  }
+  return -1;
+}
+
+// Index of the most extreme of the local extrema; -1 if none.
+int strongest_local_extremum(const Profile& profile, int sign, double reach_mm) {
+  int best = -1;
+  for (int i = 0; i < int(profile.size()); ++i)
+    if (is_local_extremum(profile, i, sign, reach_mm) &&
+        (best < 0 || sign * (profile[size_t(i)].y - profile[size_t(best)].y) > 0))
+      best = i;
+  return best;
+}
+
+// The profile's extreme sample in y (sign -1 most anterior, +1 most posterior), refined.
+std::optional<ProfilePoint> extreme(const Profile& profile, int sign) {
+  if (profile.size() < 3) return std::nullopt;
+  const int i = sign < 0 ? most_anterior(profile) : most_posterior(profile);
+  return refined_extremum(profile, i, 4);  // the extremes of a face are flat: a wide fit
+}
+
+// Whether the tissue behind a profile point is a crown (enamel/dentine) rather than bone.
+// Enamel is above 2200 HU; the densest cortical bone of a mandible stays below it.
+bool is_tooth(const HeadVolume& v, const ProfilePoint& p) { return v.hu({p.x, p.y + 0.75, p.z}) >= 2200; }
+
+}  // namespace
+
+RuleFinding find_nasion(const HeadVolume& v, const Eigen::Vector3d& expected) {
+  const Profile forehead_to_nose =
+      until_jump(anterior_profile(v, expected.z() + 22, expected.z() - 20, expected.y() - 30, expected.y() + 30,
+                                  kBoneHu, 0, kMidlineSlabMm),
+                 6);
+  if (forehead_to_nose.size() < 20) return RuleFinding::absent("no frontal and nasal bone in front of the skull base");
+  const auto depth = depth_behind_hull(forehead_to_nose);
+  int deepest = 0;
+  for (size_t i = 0; i < depth.size(); ++i)
+    if (depth[i] > depth[size_t(deepest)]) deepest = int(i);
+  const ProfilePoint n = refined_peak(forehead_to_nose, depth, deepest);
+  return RuleFinding::found(midline_point(n), evidence_between(depth[size_t(deepest)], 0.3, 2.5),
+                            depth[size_t(deepest)] < 1 ? "a shallow frontonasal concavity" : "");
+}
+
+void find_maxillary_midline(const HeadVolume& v, double scale, Findings& found) {
+  const Eigen::Vector3d ans = expected_position("ANS", scale), a = expected_position("A", scale);
+  const Eigen::Vector3d u1 = expected_position("U1", scale);
+  const Profile upper =
+      anterior_profile(v, ans.z() + 12, u1.z() + 2, ans.y() - 30, ans.y() + 40, kSpineHu, 0, kMidlineSlabMm);
+  // ANS: the spine's tip, a forward extremum above A (the alveolus below A comes forward again
+  // and must not be taken for it). The spine is thin and the partial volume shortens it, so of
+  // the forward extrema within 2 mm of the most anterior one the lowest is taken: the spine
+  // projects from the nasal floor, below the rim of the aperture.
+  const Profile spine_zone = between_heights(upper, a.z() - 4, ans.z() + 12);
+  const int strongest = strongest_local_extremum(spine_zone, -1, 3);
+  int tip = strongest;
+  for (int i = 0; strongest >= 0 && i < int(spine_zone.size()); ++i)
+    if (is_local_extremum(spine_zone, i, -1, 3) && spine_zone[size_t(i)].y < spine_zone[size_t(strongest)].y + 2 &&
+        spine_zone[size_t(i)].z < spine_zone[size_t(tip)].z)
+      tip = i;
+  if (tip < 0) {
+    found["ANS"] = RuleFinding::absent("no anterior nasal spine: the nasal floor has no forward tip");
+    found["A"] = RuleFinding::absent("needs ANS");
+    found["PNS"] = RuleFinding::absent("needs ANS");
+    return;
+  }
+  const ProfilePoint ans_point = refined_extremum(spine_zone, tip, 1.5);
+  found["ANS"] = RuleFinding::found(midline_point(ans_point), 1);
+  // A: the most posterior bone point between ANS and prosthion (where the crowns begin).
+  Profile alveolus;
+  for (const auto& p : between_heights(upper, u1.z() - 2, ans_point.z - 1.5)) {
+    if (is_tooth(v, p)) break;
+    alveolus.push_back(p);
+  }
+  if (const auto deepest = extreme(alveolus, +1)) {
+    const double depth = deepest->y - std::min(ans_point.y, alveolus.back().y);
+    found["A"] = RuleFinding::found(midline_point(*deepest), evidence_between(depth, 0.3, 2));
+  } else {
+    found["A"] = RuleFinding::absent("no alveolar bone below ANS");
+  }
+  found["PNS"] = RuleFinding{};  // set by find_posterior_nasal_spine below
+  // PNS: the posterior end of the bone plate that runs back from ANS (the hard palate), traced
+  // as the bone connected to the spine within a band around its height.
+  const double step = 0.25;
+  const double y0 = ans_point.y, z_top = ans_point.z + 3, z_bottom = ans_point.z - 8;
+  const int columns = int(95 * scale / step), rows = int((z_top - z_bottom) / step) + 1;
+  std::vector<uint8_t> bone(size_t(columns * rows), 0), reached(size_t(columns * rows), 0);
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < columns; ++c)
+      bone[size_t(r * columns + c)] = v.hu({0, y0 + c * step, z_top - r * step}) >= kBoneHu;
+  std::vector<int> queue;
+  for (int r = 0; r < rows; ++r) {
+    const int start = r * columns + int(2 / step);  // 2 mm behind the tip, inside the spine's base
+    if (bone[size_t(start)]) {
+      reached[size_t(start)] = 1;
+      queue.push_back(start);
+    }
+  }
+  int back = -1;
+  for (size_t next = 0; next < queue.size(); ++next) {
+    const int c = queue[next] % columns, r = queue[next] / columns;
+    if (back < 0 || c > back % columns) back = queue[next];
+    const int around[4][2] = {{c - 1, r}, {c + 1, r}, {c, r - 1}, {c, r + 1}};
+    for (const auto& n : around) {
+      if (n[0] < 0 || n[1] < 0 || n[0] >= columns || n[1] >= rows) continue;
+      const int index = n[1] * columns + n[0];
+      if (bone[size_t(index)] && !reached[size_t(index)]) {
+        reached[size_t(index)] = 1;
+        queue.push_back(index);
+      }
+    }
+  }
+  if (back < 0) {
+    found["PNS"] = RuleFinding::absent("no hard palate behind ANS");
+    return;
+  }
+  // The palate's end: the mean height of its last column, then the exact end along that row.
+  const int last = back % columns;
+  double z_sum = 0;
+  int z_count = 0;
+  for (int r = 0; r < rows; ++r)
+    if (reached[size_t(r * columns + last)]) {
+      z_sum += z_top - r * step;
+      ++z_count;
+    }
+  const double z = z_sum / z_count;
+  const auto end = first_drop(v, {0, y0 + (last - 2) * step, z}, {0, 1, 0}, 4, kBoneHu, 0.1);
+  const double y = end ? end->y() : y0 + last * step;
+  const double length = y - ans_point.y;
+  found["PNS"] = RuleFinding::found({0, y, z}, evidence_between(length, 30 * scale, 42 * scale),
+                                    length < 42 * scale ? "a short hard palate" : "");
+}
+
+void find_symphysis(const HeadVolume& v, double scale, Findings& found) {
+  const Eigen::Vector3d b = expected_position("B", scale), me = expected_position("Me", scale);
+  const Eigen::Vector3d l1 = expected_position("L1", scale);
+  const Profile front = anterior_profile(v, l1.z() - 2, me.z() - 8, b.y() - 30, b.y() + 45, kBoneHu, 0, kMidlineSlabMm);
+  Profile bone_front;  // below the crowns of the lower incisors
+  for (const auto& p : front)
+    if (!is_tooth(v, p)) bone_front.push_back(p);
+  // Pog: the lowest forward extremum (the chin); B: the deepest point above it, below the crowns.
+  const int pog = local_extremum(bone_front, -1, 4, true);
+  if (pog < 0) {
+    for (const char* label : {"Pog", "B", "Me", "Gn"})
+      found[label] = RuleFinding::absent("no bony chin in the midline");
+    return;
+  }
+  const ProfilePoint pog_point = refined_extremum(bone_front, pog, 5);
+  found["Pog"] = RuleFinding::found(midline_point(pog_point), 1);
+  // Read upwards from Pog, the alveolar front continues to the crowns; where it jumps (into the
+  // mouth between the teeth, onto a crown) the symphysis has ended.
+  Profile upwards = between_heights(bone_front, pog_point.z, bone_front.front().z);
+  std::reverse(upwards.begin(), upwards.end());
+  const Profile above = between_heights(until_jump(upwards, 3), pog_point.z + 1, bone_front.front().z);
+  if (const auto deepest = extreme(above, +1)) {
+    const double depth = deepest->y - pog_point.y;
+    found["B"] = RuleFinding::found(midline_point(*deepest), evidence_between(depth, 0.5, 3));
+  } else {
+    found["B"] = RuleFinding::absent("no alveolar bone above the chin");
+  }
+  // Me: the lowest point of the symphysis, from rays up through the chin's underside.
+  Profile underside;  // (z, y) swapped roles: here "y" holds the height of the hit, "z" the column
+  for (double y = pog_point.y - 4; y <= pog_point.y + 25 * scale; y += 0.25)
+    if (auto hit = first_edge(v, {0, y, me.z() - 25}, {0, 0, 1}, 35, kBoneHu)) underside.push_back({y, hit->z(), 0});
+  if (underside.size() < 5) {
+    found["Me"] = found["Gn"] = RuleFinding::absent("no lower border of the symphysis");
+    return;
+  }
+  const ProfilePoint lowest = refined_extremum(underside, most_anterior(underside), 5);
+  found["Me"] = RuleFinding::found({0, lowest.z, lowest.y}, 1);
+  // Gn: the chin's support point along the antero-inferior bisector.
+  const Eigen::Vector3d d = Eigen::Vector3d(0, 1, 1).normalized(), across(0, 1, -1);
+  const Eigen::Vector3d centre(0, pog_point.y + 8, lowest.y + 12);
+  Profile support;  // z holds the offset across, y the distance along d
+  for (double s = -14; s <= 14; s += 0.25)
+    if (auto hit = first_edge(v, centre - 40 * d + s * across.normalized(), d, 45, kBoneHu))
+      support.push_back({s, d.dot(*hit - centre), 0});
+  if (support.size() < 5) {
+    found["Gn"] = RuleFinding::absent("no chin outline between Pog and Me");
+    return;
+  }
+  const ProfilePoint gn = refined_extremum(support, most_anterior(support), 4);
+  found["Gn"] = RuleFinding::found(centre + gn.y * d + gn.z * across.normalized(), 1);
+}
+
+namespace {
+
+// The middle of the right central incisor's width (x) 1 mm inside its edge: between its distal
+// end and its mesial one, which is its contact with the left central incisor at the midline
+// (x = 0 in the head frame) unless a gap shows within 1.5 mm of it.
+double crown_middle_x(const HeadVolume& v, const Eigen::Vector3d& edge, double rootward) {
+  const Eigen::Vector3d inside(-2.5, edge.y(), edge.z() + rootward);
+  const auto distal = first_drop(v, inside, {-1, 0, 0}, 9, kToothSurfaceHu, 0.1);
+  const auto mesial = first_drop(v, inside, {1, 0, 0}, 4, kToothSurfaceHu, 0.1);
+  const double mesial_x = mesial && mesial->x() < 1.5 ? mesial->x() : 0;
+  return distal ? (distal->x() + mesial_x) / 2 : edge.x();
+}
+
+// The upper incisor's incisal edge centre from the lowest point of its labial face: centred in
+// the edge's thickness (front to back), at the edge's lowest point there, centred in its width.
+Eigen::Vector3d upper_incisal_edge_centre(const HeadVolume& v, const ProfilePoint& tip) {
+  const auto lingual = first_drop(v, {tip.x, tip.y + 0.1, tip.z + 0.6}, {0, 1, 0}, 4, kToothSurfaceHu, 0.1);
+  const double y = lingual ? (tip.y + lingual->y()) / 2 : tip.y + 0.6;
+  const auto edge = first_edge(v, {tip.x, y, tip.z - 3}, {0, 0, 1}, 5, kToothSurfaceHu);
+  const double z = edge ? edge->z() : tip.z;
+  return {crown_middle_x(v, {tip.x, y, z}, +1), y, z};
+}
+
+// The upper incisor's labial face read downwards until the profile jumps back to the lower
+// incisor (or ends): the last point before the jump.
+std::optional<ProfilePoint> upper_incisor_tip(const Profile& profile) {
+  for (size_t i = 1; i < profile.size(); ++i) {
+    const bool gap = std::abs(profile[i].z - profile[i - 1].z) > 0.6;
+    if (gap || profile[i].y - profile[i - 1].y > 1.2)
+      return i >= 8 ? std::optional<ProfilePoint>(profile[i - 1]) : std::nullopt;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+void find_incisors(const HeadVolume& v, double scale, Findings& found) {
+  const Eigen::Vector3d u1 = expected_position("U1", scale), l1 = expected_position("L1", scale);
+  // The patient's right central incisors (x < 0), as the phantom and most analyses take them.
+  const Profile upper_labial =
+      anterior_profile(v, u1.z() + 8, u1.z() - 12, u1.y() - 20, u1.y() + 20, kToothSurfaceHu, u1.x(), 2.5);
+  if (const auto tip = upper_incisor_tip(upper_labial))
+    found["U1"] = RuleFinding::found(upper_incisal_edge_centre(v, *tip), 1);
+  else
+    found["U1"] = RuleFinding::absent("no upper incisor crown ending above the lower arch");
+  // The lower incisor's lingual face, from inside the mouth, bottom up.
+  Profile lower_lingual;
+  for (double z = l1.z() - 12; z <= l1.z() + 8; z += 0.25) {
+    std::optional<ProfilePoint> best;
+    for (double x = l1.x() - 2; x <= l1.x() + 2.01; x += 0.5)
+      if (auto hit = first_crossing(v, {x, l1.y() + 16, z}, {0, -1, 0}, 26, kToothSurfaceHu))
+        if (!best || hit->y() > best->y) best = ProfilePoint{z, hit->y(), x};
+    if (best) lower_lingual.push_back(*best);
+  }
+  // Read upwards, the lower incisor's lingual face leans forward to its tip; above the tip the
+  // rays meet the upper incisor's lingual face, which leans back: the tip is the most anterior
+  // point of this profile. Its centre lies half the edge's thickness labially.
+  const int tip = strongest_local_extremum(lower_lingual, -1, 2.5);
+  if (tip < 0) {
+    found["L1"] = RuleFinding::absent("no lower incisor crown behind the upper incisor");
+    return;
+  }
+  const ProfilePoint lingual_tip = refined_extremum(lower_lingual, tip, 1.5);
+  const auto labial =
+      first_drop(v, {lingual_tip.x, lingual_tip.y - 0.1, lingual_tip.z - 1.5}, {0, -1, 0}, 7, kToothSurfaceHu, 0.1);
+  const double y = labial ? (lingual_tip.y + labial->y()) / 2 : lingual_tip.y - 0.6;
+  const double x = crown_middle_x(v, {lingual_tip.x, y, lingual_tip.z}, -1);
+  found["L1"] = RuleFinding::found({x, y, lingual_tip.z}, labial ? 1 : 0.6);
+}
+
+void find_soft_tissue_profile(const HeadVolume& v, double scale, Findings& found) {
+  auto position_or = [&](const char* label) {
+    const auto it = found.find(label);
+    return it != found.end() && it->second.position ? *it->second.position : expected_position(label, scale);
+  };
+  const Eigen::Vector3d n = position_or("N"), me = position_or("Me");
+  const Profile skin =
+      anterior_profile(v, n.z() + 20, me.z() - 8, v.box().lo.y() + 0.5, n.y() + 40, kSkinHu, 0, 0, 0.25);
+  auto extreme_between = [&](double z_low, double z_high, int sign) {
+    return extreme(between_heights(skin, z_low, z_high), sign);
+  };
+  auto record = [&](const char* label, const std::optional<ProfilePoint>& p, const char* what) {
+    found[label] = p ? RuleFinding::found(midline_point(*p), 1) : RuleFinding::absent(what);
+  };
+  const auto ns = extreme_between(n.z() - 10, n.z() + 12, +1);
+  record("NS", ns, "no skin in front of nasion");
+  const Eigen::Vector3d prn_expected = expected_position("Prn", scale);
+  const auto prn = extreme_between(prn_expected.z() - 15, prn_expected.z() + 15, -1);
+  record("Prn", prn, "no nose in the scanned field");
+  if (!prn) return;
+  const auto sn = extreme_between(prn->z - 22 * scale, prn->z - 1, +1);
+  record("Sn", sn, "no skin below the nose");
+  if (!sn) return;
+  const auto ls = extreme_between(sn->z - 25 * scale, sn->z - 1, -1);
+  record("Ls", ls, "no upper lip");
+  if (!ls) return;
+  const auto stomion = extreme_between(ls->z - 14 * scale, ls->z - 1, +1);
+  if (!stomion) return;
+  const auto li = extreme_between(stomion->z - 16 * scale, stomion->z - 1, -1);
+  record("Li", li, "no lower lip");
+  if (!li) return;
+  const auto fold = extreme_between(li->z - 22 * scale, li->z - 1, +1);
+  if (!fold) return;
+  record("PogS", extreme_between(me.z(), fold->z - 1, -1), "no soft-tissue chin");
+}
+
+}  // namespace maxillo::landmarking

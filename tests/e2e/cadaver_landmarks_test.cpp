@@ -1,0 +1,60 @@
+// Issue 28's "real patient with no hands": the real cadaver head CT (../shared/data/cthead-stanford)
+// imported without a landmark file gets its landmarks detected and stored, the report shows its
+// cephalometry, and planning reads them, refusing flagged ones unless the planner accepts them.
+// A set given by hand then takes precedence, and `landmarks detect --store` says how far the
+// automatic one lies from it. Skipped where the data is absent.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "support/cadaver_dicom.h"
+#include "support/pdf_tools.h"
+#include "support/temporary_folder.h"
+
+namespace maxillo {
+namespace {
+using testing::quote;
+using testing::run_command;
+
+TEST(CadaverNoHands, AReportAndAPlanWithoutALandmarkFile) {
+  if (!testing::cadaver_present())
+    GTEST_SKIP() << "real data absent: " << testing::cadaver_data() << " (see ../shared/data/README.md)";
+  testing::TemporaryFolder folder("maxillo-cadaver-landmarks");
+  const std::string maxillo = std::string(MAXILLO_BINARY) + " --archive " + quote(folder / "archive");
+  const auto wrap = testing::wrap_cadaver_as_dicom(folder / "ct");
+  ASSERT_EQ(wrap.exit_code, 0) << wrap.output;
+  ASSERT_EQ(run_command(maxillo + " -q import " + quote(folder / "ct")).exit_code, 0);
+  ASSERT_EQ(run_command(maxillo + " -q plan create 1 --advance 6").exit_code, 0);
+
+  // Planning on the automatic set: refused while a landmark it reads is flagged, naming it.
+  const auto refused = run_command(maxillo + " plan apply 1 --no-face --out " + quote(folder / "plan") + " 2>&1");
+  if (refused.exit_code == 26) {
+    EXPECT_NE(refused.output.find("failed their checks"), std::string::npos) << refused.output;
+    EXPECT_NE(refused.output.find("--accept-flagged"), std::string::npos) << refused.output;
+  }
+  // Accepted, the plan reaches the jaw separation, which needs the first molars: this version
+  // does not detect them yet, and says which landmark is missing (issue 28 stays open for it).
+  const auto planned =
+      run_command(maxillo + " plan apply 1 --no-face --accept-flagged --out " + quote(folder / "plan") + " 2>&1");
+  EXPECT_EQ(planned.exit_code, 26) << planned.output;
+  EXPECT_NE(planned.output.find("needs U6R or L6R"), std::string::npos) << planned.output;
+
+  ASSERT_EQ(run_command(maxillo + " -q report 1 --out " + quote(folder / "report.pdf")).exit_code, 0);
+  const std::string text = testing::pdf_text(folder / "report.pdf");
+  EXPECT_NE(text.find("found automatically (maxillo-landmarks 1)"), std::string::npos) << text.substr(0, 3000);
+  EXPECT_NE(text.find("SNA"), std::string::npos);
+  EXPECT_EQ(text.find("No landmarks are attached"), std::string::npos);
+
+  // A set given by hand takes precedence; the automatic one is stored beside it, with distances.
+  std::ofstream(folder / "by-hand.csv") << "S,-21.5,-20.5,124\nN,-21.5,-77.5,141\nMe,-21.5,-82.5,24\n";
+  ASSERT_EQ(run_command(maxillo + " -q ceph add 1 --time-point pre --date 1989-01-01 " + quote(folder / "by-hand.csv"))
+                .exit_code,
+            0);
+  const auto stored = run_command(maxillo + " landmarks detect 1 --store --only S 2>&1");
+  ASSERT_EQ(stored.exit_code, 0) << stored.output;
+  EXPECT_NE(stored.output.find("keeps precedence"), std::string::npos) << stored.output;
+  EXPECT_NE(stored.output.find("  S  "), std::string::npos) << stored.output;
+}
+
+}  // namespace
+}  // namespace maxillo

@@ -1,0 +1,102 @@
+// The real cadaver head (../shared/data/cthead-stanford; skips without it): the landmarks must
+// move with the volume when its header places it in other poses, swap sides when it is
+// mirrored, and lie near the places read on it by eye.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <iostream>
+#include <numbers>
+
+#include "imaging/volume_file.h"
+#include "landmarking/landmark_detection.h"
+#include "support/cthead_metaimage.h"
+#include "support/temporary_folder.h"
+
+namespace maxillo::landmarking {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180;
+
+// The cadaver head placed as scripts/cthead-to-dicom places it (LPS, vertex at z = 224).
+const Volume& cadaver() {
+  static const Volume head = [] {
+    testing::TemporaryFolder folder("cthead-landmarks");
+    testing::write_cthead_metaimage(folder.path());
+    Volume v = read_volume_file(folder / "cthead.mhd");  // raw values: the grey calibration reads them
+    v.geometry.direction.col(2) = Eigen::Vector3d(0, 0, -1);
+    v.geometry.origin = {-127.5, -127.5, 224};
+    return v;
+  }();
+  return head;
+}
+
+bool cadaver_present() { return std::filesystem::exists(testing::cthead_slices() / "CThead.113"); }
+
+Volume posed(Volume ct, const Eigen::Isometry3d& pose) {
+  ct.geometry.direction = pose.linear() * ct.geometry.direction;
+  ct.geometry.origin = pose * ct.geometry.origin;
+  return ct;
+}
+
+TEST(CadaverLandmarks, TheMidlineLandmarksLieWhereAPersonReadsThem) {
+  if (!cadaver_present()) GTEST_SKIP() << "real data absent: " << testing::cthead_slices();
+  const LandmarkDetection found = detect_landmarks(cadaver(), "cadaver");
+  // Read by eye on the slices (tests/e2e/cadaver_simulate_test.cpp), within a few millimetres.
+  const std::map<std::string, Eigen::Vector3d> by_eye = {{"S", {-21.5, -20.5, 124}},  {"N", {-21.5, -77.5, 141}},
+                                                         {"ANS", {-21.5, -94.5, 94}}, {"U1", {-21.5, -100.5, 69}},
+                                                         {"Pog", {-21.5, -90.5, 37}}, {"Me", {-21.5, -82.5, 24}}};
+  for (const auto& [label, p] : by_eye) {
+    const DetectedLandmark* l = found.find(label);
+    ASSERT_TRUE(l && l->position) << label;
+    EXPECT_LT((*l->position - p).norm(), 7.0) << label;
+  }
+  EXPECT_NEAR(found.midsagittal.signed_distance({-21.5, 0, 0}), 0, 3.0);
+}
+
+TEST(CadaverLandmarks, TheLandmarksMoveWithTheVolumeInThreePoses) {
+  if (!cadaver_present()) GTEST_SKIP() << "real data absent: " << testing::cthead_slices();
+  const LandmarkDetection reference = detect_landmarks(cadaver(), "cadaver");
+  const std::vector<Eigen::Isometry3d> poses = {
+      Eigen::Translation3d(10, -6, 4) * Eigen::AngleAxisd(10 * kDeg, Eigen::Vector3d::UnitZ()),
+      Eigen::Translation3d(-4, 8, -12) * Eigen::AngleAxisd(-12 * kDeg, Eigen::Vector3d::UnitX()),
+      Eigen::Translation3d(3, 3, 3) * Eigen::AngleAxisd(8 * kDeg, Eigen::Vector3d(1, -1, 1).normalized()),
+  };
+  for (const auto& pose : poses) {
+    const LandmarkDetection found = detect_landmarks(posed(cadaver(), pose), "posed cadaver");
+    std::vector<double> moved;
+    for (const auto& l : found.landmarks) {
+      const DetectedLandmark* before = reference.find(l.label);
+      if (!l.position || !before->position || l.flagged() || before->flagged()) continue;
+      moved.push_back((*l.position - pose * *before->position).norm());
+      EXPECT_LT(moved.back(), 2.0) << l.label;
+    }
+    ASSERT_GE(moved.size(), 12u);
+    double sum = 0;
+    for (double m : moved) sum += m;
+    std::cout << "cadaver pose: " << moved.size() << " confident landmarks moved with the volume to within mean "
+              << sum / double(moved.size()) << " mm, worst " << *std::max_element(moved.begin(), moved.end())
+              << " mm\n";
+    EXPECT_LT(sum / double(moved.size()), 0.8);
+  }
+}
+
+TEST(CadaverLandmarks, AMirroredHeadSwapsItsSides) {
+  if (!cadaver_present()) GTEST_SKIP() << "real data absent: " << testing::cthead_slices();
+  const LandmarkDetection reference = detect_landmarks(cadaver(), "cadaver");
+  Eigen::Isometry3d mirror = Eigen::Isometry3d::Identity();
+  mirror.linear() = Eigen::Vector3d(-1, 1, 1).asDiagonal();
+  const LandmarkDetection found = detect_landmarks(posed(cadaver(), mirror), "mirrored cadaver");
+  int compared = 0;
+  for (const char* pair : {"Po", "Or", "Go", "Ar"}) {
+    const DetectedLandmark* left_after = found.find(std::string(pair) + "L");
+    const DetectedLandmark* right_before = reference.find(std::string(pair) + "R");
+    if (!left_after->position || !right_before->position) continue;
+    EXPECT_LT((*left_after->position - mirror * *right_before->position).norm(), 2.0) << pair;
+    ++compared;
+  }
+  EXPECT_GE(compared, 2);
+}
+
+}  // namespace
+}  // namespace maxillo::landmarking

@@ -1,0 +1,77 @@
+// The checks of a detected landmark set: the template head passes every one; each kind of
+// fault (a lopsided pair, an order the anatomy forbids, a size outside adult ranges) fails the
+// check that names it, on the landmarks concerned.
+#include <gtest/gtest.h>
+
+#include "landmarking/landmark_checks.h"
+#include "landmarking/landmark_template.h"
+
+namespace maxillo::landmarking {
+namespace {
+
+FramePoints template_head() {
+  FramePoints points;
+  for (const auto& label : detected_labels()) points[label] = expected_position(label, 1.0);
+  return points;
+}
+
+// The failed checks of `label`, by name.
+std::vector<std::string> failed(const std::map<std::string, std::vector<CheckOutcome>>& checks,
+                                const std::string& label) {
+  std::vector<std::string> names;
+  if (auto it = checks.find(label); it != checks.end())
+    for (const auto& c : it->second)
+      if (!c.passed) names.push_back(c.name + " (" + c.detail + ")");
+  return names;
+}
+
+TEST(LandmarkChecks, TheTemplateHeadPassesEveryCheck) {
+  const auto checks = check_landmarks(template_head(), 1.0);
+  int count = 0;
+  for (const auto& [label, outcomes] : checks) {
+    count += int(outcomes.size());
+    EXPECT_TRUE(failed(checks, label).empty()) << label << ": " << failed(checks, label).front();
+  }
+  EXPECT_GE(count, 40);  // mirror, order and range checks were all run
+}
+
+TEST(LandmarkChecks, ALopsidedPairFailsItsMirrorCheck) {
+  FramePoints points = template_head();
+  points["OrL"].z() += 8;
+  const auto checks = check_landmarks(points, 1.0);
+  ASSERT_EQ(failed(checks, "OrL").size(), 1u);
+  EXPECT_NE(failed(checks, "OrL").front().find("mirror"), std::string::npos);
+  EXPECT_EQ(failed(checks, "OrR").size(), 1u);
+  EXPECT_TRUE(failed(checks, "PoL").empty());
+}
+
+TEST(LandmarkChecks, AnOrderTheAnatomyForbidsIsNamed) {
+  FramePoints points = template_head();
+  points["Me"].z() = points["Pog"].z() + 3;  // menton above pogonion
+  const auto checks = check_landmarks(points, 1.0);
+  bool named = false;
+  for (const auto& f : failed(checks, "Me")) named |= f.find("Me below Pog") != std::string::npos;
+  EXPECT_TRUE(named);
+}
+
+TEST(LandmarkChecks, SizesOutsideAdultRangesAreFlagged) {
+  FramePoints points = template_head();
+  points["N"] = points["S"] + 1.4 * (points["N"] - points["S"]);  // S-N 97 mm
+  const auto checks = check_landmarks(points, 1.0);
+  bool named = false;
+  for (const auto& f : failed(checks, "N")) named |= f.find("range: S-N") != std::string::npos;
+  EXPECT_TRUE(named);
+}
+
+TEST(LandmarkChecks, AClassThreeBiteMayHaveTheLowerIncisorInFront) {
+  FramePoints points = template_head();
+  std::swap(points["U1"].y(), points["L1"].y());                     // reverse overjet
+  EXPECT_FALSE(failed(check_landmarks(points, 1.0), "U1").empty());  // with Class I jaws: flagged
+  points["B"].y() -= 8;                                              // mandible forward: ANB < 0
+  points["Pog"].y() -= 8;
+  points["PogS"].y() -= 8;
+  EXPECT_TRUE(failed(check_landmarks(points, 1.0), "U1").empty());
+}
+
+}  // namespace
+}  // namespace maxillo::landmarking

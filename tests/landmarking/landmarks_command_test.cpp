@@ -1,0 +1,49 @@
+// `maxillo landmarks detect` end to end: a sample CT folder in, the table, the CSV (label,x,y,z
+// first, read back by the program's own landmark reader) and the 3D Slicer markups out.
+#include <gtest/gtest.h>
+
+#include "ceph/landmark_io.h"
+#include "core/json.h"
+#include "support/run_maxillo.h"
+#include "support/temporary_folder.h"
+
+namespace maxillo {
+namespace {
+
+TEST(LandmarksCommand, DetectsTheSamplesLandmarksIntoCsvAndMarkups) {
+  testing::TemporaryFolder folder("landmarks-command");
+  ASSERT_EQ(testing::run_maxillo({"sample", "--out", (folder / "ph").string()}, folder.path()).exit_code, 0);
+  const auto csv = testing::run_maxillo(
+      {"landmarks", "detect", (folder / "ph" / "ct").string(), "--out", (folder / "found.csv").string()},
+      folder.path());
+  ASSERT_EQ(csv.exit_code, 0) << csv.err;
+  EXPECT_NE(csv.out.find("head frame: Frankfort horizontal"), std::string::npos) << csv.out;
+  const std::string text = testing::slurp(folder / "found.csv");
+  EXPECT_TRUE(text.starts_with("label,x,y,z,confidence,status")) << text.substr(0, 80);
+  EXPECT_NE(text.find("U6R,,,,"), std::string::npos);  // absent: empty coordinates
+  // Read back as a landmark file (absent rows skipped), near the sample's own landmarks.
+  const LandmarkSet found = read_landmarks(folder / "found.csv");
+  const LandmarkSet truth = read_landmarks(folder / "ph" / "landmarks.csv");
+  EXPECT_EQ(found.size(), 25u);
+  for (const char* label : {"S", "N", "ANS", "PNS", "Me"})
+    EXPECT_LT((*find_landmark(found, label) - *find_landmark(truth, label)).norm(), 1.2) << label;
+
+  const auto json = testing::run_maxillo({"landmarks", "detect", (folder / "ph" / "ct").string(), "--only", "S,N,U6R",
+                                          "--out", (folder / "found.mrk.json").string(), "--json"},
+                                         folder.path());
+  ASSERT_EQ(json.exit_code, 0) << json.err;
+  const Json document = Json::parse(json.out);
+  ASSERT_EQ(document["landmarks"].size(), 3u);
+  EXPECT_EQ(document["landmarks"][2]["status"], "absent");
+  const Json markups = Json::parse(testing::slurp(folder / "found.mrk.json"));
+  EXPECT_EQ(markups["markups"][0]["controlPoints"][2]["positionStatus"], "missing");
+  EXPECT_EQ(read_landmarks(folder / "found.mrk.json").size(), 2u);
+
+  const auto unknown =
+      testing::run_maxillo({"landmarks", "detect", (folder / "ph" / "ct").string(), "--only", "Xx"}, folder.path());
+  EXPECT_NE(unknown.exit_code, 0);
+  EXPECT_NE(unknown.err.find("unknown landmark label 'Xx'"), std::string::npos) << unknown.err;
+}
+
+}  // namespace
+}  // namespace maxillo

@@ -1,0 +1,156 @@
+// The detector against the phantom's truth (the landmarks its generator places by
+// construction), as it is and in other poses and spacings: the same anatomy must give the same
+// points, moved with the head.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <atomic>
+#include <cmath>
+#include <iostream>
+#include <map>
+#include <set>
+#include <numbers>
+#include <thread>
+
+#include "core/error.h"
+#include "landmarking/landmark_detection.h"
+#include "sample/phantom.h"
+
+namespace maxillo::landmarking {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180;
+
+// The labels this version does not detect yet (reported absent, with the reason).
+const std::set<std::string> kNotYetDetected = {"U6R", "U6L", "L6R", "L6L"};
+
+// Distances of the detected landmarks that are not flagged from their truth.
+std::map<std::string, double> errors_against(const LandmarkDetection& found, const LandmarkSet& truth,
+                                             const Eigen::Isometry3d& truth_to_scan = Eigen::Isometry3d::Identity()) {
+  std::map<std::string, double> errors;
+  for (const auto& l : found.landmarks)
+    if (l.position && !l.flagged())
+      if (auto t = find_landmark(truth, l.label)) errors[l.label] = (*l.position - truth_to_scan * *t).norm();
+  return errors;
+}
+
+double mean_of(const std::map<std::string, double>& errors) {
+  double sum = 0;
+  for (const auto& [label, e] : errors) sum += e;
+  return errors.empty() ? 1e9 : sum / double(errors.size());
+}
+
+// The same voxels with a header that places them turned and shifted: the head in another pose.
+Volume posed(Volume ct, const Eigen::Isometry3d& pose) {
+  ct.geometry.direction = pose.linear() * ct.geometry.direction;
+  ct.geometry.origin = pose * ct.geometry.origin;
+  return ct;
+}
+
+const Phantom& default_phantom() {
+  static const Phantom phantom = make_phantom({});
+  return phantom;
+}
+
+TEST(PhantomLandmarks, TheDefaultPhantomsLandmarksAreFoundNearTheirTruth) {
+  const LandmarkDetection found = detect_landmarks(default_phantom().ct, "phantom");
+  const auto errors = errors_against(found, default_phantom().landmarks);
+  for (const auto& l : found.landmarks) {
+    if (kNotYetDetected.count(l.label)) {
+      EXPECT_FALSE(l.position) << l.label;
+      EXPECT_FALSE(l.note.empty()) << l.label << " is absent without a reason";
+      continue;
+    }
+    ASSERT_TRUE(l.position) << l.label << ": " << l.note;
+    // Articulare, read in 3D, is never confident (mandible_landmarks.h): flagged for a person.
+    EXPECT_EQ(l.flagged(), l.label.starts_with("Ar")) << l.label;
+  }
+  // Measured 2026-11-27 (1 mm phantom): mean 0.9 mm over the 23 confident landmarks; Or (2.8)
+  // and L1 (1.8) are the weakest.
+  EXPECT_LT(mean_of(errors), 1.2);
+  for (const auto& [label, e] : errors)
+    EXPECT_LT(e, label.starts_with("Or") ? 3.6 : label == "L1" ? 2.2 : 1.6) << label;
+  EXPECT_EQ(found.frame_source, "Frankfort horizontal (porion and orbitale)");
+  EXPECT_NEAR(found.scale, 1.0, 0.02);  // S-N 70 mm
+}
+
+TEST(PhantomLandmarks, TheLandmarksMoveWithTheHeadInEveryPose) {
+  const LandmarkDetection reference = detect_landmarks(default_phantom().ct, "phantom");
+  const std::vector<Eigen::Isometry3d> poses = {
+      Eigen::Translation3d(12, -8, 5) * Eigen::AngleAxisd(12 * kDeg, Eigen::Vector3d::UnitZ()),
+      Eigen::Translation3d(-5, 4, -20) * Eigen::AngleAxisd(-14 * kDeg, Eigen::Vector3d::UnitX()),
+      Eigen::Translation3d(0, 0, 7) * Eigen::AngleAxisd(10 * kDeg, Eigen::Vector3d(1, 1, 1).normalized()),
+  };
+  for (const auto& pose : poses) {
+    const LandmarkDetection found = detect_landmarks(posed(default_phantom().ct, pose), "posed phantom");
+    double sum = 0, worst = 0;
+    int count = 0;
+    for (const auto& l : found.landmarks) {
+      const DetectedLandmark* before = reference.find(l.label);
+      ASSERT_EQ(l.position.has_value(), before->position.has_value()) << l.label;
+      if (!l.position || l.flagged() || before->flagged()) continue;
+      const double moved = (*l.position - pose * *before->position).norm();
+      sum += moved;
+      worst = std::max(worst, moved);
+      ++count;
+      EXPECT_LT(moved, 2.0) << l.label;
+    }
+    std::cout << "phantom pose: " << count << " landmarks moved with the head to within mean " << sum / count
+              << " mm, worst " << worst << " mm\n";
+    EXPECT_LT(sum / count, 0.6) << "mean displacement from the pose's image";
+    // And against the truth, moved with the head.
+    EXPECT_LT(mean_of(errors_against(found, default_phantom().landmarks, pose)), 1.6);
+  }
+}
+
+TEST(PhantomLandmarks, AFinerAndACoarserScanOfTheSameHeadAgree) {
+  for (double spacing : {0.75, 1.4}) {
+    const Phantom phantom = make_phantom({.spacing_mm = spacing});
+    const auto errors = errors_against(detect_landmarks(phantom.ct, "phantom"), phantom.landmarks);
+    EXPECT_LT(mean_of(errors), 1.6) << spacing << " mm";
+    EXPECT_EQ(errors.size(), 23u) << spacing << " mm";  // all but U6/L6 (not yet) and Ar (flagged)
+  }
+}
+
+// The same scan gives the same bits run after run, whatever else the machine is doing (a busy
+// thread competes for the cores): every sum is split into fixed parts joined in order.
+TEST(PhantomLandmarks, TheSameBitsWhateverTheLoad) {
+  const Volume ct = make_phantom({.spacing_mm = 1.5}).ct;
+  const LandmarkDetection reference = detect_landmarks(ct, "phantom");
+  std::atomic<bool> stop{false};
+  std::thread busy([&] {
+    volatile double x = 0;
+    while (!stop) x = x + 1;
+  });
+  const LandmarkDetection loaded = detect_landmarks(ct, "phantom");
+  stop = true;
+  busy.join();
+  ASSERT_EQ(loaded.landmarks.size(), reference.landmarks.size());
+  for (size_t i = 0; i < loaded.landmarks.size(); ++i) {
+    EXPECT_EQ(loaded.landmarks[i].position.has_value(), reference.landmarks[i].position.has_value());
+    if (loaded.landmarks[i].position)
+      EXPECT_EQ(*loaded.landmarks[i].position, *reference.landmarks[i].position) << loaded.landmarks[i].label;
+  }
+  EXPECT_EQ(loaded.midsagittal.normal, reference.midsagittal.normal);
+}
+
+TEST(PhantomLandmarks, ABoxOfAirIsNotAHead) {
+  Volume air;
+  air.geometry.size = {80, 80, 80};
+  air.geometry.spacing.setConstant(1.0);
+  air.hu.assign(size_t(air.geometry.voxel_count()), -1000);
+  try {
+    detect_landmarks(air, "air.mhd");
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("air.mhd"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("no bone found"), std::string::npos) << e.what();
+  }
+  Volume small = air;
+  small.geometry.size = {30, 30, 30};
+  small.hu.resize(27000);
+  EXPECT_THROW(detect_landmarks(small, "small.mhd"), Error);
+}
+
+}  // namespace
+}  // namespace maxillo::landmarking
