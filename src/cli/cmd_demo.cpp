@@ -22,9 +22,13 @@ void attach_demo(CLI::App& app, CommandContext& ctx) {
     const Json summary = demo::run_demo(*options);
     if (ctx.global.json)
       std::cout << summary.dump(2) << "\n";
-    else
+    else {
+      std::cout << "landmarks found automatically: " << summary["landmarks_detected"].get<int>()
+                << ", mean distance from the phantom's known landmarks "
+                << summary["landmark_mean_distance_mm"].get<double>() << " mm\n";
       std::cout << "demo report: " << summary["report"].get<std::string>() << " (" << summary["pages"].get<int>()
                 << " pages, " << summary["timing"]["total_seconds"].get<double>() << " s)\n";
+    }
     ctx.exit_code = 0;
   });
 }

@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "archive/archive_location.h"
+#include "casework/automatic_landmarks.h"
 #include "casework/case_simulation.h"
 #include "casework/case_surfaces.h"
 #include "casework/plan_case.h"
@@ -20,6 +21,8 @@
 #include "demo/stage_clock.h"
 #include "followup/ceph_sample_cohort.h"
 #include "followup/cohort_report.h"
+#include "imaging/volume_assembly.h"
+#include "landmarking/landmark_detection.h"
 #include "net/loopback_server.h"
 #include "net/store_client.h"
 #include "nightly/nightly.h"
@@ -103,10 +106,17 @@ Json run_demo(const DemoOptions& options) {
   const auto archive_dir = options.archive_dir.empty() ? options.out / "archive" : options.archive_dir;
   net::StorageServerCounts received;
   casework::OcclusionRun occlusion;
+  // Beside them too, the landmarks found on the CT without hands (issue 28), to be stored beside
+  // the phantom's known ones and compared with them in the report.
+  std::optional<landmarking::LandmarkDetection> detected;
   run_concurrently({[&] { received = push_over_dicom(files_in(sample.ct_folder), "DEMO-CT", "MAXILLO", archive_dir); },
-                    [&] { occlusion = compute_phantom_occlusion(options.skeletal_class); }});
+                    [&] { occlusion = compute_phantom_occlusion(options.skeletal_class); },
+                    [&] {
+                      detected = landmarking::detect_landmarks(load_series_volume(files_in(sample.ct_folder)),
+                                                               "the phantom's CT");
+                    }});
   auto archive = Archive::open(archive_dir);
-  clock.mark("receive over DICOM, occlusion computed beside it");
+  clock.mark("receive over DICOM, occlusion and landmark detection beside it");
 
   auto case_id = archive.resolve_case(casework::kPhantomPatientId);
   // Dated follow-up (the sample cohort's first patient) for the follow-up table and Wits chart;
@@ -115,6 +125,7 @@ Json run_demo(const DemoOptions& options) {
   records::attach_cohort_time_points(archive, case_id,
                                      followup::sample_patient_follow_up(followup::sample_cohort_patients()[0], 2001),
                                      {}, "sample cohort P01 (phantoms)", follow_up);
+  records::attach_automatic_landmarks(archive, case_id, detected->present(), casework::automatic_facts(*detected));
   records::attach_landmarks(archive, case_id, sample.landmarks, "phantom (analytic)");
   archive_phantom_occlusion(archive, case_id, std::move(occlusion), sample.landmarks, options.out / "occlusion");
   clock.mark("occlusion written and archived");
@@ -161,7 +172,16 @@ Json run_demo(const DemoOptions& options) {
                                     "sample cohort (synthetic)", cohort_pdf);
   clock.mark("cohort follow-up");
 
+  double detection_sum = 0;
+  int detected_count = 0;
+  for (const auto& l : detected->present())
+    if (const auto known = find_landmark(sample.landmarks, l.label)) {
+      detection_sum += (l.position - *known).norm();
+      ++detected_count;
+    }
   Json summary{{"report", report.pdf.string()},
+               {"landmarks_detected", detected_count},
+               {"landmark_mean_distance_mm", detected_count ? detection_sum / detected_count : 0.0},
                {"pages", report.pages},
                {"archive", archive_dir.string()},
                {"case", case_id},

@@ -145,6 +145,13 @@ std::optional<StoredLandmarks> preferred_landmarks(const Archive& archive, int64
   return stored;
 }
 
+std::optional<StoredLandmarks> newest_automatic_landmarks(const Archive& archive, int64_t case_id) {
+  std::optional<StoredLandmarks> newest;
+  for (auto& stored : landmark_history(archive, case_id))
+    if (stored.automatic) newest = std::move(stored);
+  return newest;
+}
+
 void attach_automatic_landmarks(Archive& archive, int64_t case_id, const LandmarkSet& present,
                                 const AutomaticFacts& facts) {
   auto text = format_landmarks(present, LandmarkFormat::kSlicerMarkupsJson);

@@ -73,6 +73,9 @@ void attach_automatic_landmarks(Archive& archive, int64_t case_id, const Landmar
 // takes precedence, else the newest automatic set; nullopt when the case has none.
 std::optional<StoredLandmarks> preferred_landmarks(const Archive& archive, int64_t case_id);
 
+// The newest automatic set of the case (whether or not a set given by hand takes precedence).
+std::optional<StoredLandmarks> newest_automatic_landmarks(const Archive& archive, int64_t case_id);
+
 // Every stored set of the case, oldest first (the history).
 std::vector<StoredLandmarks> landmark_history(const Archive& archive, int64_t case_id);
 // The newest version of each time point (sets without a time point are left out), ordered by

@@ -15,7 +15,7 @@ report::Table landmark_table(const records::StoredLandmarks& stored) {
                    {"Status", 0.5}};
   const auto* facts = stored.automatic ? &*stored.automatic : nullptr;
   for (const auto& l : stored.landmarks) {
-    std::string confidence = "by hand", status = "placed by hand";
+    std::string confidence = "given", status = "attached";
     if (facts) {
       const auto c = facts->confidence.find(l.label);
       confidence = c != facts->confidence.end() ? report::fixed(c->second, 2) : "-";
@@ -30,9 +30,34 @@ report::Table landmark_table(const records::StoredLandmarks& stored) {
   return table;
 }
 
+// Per label of the automatic set found in the given one: the distance between the two, and the
+// automatic landmark's status.
+report::Table comparison_table(const records::StoredLandmarks& given, const records::StoredLandmarks& automatic,
+                               double& mean_mm) {
+  report::Table table;
+  table.columns = {{"Landmark", 0.15}, {"Distance (mm)", 0.2, report::Align::Right}, {"Automatic landmark", 0.65}};
+  double sum = 0;
+  int count = 0;
+  for (const auto& l : automatic.landmarks) {
+    const auto at = find_landmark(given.landmarks, l.label);
+    if (!at) continue;
+    const double distance = (l.position - *at).norm();
+    const auto f = automatic.automatic->flagged.find(l.label);
+    table.rows.push_back({l.label, report::fixed(distance, 2),
+                          f != automatic.automatic->flagged.end() ? "FLAGGED: " + f->second : "checks passed"});
+    sum += distance;
+    ++count;
+  }
+  for (const auto& [label, why] : automatic.automatic->absent)
+    if (find_landmark(given.landmarks, label)) table.rows.push_back({label, "-", "absent: " + why});
+  mean_mm = count ? sum / count : 0;
+  return table;
+}
+
 }  // namespace
 
-std::optional<report::Section> landmark_section(const std::optional<records::StoredLandmarks>& stored) {
+std::optional<report::Section> landmark_section(const std::optional<records::StoredLandmarks>& stored,
+                                                const std::optional<records::StoredLandmarks>& automatic_beside) {
   if (!stored || stored->landmarks.empty()) return std::nullopt;
   report::Section section{"landmarks", {}};
   if (stored->automatic) {
@@ -42,10 +67,20 @@ std::optional<report::Section> landmark_section(const std::optional<records::Sto
         "an order the anatomy forbids, a size outside adult ranges) or had weak evidence: they are not used for "
         "planning until a person confirms them."});
   } else {
-    section.blocks.push_back(report::Paragraph{"Placed by hand: " + stored->source + "."});
+    section.blocks.push_back(report::Paragraph{"Attached to the case (" + stored->source + ")."});
   }
   section.blocks.push_back(landmark_table(*stored));
   section.blocks.push_back(report::Note{"Positions in the patient frame (LPS), millimetres."});
+  if (!stored->automatic && automatic_beside && automatic_beside->automatic) {
+    double mean = 0;
+    report::Table comparison = comparison_table(*stored, *automatic_beside, mean);
+    section.blocks.push_back(report::Subheading{"Automatic detection against these landmarks"});
+    section.blocks.push_back(report::Paragraph{
+        "The landmarks were also found automatically on the CT (" + automatic_beside->automatic->method +
+        "); the given set keeps precedence. Mean distance of the automatic landmarks from the given ones: " +
+        report::fixed(mean, 2) + " mm."});
+    section.blocks.push_back(std::move(comparison));
+  }
   return section;
 }
 

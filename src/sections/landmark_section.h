@@ -2,7 +2,8 @@
 // The "landmarks" section of the consultation report: every landmark the case works with, so a
 // surgeon can check them at a glance: label, position (LPS mm), where it came from (a file or
 // the automatic detection), the detection's confidence and status (flagged ones with their
-// failed checks; absent ones with the reason).
+// failed checks; absent ones with the reason); and, when an automatic set was stored beside a set
+// given by hand, how far each automatic landmark lies from the given one.
 #include <optional>
 
 #include "records/case_landmarks.h"
@@ -11,6 +12,9 @@
 namespace maxillo::sections {
 
 // nullopt: the case has no landmarks (the section is left out; the summary says why).
-std::optional<report::Section> landmark_section(const std::optional<records::StoredLandmarks>& stored);
+// `automatic_beside`: an automatic set stored beside a set given by hand (which the case uses):
+// the distance of each of its landmarks from the given one is shown after the table.
+std::optional<report::Section> landmark_section(const std::optional<records::StoredLandmarks>& stored,
+                                                const std::optional<records::StoredLandmarks>& automatic_beside = {});
 
 }  // namespace maxillo::sections

@@ -1,0 +1,61 @@
+// The report's Landmarks section (sections/landmark_section.h): an automatic set shows its
+// confidences, flags and absences; a given set with an automatic one beside it shows the
+// distance of each automatic landmark from the given one.
+#include <gtest/gtest.h>
+
+#include "sections/landmark_section.h"
+
+namespace maxillo::sections {
+namespace {
+
+records::StoredLandmarks automatic_set() {
+  records::StoredLandmarks stored;
+  stored.source = "automatic (maxillo-landmarks 1)";
+  stored.landmarks = {{"S", {0, 0, 20.3}}, {"OrL", {33, -57, 3}}};
+  stored.automatic = records::AutomaticFacts{"maxillo-landmarks 1",
+                                             {{"S", 0.91}, {"OrL", 0.3}},
+                                             {{"OrL", "mirror: 6.0 mm from the mirror image"}},
+                                             {{"U6R", "not detected by this version of the method"}}};
+  return stored;
+}
+
+const report::Table& first_table(const report::Section& section, size_t skip = 0) {
+  for (const auto& block : section.blocks)
+    if (const auto* table = std::get_if<report::Table>(&block))
+      if (skip-- == 0) return *table;
+  throw std::runtime_error("no such table");
+}
+
+TEST(LandmarkSection, AnAutomaticSetShowsItsDoubts) {
+  const auto section = landmark_section(automatic_set());
+  ASSERT_TRUE(section);
+  const auto& table = first_table(*section);
+  ASSERT_EQ(table.rows.size(), 3u);  // S, OrL, and the absent U6R
+  EXPECT_EQ(table.rows[0][4], "0.91");
+  EXPECT_EQ(table.rows[1][5], "FLAGGED: mirror: 6.0 mm from the mirror image");
+  EXPECT_EQ(table.rows[2][0], "U6R");
+  EXPECT_EQ(table.rows[2][5], "absent: not detected by this version of the method");
+  EXPECT_FALSE(landmark_section(std::nullopt));
+}
+
+TEST(LandmarkSection, AGivenSetIsComparedWithTheAutomaticOneBesideIt) {
+  records::StoredLandmarks given;
+  given.source = "phantom (analytic)";
+  given.landmarks = {{"S", {0, 0, 20}}, {"OrL", {33, -57, 0}}, {"U6R", {-29, -48, -47}}};
+  const auto section = landmark_section(given, automatic_set());
+  ASSERT_TRUE(section);
+  const auto& comparison = first_table(*section, 1);
+  ASSERT_EQ(comparison.rows.size(), 3u);
+  EXPECT_EQ(comparison.rows[0][1], "0.30");  // S: 0.3 mm
+  EXPECT_EQ(comparison.rows[1][1], "3.00");  // OrL: 3 mm, flagged
+  EXPECT_EQ(comparison.rows[2][1], "-");     // U6R: absent from the automatic set
+  bool mean_said = false;
+  for (const auto& block : section->blocks)
+    if (const auto* p = std::get_if<report::Paragraph>(&block))
+      mean_said |=
+          p->text.find("Mean distance of the automatic landmarks from the given ones: 1.65 mm") != std::string::npos;
+  EXPECT_TRUE(mean_said);
+}
+
+}  // namespace
+}  // namespace maxillo::sections
