@@ -7,12 +7,12 @@ namespace {
 
 report::Table landmark_table(const records::StoredLandmarks& stored) {
   report::Table table;
-  table.columns = {{"Landmark", 0.11},
-                   {"x", 0.09, report::Align::Right},
-                   {"y", 0.09, report::Align::Right},
-                   {"z", 0.09, report::Align::Right},
-                   {"Confidence", 0.12, report::Align::Right},
-                   {"Status", 0.5}};
+  table.columns = {{"Label", 0.1},
+                   {"x", 0.1, report::Align::Right},
+                   {"y", 0.1, report::Align::Right},
+                   {"z", 0.1, report::Align::Right},
+                   {"Confidence", 0.15, report::Align::Right},
+                   {"Status", 0.45}};
   const auto* facts = stored.automatic ? &*stored.automatic : nullptr;
   for (const auto& l : stored.landmarks) {
     std::string confidence = "given", status = "attached";
