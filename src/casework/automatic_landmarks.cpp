@@ -26,11 +26,13 @@ records::AutomaticFacts automatic_facts(const landmarking::LandmarkDetection& de
 
 std::optional<records::StoredLandmarks> case_landmarks(Archive& archive, int64_t case_id, const Volume* ct) {
   if (auto stored = records::preferred_landmarks(archive, case_id)) return stored;
-  const auto contents = archive.case_contents(case_id);
-  bool has_ct = false;
-  for (const auto& entry : contents.series) has_ct |= entry.role == "preop" || entry.series.modality == "CT";
-  if (!has_ct) return std::nullopt;
-  const int64_t series = records::primary_series(contents);
+  int64_t series = 0;
+  try {
+    series = records::primary_series(archive.case_contents(case_id));
+  } catch (const Error& e) {
+    if (e.code() != ErrorCode::kNotFound) throw;
+    return std::nullopt;  // no CT to find them on
+  }
   const Volume loaded = ct ? Volume{} : records::load_archived_series(archive, series);
   const std::string subject = "case:" + std::to_string(case_id);
   const auto detection = landmarking::detect_landmarks(ct ? *ct : loaded, subject);

@@ -10,6 +10,7 @@
 
 #include "casework/automatic_landmarks.h"
 #include "cli/command.h"
+#include "cli/folder_files.h"
 #include "core/error.h"
 #include "core/json.h"
 #include "imaging/volume_assembly.h"
@@ -45,16 +46,7 @@ bool names_a_file(const std::string& input) {
 Volume load_input(const std::string& input, const GlobalOptions& global) {
   const std::filesystem::path path(input);
   if (std::filesystem::is_regular_file(path) && is_volume_file(path)) return read_volume_file(path);
-  if (std::filesystem::is_directory(path)) {
-    std::vector<std::filesystem::path> files;
-    for (const auto& entry : std::filesystem::recursive_directory_iterator(path)) {
-      const std::string name = entry.path().filename().string();
-      if (entry.is_regular_file() && name != "DICOMDIR" && !name.starts_with(".")) files.push_back(entry.path());
-    }
-    std::sort(files.begin(), files.end());
-    if (files.empty()) throw Error(ErrorCode::kFileNotFound, input, "no files in the folder");
-    return load_series_volume(files);
-  }
+  if (std::filesystem::is_directory(path)) return load_series_volume(files_below(path));
   Archive archive = Archive::open(resolve_archive_dir(global));
   const int64_t case_id = archive.resolve_case(input);
   return records::load_archived_series(archive, records::primary_series(archive.case_contents(case_id)));

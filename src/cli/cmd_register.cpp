@@ -12,6 +12,7 @@
 
 #include "archive/archive.h"
 #include "cli/command.h"
+#include "cli/folder_files.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/json.h"
@@ -36,17 +37,6 @@ struct LoadedSeries {
   Json source;                    // {"folder": ...} or {"series": id, "series_uid": ...}
   std::optional<int64_t> series;  // archive id when archived
 };
-
-std::vector<std::filesystem::path> files_below(const std::filesystem::path& folder) {
-  std::vector<std::filesystem::path> files;
-  for (const auto& entry : std::filesystem::recursive_directory_iterator(folder)) {
-    const std::string name = entry.path().filename().string();
-    if (entry.is_regular_file() && name != "DICOMDIR" && !name.starts_with(".")) files.push_back(entry.path());
-  }
-  std::sort(files.begin(), files.end());
-  if (files.empty()) throw Error(ErrorCode::kFileNotFound, folder.string(), "no files in the folder");
-  return files;
-}
 
 // The archive is opened only when an argument is not a folder (two folders need no archive).
 class LazyArchive {

@@ -31,13 +31,10 @@ bool is_local_extremum(const Profile& profile, int i, int sign, double reach_mm)
   return true;
 }
 
-// Index of the first local extremum met reading the profile from its top (or its bottom); -1 if none.
-int local_extremum(const Profile& profile, int sign, double reach_mm, bool from_bottom) {
-  const int n = int(profile.size());
-  for (int step = 0; step < n; ++step) {
-    const int i = from_bottom ? n - 1 - step : step;
+// Index of the lowest local extremum (the first met reading the profile from its bottom); -1 if none.
+int lowest_local_extremum(const Profile& profile, int sign, double reach_mm) {
+  for (int i = int(profile.size()) - 1; i >= 0; --i)
     if (is_local_extremum(profile, i, sign, reach_mm)) return i;
-  }
   return -1;
 }
 
@@ -115,7 +112,6 @@ void find_maxillary_midline(const HeadVolume& v, double scale, Findings& found) 
   } else {
     found["A"] = RuleFinding::absent("no alveolar bone below ANS");
   }
-  found["PNS"] = RuleFinding{};  // set by find_posterior_nasal_spine below
   // PNS: the posterior end of the bone plate that runs back from ANS (the hard palate), traced
   // as the bone connected to the spine within a band around its height.
   const double step = 0.25;
@@ -176,7 +172,7 @@ void find_symphysis(const HeadVolume& v, double scale, Findings& found) {
   for (const auto& p : front)
     if (!is_tooth(v, p)) bone_front.push_back(p);
   // Pog: the lowest forward extremum (the chin); B: the deepest point above it, below the crowns.
-  const int pog = local_extremum(bone_front, -1, 4, true);
+  const int pog = lowest_local_extremum(bone_front, -1, 4);
   if (pog < 0) {
     for (const char* label : {"Pog", "B", "Me", "Gn"})
       found[label] = RuleFinding::absent("no bony chin in the midline");
