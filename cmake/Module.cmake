@@ -7,4 +7,5 @@ function(maxillo_module name)
   target_link_libraries(maxillo_${name}
     PUBLIC maxillo_core ${ARG_PUBLIC_LINKS}
     PRIVATE maxillo_warnings maxillo_sanitizers ${ARG_PRIVATE_LINKS})
+  maxillo_keep_itk_apart(maxillo_${name})
 endfunction()

@@ -9,7 +9,6 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "core/parallel_slabs.h"
-#include "core/sha256.h"
 #include "imaging/segmentation.h"
 #include "imaging/volume_assembly.h"
 #include "mesh/mesh_io.h"
@@ -29,17 +28,6 @@
 
 namespace maxillo::casework {
 namespace {
-
-std::string landmarks_hash(const LandmarkSet& landmarks) {
-  Sha256 hash;
-  char line[160];
-  for (const auto& l : landmarks) {
-    std::snprintf(line, sizeof line, "%s %.6f %.6f %.6f\n", l.label.c_str(), l.position.x(), l.position.y(),
-                  l.position.z());
-    hash.update(line);
-  }
-  return hash.hex_digest();
-}
 
 validation::FaceLandmarks face_landmarks(const LandmarkSet& landmarks) {
   const std::string subject = "validation regions";

@@ -5,7 +5,6 @@
 #include "archive/artefact_kind.h"
 #include "ceph/landmark_frame.h"
 #include "core/atomic_file.h"
-#include "core/sha256.h"
 #include "core/temporary_folder.h"
 #include "records/derivation.h"
 #include "render/render_views.h"
@@ -15,15 +14,6 @@ namespace {
 
 constexpr std::array kViews = {render::StandardView::Frontal, render::StandardView::Lateral,
                                render::StandardView::Oblique};
-
-std::string landmarks_hash(const LandmarkSet& landmarks) {
-  Sha256 hash;
-  for (const auto& l : landmarks) {
-    hash.update(l.label);
-    for (double c : l.position) hash.update(std::to_string(c));
-  }
-  return hash.hex_digest();
-}
 
 constexpr std::array kTissues = {ViewedTissue::Skin, ViewedTissue::Bone};
 

@@ -1,5 +1,6 @@
 #include "casework/synthetic_postop.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -93,25 +94,18 @@ std::vector<double> error_bump(const TriangleMesh& skin, const Eigen::Vector3d& 
   return bump;
 }
 
-// Axis-aligned box around the skin vertices that moved (prediction or bump), grown by `margin`.
-struct Box {
-  Eigen::Vector3d min = Eigen::Vector3d::Constant(1e300), max = Eigen::Vector3d::Constant(-1e300);
-  bool contains(const Eigen::Vector3d& p) const {
-    return (p.array() >= min.array()).all() && (p.array() <= max.array()).all();
-  }
-};
-
-Box moved_skin_box(const TriangleMesh& before, const TriangleMesh& after, double margin) {
-  Box box;
+// Axis-aligned box around the skin vertices that moved (prediction or bump), grown by `margin`;
+// empty (containing nothing) when none moved.
+Eigen::AlignedBox3d moved_skin_box(const TriangleMesh& before, const TriangleMesh& after, double margin) {
+  Eigen::AlignedBox3d box;
   for (Eigen::Index v = 0; v < before.vertex_count(); ++v) {
     if ((after.vertices.row(v) - before.vertices.row(v)).norm() < kMovedSkinMm) continue;
-    for (const auto& p : {before.vertices.row(v), after.vertices.row(v)}) {
-      box.min = box.min.cwiseMin(p.transpose());
-      box.max = box.max.cwiseMax(p.transpose());
-    }
+    box.extend(before.vertices.row(v).transpose());
+    box.extend(after.vertices.row(v).transpose());
   }
-  box.min.array() -= margin;
-  box.max.array() += margin;
+  if (box.isEmpty()) return box;
+  box.min().array() -= margin;
+  box.max().array() += margin;
   return box;
 }
 
@@ -206,7 +200,7 @@ class PostopVoxels {
   DistanceField skin_field_;
   double reach_mm_;
   SkinRamp ramp_;
-  Box box_;
+  Eigen::AlignedBox3d box_;
   std::vector<std::pair<uint8_t, Eigen::Isometry3d>> inverse_moves_;
 };
 

@@ -12,35 +12,28 @@
 namespace maxillo::casework {
 namespace {
 
-struct Box {
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = Eigen::Vector3d::Constant(-1e300);
-  void extend(const Eigen::Vector3d& p) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-  bool empty() const { return (hi.array() < lo.array()).any(); }
-};
-
 // Box (in the segment volume's index-aligned frame, i.e. continuous indices scaled by spacing)
 // of the maxilla and the screws, plus the margin.
-Box model_box(const LabelVolume& segments, const std::vector<ScrewAxis>& screws, const TransferModelOptions& o) {
+Eigen::AlignedBox3d model_box(const LabelVolume& segments, const std::vector<ScrewAxis>& screws,
+                              const TransferModelOptions& o) {
   const auto& g = segments.geometry;
-  Box box;
+  Eigen::AlignedBox3d box;
   const int64_t nx = g.size.x(), ny = g.size.y();
   for (int64_t v = 0; v < int64_t(segments.labels.size()); ++v)
     if (segments.labels[size_t(v)] == uint8_t(planning::Segment::kMaxilla))
       box.extend(Eigen::Vector3d(double(v % nx), double((v / nx) % ny), double(v / (nx * ny))).cwiseProduct(g.spacing));
-  if (box.empty()) throw Error(ErrorCode::kEmptyResult, "transfer model", "the plan has no Le Fort I maxilla segment");
+  if (box.isEmpty())
+    throw Error(ErrorCode::kEmptyResult, "transfer model", "the plan has no Le Fort I maxilla segment");
   for (const auto& s : screws) {
     for (const Eigen::Vector3d& end :
          {Eigen::Vector3d(s.entry - o.outside_mm * s.direction), Eigen::Vector3d(s.entry + s.length_mm * s.direction)})
       box.extend(g.continuous_index(end).cwiseProduct(g.spacing));
   }
-  box.lo.array() -= o.margin_mm;
-  box.hi.array() += o.margin_mm;
+  box.min().array() -= o.margin_mm;
+  box.max().array() += o.margin_mm;
   // Never beyond the scanned volume.
-  box.lo = box.lo.cwiseMax(Eigen::Vector3d::Zero());
-  box.hi = box.hi.cwiseMin((g.size.cast<double>() - Eigen::Vector3d::Ones()).cwiseProduct(g.spacing));
+  box.min() = box.min().cwiseMax(Eigen::Vector3d::Zero());
+  box.max() = box.max().cwiseMin((g.size.cast<double>() - Eigen::Vector3d::Ones()).cwiseProduct(g.spacing));
   return box;
 }
 
@@ -75,13 +68,13 @@ bool is_midface(uint8_t segment) {
 TransferModel make_transfer_model(const LabelVolume& segments, const std::vector<ScrewAxis>& screws,
                                   const TransferModelOptions& options) {
   const auto& g = segments.geometry;
-  const Box box = model_box(segments, screws, options);
+  const Eigen::AlignedBox3d box = model_box(segments, screws, options);
   // The fine grid shares the CT's axes; only spacing and origin differ.
   LabelVolume model;
   model.geometry.direction = g.direction;
   model.geometry.spacing = Eigen::Vector3d::Constant(options.voxel_mm);
-  model.geometry.origin = g.origin + g.direction * box.lo;
-  model.geometry.size = ((box.hi - box.lo) / options.voxel_mm).array().floor().cast<int>() + 1;
+  model.geometry.origin = g.origin + g.direction * box.min();
+  model.geometry.size = ((box.max() - box.min()) / options.voxel_mm).array().floor().cast<int>() + 1;
   model.labels.assign(size_t(model.geometry.voxel_count()), 0);
   const auto& f = model.geometry;
   for (int k = 0; k < f.size.z(); ++k)

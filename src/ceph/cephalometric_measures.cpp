@@ -5,9 +5,10 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/angles.h"
+
 namespace maxillo::ceph {
 namespace {
-constexpr double kDeg = std::numbers::pi / 180;
 
 Eigen::Vector2d rotated(const Eigen::Vector2d& v, double radians) {
   double c = std::cos(radians), s = std::sin(radians);

@@ -1,6 +1,9 @@
 #include "ceph/landmark.h"
 
+#include <cstdio>
+
 #include "core/error.h"
+#include "core/sha256.h"
 
 namespace maxillo {
 
@@ -20,6 +23,17 @@ std::optional<Eigen::Vector3d> bilateral_mean(const LandmarkSet& set, const std:
   if (right && left) return 0.5 * (*right + *left);
   if (auto single = find_landmark(set, label)) return single;
   return right ? right : left;
+}
+
+std::string landmarks_hash(const LandmarkSet& set) {
+  Sha256 hash;
+  char line[160];
+  for (const auto& l : set) {
+    std::snprintf(line, sizeof line, "%s %.6f %.6f %.6f\n", l.label.c_str(), l.position.x(), l.position.y(),
+                  l.position.z());
+    hash.update(line);
+  }
+  return hash.hex_digest();
 }
 
 }  // namespace maxillo

@@ -32,4 +32,8 @@ Eigen::Vector3d require_landmark(const LandmarkSet& set, const std::string& labe
 // unsuffixed label (a 2D cephalogram), else whichever side exists.
 std::optional<Eigen::Vector3d> bilateral_mean(const LandmarkSet& set, const std::string& label);
 
+// SHA-256 of the labels and positions (to 1 µm) in order: what derivation keys use to name a
+// landmark set.
+std::string landmarks_hash(const LandmarkSet& set);
+
 }  // namespace maxillo

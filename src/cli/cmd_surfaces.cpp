@@ -83,7 +83,7 @@ Json make_surface(const std::string& name, const Volume& volume, const LabelVolu
   return describe_surface(name, mesh, file, clock.seconds());
 }
 
-void print_text(const Json& result) {
+void print_surfaces_text(const Json& result) {
   const Json& v = result["volume"];
   std::cout << "volume: " << v["size"][0] << " x " << v["size"][1] << " x " << v["size"][2] << " voxels, spacing "
             << v["spacing_mm"][0] << " x " << v["spacing_mm"][1] << " x " << v["spacing_mm"][2] << " mm ("
@@ -136,7 +136,7 @@ void run_surfaces(const SurfacesOptions& options, CommandContext& ctx) {
   if (ctx.global.json)
     std::cout << result.dump(2) << "\n";
   else
-    print_text(result);
+    print_surfaces_text(result);
 }
 
 }  // namespace

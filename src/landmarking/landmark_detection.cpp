@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/angles.h"
 #include "core/error.h"
 #include "landmarking/bone_surface.h"
 #include "landmarking/head_volume.h"
@@ -16,7 +17,6 @@
 namespace maxillo::landmarking {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180;
 constexpr double kSnAboveFrankfortDeg = 7;  // adult mean: S-N rises this much anteriorly over Frankfort
 constexpr double kSurfaceSpacingMm = 1.5;   // the symmetry search's grid
 constexpr double kCoarseSpacingMm = 1.0;    // the frame-finding head volumes

@@ -7,6 +7,7 @@
 
 #include <Eigen/Geometry>
 
+#include "core/angles.h"
 #include "core/parallel_slabs.h"
 #include "imaging/distance_morphology.h"
 #include "imaging/volume_resample.h"
@@ -14,7 +15,6 @@
 namespace maxillo::landmarking {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180;
 constexpr double kTruncationMm = 8;     // a mirrored point farther from the surface counts as this far
 constexpr size_t kSearchPoints = 4000;  // points used by the grid search (all by the refinement)
 

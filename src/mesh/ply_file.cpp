@@ -32,7 +32,7 @@ struct Element {
   std::vector<Property> properties;
 };
 
-[[noreturn]] void refuse(const std::string& source, const std::string& reason) {
+[[noreturn]] void refuse_ply(const std::string& source, const std::string& reason) {
   throw Error(ErrorCode::kBadValue, source, "not a PLY file: " + reason);
 }
 
@@ -79,21 +79,21 @@ struct Header {
 Property parse_property(const std::vector<std::string_view>& w, const std::string& source) {
   if (w.size() == 3) {
     auto p = scalar_type(w[1]);
-    if (!p) refuse(source, "unknown property type \"" + std::string(w[1]) + "\"");
+    if (!p) refuse_ply(source, "unknown property type \"" + std::string(w[1]) + "\"");
     p->name = w[2];
     return *p;
   }
   if (w.size() == 5 && w[1] == "list") {
     auto count = scalar_type(w[2]);
     auto item = scalar_type(w[3]);
-    if (!count || !item || count->is_float) refuse(source, "bad list property types");
+    if (!count || !item || count->is_float) refuse_ply(source, "bad list property types");
     item->name = w[4];
     item->is_list = true;
     item->count_size = count->size;
     item->count_signed = count->is_signed;
     return *item;
   }
-  refuse(source, "malformed property line");
+  refuse_ply(source, "malformed property line");
 }
 
 Header parse_header(std::string_view text, const std::string& source) {
@@ -102,17 +102,17 @@ Header parse_header(std::string_view text, const std::string& source) {
   bool format_seen = false;
   for (int line_number = 1;; ++line_number) {
     const size_t end = text.find('\n', at);
-    if (end == std::string_view::npos) refuse(source, "no end_header");
+    if (end == std::string_view::npos) refuse_ply(source, "no end_header");
     const auto w = words_of(text.substr(at, end - at));
     at = end + 1;
     if (line_number == 1) {
-      if (w.size() != 1 || w[0] != "ply") refuse(source, "does not begin with \"ply\"");
+      if (w.size() != 1 || w[0] != "ply") refuse_ply(source, "does not begin with \"ply\"");
       continue;
     }
     if (w.empty() || w[0] == "comment" || w[0] == "obj_info") continue;
     if (w[0] == "end_header") break;
     if (w[0] == "format") {
-      if (w.size() != 3 || w[2] != "1.0") refuse(source, "unsupported format line");
+      if (w.size() != 3 || w[2] != "1.0") refuse_ply(source, "unsupported format line");
       if (w[1] == "ascii")
         header.format = Format::Ascii;
       else if (w[1] == "binary_little_endian")
@@ -120,23 +120,23 @@ Header parse_header(std::string_view text, const std::string& source) {
       else if (w[1] == "binary_big_endian")
         header.format = Format::BinaryBig;
       else
-        refuse(source, "unknown format \"" + std::string(w[1]) + "\"");
+        refuse_ply(source, "unknown format \"" + std::string(w[1]) + "\"");
       format_seen = true;
     } else if (w[0] == "element") {
       Element element;
-      if (w.size() != 3) refuse(source, "malformed element line");
+      if (w.size() != 3) refuse_ply(source, "malformed element line");
       element.name = w[1];
       auto [ptr, status] = std::from_chars(w[2].data(), w[2].data() + w[2].size(), element.count);
-      if (status != std::errc() || ptr != w[2].data() + w[2].size()) refuse(source, "bad element count");
+      if (status != std::errc() || ptr != w[2].data() + w[2].size()) refuse_ply(source, "bad element count");
       header.elements.push_back(std::move(element));
     } else if (w[0] == "property") {
-      if (header.elements.empty()) refuse(source, "a property before any element");
+      if (header.elements.empty()) refuse_ply(source, "a property before any element");
       header.elements.back().properties.push_back(parse_property(w, source));
     } else {
-      refuse(source, "unknown header line \"" + std::string(w[0].substr(0, 40)) + "\"");
+      refuse_ply(source, "unknown header line \"" + std::string(w[0].substr(0, 40)) + "\"");
     }
   }
-  if (!format_seen) refuse(source, "no format line");
+  if (!format_seen) refuse_ply(source, "no format line");
   header.body = at;
   return header;
 }
@@ -151,7 +151,7 @@ class BodyReader {
 
   double value(int size, bool is_float, bool is_signed) {
     if (format_ == Format::Ascii) return ascii_value();
-    if (remaining() < size_t(size)) refuse(source_, "ends inside its data");
+    if (remaining() < size_t(size)) refuse_ply(source_, "ends inside its data");
     uint8_t raw[8] = {};
     std::memcpy(raw, bytes_.data() + at_, size_t(size));
     at_ += size_t(size);
@@ -185,7 +185,7 @@ class BodyReader {
     const char* end = reinterpret_cast<const char*>(bytes_.data()) + bytes_.size();
     double value = 0;
     auto [ptr, status] = std::from_chars(start, end, value);
-    if (status != std::errc() || ptr == start) refuse(source_, "a value of the data is not a number");
+    if (status != std::errc() || ptr == start) refuse_ply(source_, "a value of the data is not a number");
     at_ += size_t(ptr - start);
     return value;
   }
@@ -221,14 +221,14 @@ TriangleMesh parse_ply(std::span<const std::byte> bytes, const std::string& sour
   bool vertices_seen = false, faces_seen = false;
   for (const Element& element : header.elements) {
     if (element.count > body.remaining() / smallest_record(element, header.format))
-      refuse(source, "element " + element.name + " claims more records than the file holds");
+      refuse_ply(source, "element " + element.name + " claims more records than the file holds");
     const bool is_vertex = element.name == "vertex", is_face = element.name == "face";
     const int x = index_of(element, "x"), y = index_of(element, "y"), z = index_of(element, "z");
     int list = index_of(element, "vertex_indices");
     if (list < 0) list = index_of(element, "vertex_index");
-    if (is_vertex && (x < 0 || y < 0 || z < 0)) refuse(source, "vertices without x, y and z");
+    if (is_vertex && (x < 0 || y < 0 || z < 0)) refuse_ply(source, "vertices without x, y and z");
     if (is_face && (list < 0 || !element.properties[size_t(list)].is_list))
-      refuse(source, "faces without vertex_indices");
+      refuse_ply(source, "faces without vertex_indices");
     vertices_seen |= is_vertex;
     faces_seen |= is_face;
     if (is_vertex) coordinates.reserve(size_t(element.count) * 3);
@@ -243,22 +243,22 @@ TriangleMesh parse_ply(std::span<const std::byte> bytes, const std::string& sour
           continue;
         }
         const double n = body.value(property.count_size, false, property.count_signed);
-        if (!(n >= 0) || n > double(body.remaining())) refuse(source, "a list longer than the file");
+        if (!(n >= 0) || n > double(body.remaining())) refuse_ply(source, "a list longer than the file");
         std::vector<int64_t> items(static_cast<size_t>(n));
         for (auto& item : items) {
           const double v = body.value(property.size, property.is_float, property.is_signed);
-          if (!(std::abs(v) < 1e15)) refuse(source, "a vertex index that is not a number in range");  // NaN too
+          if (!(std::abs(v) < 1e15)) refuse_ply(source, "a vertex index that is not a number in range");  // NaN too
           item = int64_t(v);
         }
         if (is_face && int(p) == list) {
-          if (items.size() < 3) refuse(source, "a face with fewer than 3 vertices");
+          if (items.size() < 3) refuse_ply(source, "a face with fewer than 3 vertices");
           for (size_t k = 1; k + 1 < items.size(); ++k) triangles.push_back({items[0], items[k], items[k + 1]});
         }
       }
       if (is_vertex) coordinates.insert(coordinates.end(), xyz, xyz + 3);
     }
   }
-  if (!vertices_seen || !faces_seen) refuse(source, "no vertex or no face element");
+  if (!vertices_seen || !faces_seen) refuse_ply(source, "no vertex or no face element");
   TriangleMesh mesh;
   const auto vertex_count = Eigen::Index(coordinates.size() / 3);
   mesh.vertices = Eigen::Map<const VertexMatrix>(coordinates.data(), vertex_count, 3);
@@ -269,7 +269,7 @@ TriangleMesh parse_ply(std::span<const std::byte> bytes, const std::string& sour
     for (int c = 0; c < 3; ++c) {
       const int64_t index = triangles[f][size_t(c)];
       if (index < 0 || index >= vertex_count)
-        refuse(source, "a face names vertex " + std::to_string(index) + " of " + std::to_string(vertex_count));
+        refuse_ply(source, "a face names vertex " + std::to_string(index) + " of " + std::to_string(vertex_count));
       mesh.faces(Eigen::Index(f), c) = int(index);
     }
   return mesh;

@@ -46,7 +46,7 @@ class CornerMerger {
   std::vector<std::array<int, 3>> faces_;
 };
 
-[[noreturn]] void refuse(const std::string& source, const std::string& reason) {
+[[noreturn]] void refuse_stl(const std::string& source, const std::string& reason) {
   throw Error(ErrorCode::kBadValue, source, "not an STL file: " + reason);
 }
 
@@ -66,13 +66,13 @@ bool is_text(std::span<const std::byte> bytes) {
 }
 
 TriangleMesh parse_binary(std::span<const std::byte> bytes, const std::string& source) {
-  if (bytes.size() < 84) refuse(source, "shorter than the 84-byte header of a binary STL");
+  if (bytes.size() < 84) refuse_stl(source, "shorter than the 84-byte header of a binary STL");
   uint32_t count = 0;
   std::memcpy(&count, bytes.data() + 80, 4);  // little endian, as the format and x86 are
   const uint64_t expected = 84 + 50 * uint64_t(count);
   if (expected != bytes.size())
-    refuse(source, "a binary STL of " + std::to_string(count) + " triangles is " + std::to_string(expected) +
-                       " bytes, this file " + std::to_string(bytes.size()));
+    refuse_stl(source, "a binary STL of " + std::to_string(count) + " triangles is " + std::to_string(expected) +
+                           " bytes, this file " + std::to_string(bytes.size()));
   CornerMerger merger;
   for (uint32_t t = 0; t < count; ++t) {
     std::array<Corner, 3> corners{};
@@ -112,14 +112,14 @@ TriangleMesh parse_ascii(std::string_view text, const std::string& source) {
   auto expect = [&](std::string_view word) {
     const auto got = words.next();
     if (got != word)
-      refuse(source, "expected \"" + std::string(word) + "\", found \"" + std::string(got.substr(0, 40)) + "\"");
+      refuse_stl(source, "expected \"" + std::string(word) + "\", found \"" + std::string(got.substr(0, 40)) + "\"");
   };
   auto number = [&] {
     const auto word = words.next();
     float value = 0;
     auto [end, status] = std::from_chars(word.data(), word.data() + word.size(), value);
     if (status != std::errc() || end != word.data() + word.size())
-      refuse(source, "\"" + std::string(word.substr(0, 40)) + "\" is not a number");
+      refuse_stl(source, "\"" + std::string(word.substr(0, 40)) + "\" is not a number");
     return value;
   };
   CornerMerger merger;
@@ -127,8 +127,8 @@ TriangleMesh parse_ascii(std::string_view text, const std::string& source) {
     const auto word = words.next();
     if (word == "endsolid") break;
     if (word != "facet")
-      refuse(source,
-             word.empty() ? "no endsolid" : "expected \"facet\", found \"" + std::string(word.substr(0, 40)) + "\"");
+      refuse_stl(source, word.empty() ? "no endsolid"
+                                      : "expected \"facet\", found \"" + std::string(word.substr(0, 40)) + "\"");
     expect("normal");
     for (int a = 0; a < 3; ++a) number();
     expect("outer");

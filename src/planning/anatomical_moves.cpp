@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/angles.h"
 #include "ceph/cephalometric_measures.h"
 #include "ceph/landmark_frame.h"
 
@@ -12,9 +13,6 @@ namespace {
 
 using Eigen::Matrix3d;
 using Eigen::Vector3d;
-
-double radians(double degrees) { return degrees * std::numbers::pi / 180; }
-double degrees(double radians) { return radians * 180 / std::numbers::pi; }
 
 // Rotation in frame coordinates (x = anterior, y = left, z = superior), see the header.
 Matrix3d frame_rotation(const FrameMove& move) {

@@ -4,18 +4,13 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/angles.h"
 #include "core/error.h"
 
 namespace maxillo::planning {
 namespace {
 
 using Eigen::Vector3d;
-
-double degrees(double radians) { return radians * 180 / std::numbers::pi; }
-double radians(double degrees) { return degrees * std::numbers::pi / 180; }
-
-// +1 for the patient's left half, -1 for the right (the frame's transverse axis points left).
-double outward_sign(Side side) { return side == Side::Left ? 1.0 : -1.0; }
 
 DistractionVector vector_of(const PlanningFrame& frame, const MaxillaryTarget& target, const MaxillaryReference& ref,
                             Side side, const Vector3d& entry) {

@@ -56,6 +56,8 @@ struct MaxillaryTarget {
 
 enum class Side { Right, Left };
 std::string_view side_name(Side side);  // "right", "left"
+// +1 for the patient's left half, -1 for the right (the frame's transverse axis points left).
+inline double outward_sign(Side side) { return side == Side::Left ? 1.0 : -1.0; }
 
 // Where the maxilla is: the pivot of the move and the incisor point that the midline shift is
 // measured at (U1), both LPS mm.

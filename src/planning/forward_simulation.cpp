@@ -32,8 +32,6 @@ Pose pose_of(const Vector6d& q, double pitch_deg) {
   return pose;
 }
 
-double outward_sign(Side side) { return side == Side::Left ? 1.0 : -1.0; }
-
 Vector3d moved(const PlanningFrame& frame, const Pose& pose, const Vector3d& pivot, const Vector3d& p,
                std::optional<Side> half) {
   Vector3d q = to_transform(frame, pose.move, pivot) * p;

@@ -169,8 +169,6 @@ OcclusionReference read_occlusion(const Json& json, const std::string& source) {
   return o;
 }
 
-Json point_json(const Vector3d& p) { return Json::array({p.x(), p.y(), p.z()}); }
-
 Json cut_json(const CutSpec& cut, bool le_fort) {
   if (cut.kind == CutSpec::Kind::Points)
     return Json{

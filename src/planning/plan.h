@@ -105,6 +105,8 @@ Plan plan_from_json(const Json& json, const std::string& source);
 // Error(kBadValue, source, "<field>: <reason>") for a plan that is well-formed but inconsistent.
 void validate_plan(const Plan& plan, const std::string& source);
 Json plan_to_json(const Plan& plan);
+// A point as plans and their results write it: [x, y, z].
+inline Json point_json(const Eigen::Vector3d& p) { return Json::array({p.x(), p.y(), p.z()}); }
 std::string serialise_plan(const Plan& plan);  // indented JSON text, newline-terminated
 
 // The plan `maxillo plan create` makes for a distraction: default high Le Fort I and

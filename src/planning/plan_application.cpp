@@ -35,8 +35,6 @@ DistractionResult plan_distraction(const DistractionSpec& spec, const PlanningFr
   return result;
 }
 
-Json point_json(const Vector3d& p) { return Json::array({p.x(), p.y(), p.z()}); }
-
 Json move_json(const FrameMove& m) {
   return {{"advancement_mm", m.advancement_mm}, {"vertical_mm", m.vertical_mm}, {"lateral_mm", m.lateral_mm},
           {"pitch_deg", m.pitch_deg},           {"roll_deg", m.roll_deg},       {"yaw_deg", m.yaw_deg}};

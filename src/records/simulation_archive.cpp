@@ -6,7 +6,7 @@
 namespace maxillo::records {
 namespace {
 
-const std::string kSummaryKind = kind_name(ArtefactKind::kSimulation);
+const std::string kSimulationKind = kind_name(ArtefactKind::kSimulation);
 const std::string kImageKind = kind_name(ArtefactKind::kSimulationImage);
 
 }  // namespace
@@ -16,12 +16,12 @@ void store_simulation(Archive& archive, const SimulationToStore& s) {
     store_picture(archive, s.case_id, ArtefactKind::kSimulationImage, s.inputs_hash, png);
   const std::string summary = to_json(s.summary).dump(2) + "\n";
   archive.add_artefact(
-      NewArtefact{s.case_id, kSummaryKind, archive.store_object(summary), "application/json", s.inputs_hash});
+      NewArtefact{s.case_id, kSimulationKind, archive.store_object(summary), "application/json", s.inputs_hash});
 }
 
 std::optional<StoredSimulation> latest_simulation(const Archive& archive, int64_t case_id) {
   const auto artefacts = archive.artefacts(case_id);  // by id: later entries are newer
-  const ArtefactRecord* found = newest_artefact(artefacts, kSummaryKind);
+  const ArtefactRecord* found = newest_artefact(artefacts, kSimulationKind);
   if (!found) return std::nullopt;
   StoredSimulation stored;
   stored.case_id = case_id;

@@ -8,7 +8,7 @@
 namespace maxillo::records {
 namespace {
 
-const std::string kSummaryKind = kind_name(ArtefactKind::kValidation);
+const std::string kValidationKind = kind_name(ArtefactKind::kValidation);
 const std::string kDistancesKind = kind_name(ArtefactKind::kValidationDistances);
 
 Json face_distances_json(const ValidationToStore& v) {
@@ -51,8 +51,8 @@ void store_validation(Archive& archive, const ValidationToStore& v) {
     store_picture(archive, v.case_id, ArtefactKind::kValidationImage, v.inputs_hash, png);
   archive.add_artefact(NewArtefact{v.case_id, kDistancesKind, archive.store_object(face_distances_json(v).dump()),
                                    "application/json", v.inputs_hash});
-  archive.add_artefact(
-      NewArtefact{v.case_id, kSummaryKind, archive.store_object(v.summary.dump()), "application/json", v.inputs_hash});
+  archive.add_artefact(NewArtefact{v.case_id, kValidationKind, archive.store_object(v.summary.dump()),
+                                   "application/json", v.inputs_hash});
 }
 
 std::optional<StoredValidation> find_validation(const Archive& archive, int64_t case_id,
@@ -70,7 +70,7 @@ std::optional<StoredValidation> find_validation(const Archive& archive,
 
 std::optional<StoredValidation> latest_validation(const Archive& archive, int64_t case_id) {
   const auto artefacts = archive.artefacts(case_id);
-  const ArtefactRecord* found = newest_artefact(artefacts, kSummaryKind);
+  const ArtefactRecord* found = newest_artefact(artefacts, kValidationKind);
   if (!found) return std::nullopt;
   return load(archive, artefacts, *found);
 }

@@ -19,10 +19,7 @@ namespace {
 
 constexpr double kBoxHalfWidth = 0.3;  // in x units: groups stand 1 apart
 constexpr double kWhiskerCapHalfWidth = 0.15;
-constexpr float kLineWidthPx = 2.5f;
 constexpr float kMedianWidthPx = 4.5f;
-constexpr ColourRGB kReferenceGrey{0.55, 0.55, 0.55};
-constexpr double kAxisMargin = 0.06;
 
 void check(const BoxPlot& plot) {
   if (plot.groups.empty()) throw Error(ErrorCode::kBadValue, "box plot", "no groups to draw");

@@ -8,6 +8,12 @@
 
 namespace maxillo::render {
 
+// The style every chart kind shares: line width, the grey of reference lines and bands, and the
+// margin around the data (a fraction of its span on each side, so no line runs on the frame).
+inline constexpr float kLineWidthPx = 2.5f;
+inline constexpr ColourRGB kReferenceGrey{0.55, 0.55, 0.55};
+inline constexpr double kAxisMargin = 0.06;
+
 // Renders `chart` (already filled with plots and axes) at settings.size on settings.background.
 // Throws Error(RenderFailed) when the image read back has the wrong size.
 RgbImage render_chart_item(vtkChart& chart, const ChartSettings& settings);

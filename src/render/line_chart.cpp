@@ -22,9 +22,7 @@
 namespace maxillo::render {
 namespace {
 
-constexpr float kLineWidthPx = 2.5f;
 constexpr float kMarkerSizePx = 7.0f;
-constexpr ColourRGB kReferenceGrey{0.55, 0.55, 0.55};
 
 void check(const LineChart& chart) { check_series(chart.series, "line chart"); }
 
@@ -54,7 +52,6 @@ std::pair<double, double> range_of(const LineChart& chart, bool along_x) {
 
 // The data range widened by kAxisMargin of its span on each side (1 unit for a single value), so
 // no line runs on an axis or the frame.
-constexpr double kAxisMargin = 0.06;
 void set_padded_range(vtkChartXY& chart, int axis_id, std::pair<double, double> range) {
   auto [low, high] = range;
   const double pad = high > low ? kAxisMargin * (high - low) : 1.0;

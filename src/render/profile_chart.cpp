@@ -18,9 +18,6 @@
 namespace maxillo::render {
 namespace {
 
-constexpr float kLineWidthPx = 2.5f;
-constexpr double kAxisMargin = 0.06;
-
 void check(const ProfileChart& chart) { check_series(chart.curves, "profile chart"); }
 
 struct Range {

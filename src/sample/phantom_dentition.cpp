@@ -6,12 +6,11 @@
 #include <memory>
 #include <numbers>
 
+#include "core/angles.h"
 #include "sample/phantom_parts.h"
 
 namespace maxillo::sample {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180;
 
 struct ToothDims {
   double width, crown_height, thickness, root_length;

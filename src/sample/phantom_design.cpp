@@ -2,10 +2,10 @@
 
 #include <numbers>
 
+#include "core/angles.h"
+
 namespace maxillo::sample {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180;
 
 // Palate and nasal spine (mm).
 constexpr double kAnsAnterior = 72.5, kAnsHeight = -24;  // anterior nasal spine tip

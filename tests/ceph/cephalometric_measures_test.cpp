@@ -1,6 +1,7 @@
 // Analytic answers of the cephalometric measurements: constructed configurations with known
 // angles and distances, invariance under rigid motions, image pixel orientation, and the
 // mid-sagittal projection of 3D landmarks.
+#include "core/angles.h"
 #include "ceph/cephalometric_measures.h"
 
 #include <gtest/gtest.h>
@@ -15,8 +16,6 @@
 
 namespace maxillo::ceph {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180;
 
 Eigen::Vector2d polar(double length, double degrees) {
   return length * Eigen::Vector2d(std::cos(degrees * kDeg), std::sin(degrees * kDeg));

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/angles.h"
 #include "ceph/cephalometric_analysis.h"
 #include "ceph/cephalometric_measures.h"
 #include "sample/phantom.h"
@@ -14,8 +15,6 @@
 
 namespace maxillo::ceph {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180;
 
 PhantomSpec coarse(SkeletalClass c) {
   PhantomSpec spec = phantom_spec_for_class(c);

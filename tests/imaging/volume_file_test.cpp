@@ -56,7 +56,7 @@ TEST(VolumeFile, ReadsNrrd) {
   expect_known_volume(read_volume_file(folder / "v.nhdr", {.hu_offset = -1024}), Eigen::Matrix3d::Identity());
 }
 
-ErrorCode code_of_reading(const std::filesystem::path& path, const VolumeFileOptions& options = {}) {
+ErrorCode code_of_reading_volume(const std::filesystem::path& path, const VolumeFileOptions& options = {}) {
   try {
     read_volume_file(path, options);
   } catch (const Error& e) {
@@ -72,16 +72,16 @@ TEST(VolumeFile, RefusesWhatIsNotAScalarVolumeInHuRange) {
   write_raw_big_endian(folder / "data.raw");
   std::ofstream(folder / "flat.mhd") << "ObjectType = Image\nNDims = 2\nDimSize = 4 6\nElementType = MET_USHORT\n"
                                         "ElementByteOrderMSB = True\nElementDataFile = data.raw\n";
-  EXPECT_EQ(code_of_reading(folder / "flat.mhd"), ErrorCode::kUnsupportedSyntax);
+  EXPECT_EQ(code_of_reading_volume(folder / "flat.mhd"), ErrorCode::kUnsupportedSyntax);
   std::ofstream(folder / "v.mhd") << "ObjectType = Image\nNDims = 3\nDimSize = 4 3 2\nElementType = MET_USHORT\n"
                                      "ElementByteOrderMSB = True\nElementDataFile = data.raw\n";
-  EXPECT_EQ(code_of_reading(folder / "v.mhd", {.hu_offset = 32000}), ErrorCode::kBadValue);
+  EXPECT_EQ(code_of_reading_volume(folder / "v.mhd", {.hu_offset = 32000}), ErrorCode::kBadValue);
   std::ofstream(folder / "short.mhd") << "ObjectType = Image\nNDims = 3\nDimSize = 40 30 20\nElementType = MET_USHORT\n"
                                          "ElementDataFile = data.raw\n";
-  EXPECT_EQ(code_of_reading(folder / "short.mhd"), ErrorCode::kBadValue);
+  EXPECT_EQ(code_of_reading_volume(folder / "short.mhd"), ErrorCode::kBadValue);
   std::ofstream(folder / "v.png") << "x";
-  EXPECT_EQ(code_of_reading(folder / "v.png"), ErrorCode::kUnsupportedSyntax);
-  EXPECT_EQ(code_of_reading(folder / "absent.mhd"), ErrorCode::kFileNotFound);
+  EXPECT_EQ(code_of_reading_volume(folder / "v.png"), ErrorCode::kUnsupportedSyntax);
+  EXPECT_EQ(code_of_reading_volume(folder / "absent.mhd"), ErrorCode::kFileNotFound);
 }
 
 }  // namespace

@@ -8,6 +8,8 @@
 #include <iostream>
 #include <numbers>
 
+#include "core/angles.h"
+#include "support/posed_volume.h"
 #include "imaging/volume_file.h"
 #include "landmarking/landmark_detection.h"
 #include "support/cthead_metaimage.h"
@@ -15,8 +17,6 @@
 
 namespace maxillo::landmarking {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180;
 
 // The cadaver head placed as scripts/cthead-to-dicom places it (LPS, vertex at z = 224).
 const Volume& cadaver() {
@@ -32,12 +32,6 @@ const Volume& cadaver() {
 }
 
 bool cadaver_present() { return std::filesystem::exists(testing::cthead_slices() / "CThead.113"); }
-
-Volume posed(Volume ct, const Eigen::Isometry3d& pose) {
-  ct.geometry.direction = pose.linear() * ct.geometry.direction;
-  ct.geometry.origin = pose * ct.geometry.origin;
-  return ct;
-}
 
 TEST(CadaverLandmarks, TheMidlineLandmarksLieWhereAPersonReadsThem) {
   if (!cadaver_present()) GTEST_SKIP() << "real data absent: " << testing::cthead_slices();
@@ -63,7 +57,7 @@ TEST(CadaverLandmarks, TheLandmarksMoveWithTheVolumeInThreePoses) {
       Eigen::Translation3d(3, 3, 3) * Eigen::AngleAxisd(8 * kDeg, Eigen::Vector3d(1, -1, 1).normalized()),
   };
   for (const auto& pose : poses) {
-    const LandmarkDetection found = detect_landmarks(posed(cadaver(), pose), "posed cadaver");
+    const LandmarkDetection found = detect_landmarks(testing::posed(cadaver(), pose), "posed cadaver");
     std::vector<double> moved;
     for (const auto& l : found.landmarks) {
       const DetectedLandmark* before = reference.find(l.label);
@@ -86,7 +80,7 @@ TEST(CadaverLandmarks, AMirroredHeadSwapsItsSides) {
   const LandmarkDetection reference = detect_landmarks(cadaver(), "cadaver");
   Eigen::Isometry3d mirror = Eigen::Isometry3d::Identity();
   mirror.linear() = Eigen::Vector3d(-1, 1, 1).asDiagonal();
-  const LandmarkDetection found = detect_landmarks(posed(cadaver(), mirror), "mirrored cadaver");
+  const LandmarkDetection found = detect_landmarks(testing::posed(cadaver(), mirror), "mirrored cadaver");
   int compared = 0;
   for (const char* pair : {"Po", "Or", "Go", "Ar"}) {
     const DetectedLandmark* left_after = found.find(std::string(pair) + "L");

@@ -12,14 +12,14 @@
 #include <numbers>
 #include <thread>
 
+#include "core/angles.h"
+#include "support/posed_volume.h"
 #include "core/error.h"
 #include "landmarking/landmark_detection.h"
 #include "sample/phantom.h"
 
 namespace maxillo::landmarking {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180;
 
 // The labels this version does not detect yet (reported absent, with the reason).
 const std::set<std::string> kNotYetDetected = {"U6R", "U6L", "L6R", "L6L"};
@@ -41,12 +41,6 @@ double mean_of(const std::map<std::string, double>& errors) {
 }
 
 // The same voxels with a header that places them turned and shifted: the head in another pose.
-Volume posed(Volume ct, const Eigen::Isometry3d& pose) {
-  ct.geometry.direction = pose.linear() * ct.geometry.direction;
-  ct.geometry.origin = pose * ct.geometry.origin;
-  return ct;
-}
-
 const Phantom& default_phantom() {
   static const Phantom phantom = make_phantom({});
   return phantom;
@@ -82,7 +76,7 @@ TEST(PhantomLandmarks, TheLandmarksMoveWithTheHeadInEveryPose) {
       Eigen::Translation3d(0, 0, 7) * Eigen::AngleAxisd(10 * kDeg, Eigen::Vector3d(1, 1, 1).normalized()),
   };
   for (const auto& pose : poses) {
-    const LandmarkDetection found = detect_landmarks(posed(default_phantom().ct, pose), "posed phantom");
+    const LandmarkDetection found = detect_landmarks(testing::posed(default_phantom().ct, pose), "posed phantom");
     double sum = 0, worst = 0;
     int count = 0;
     for (const auto& l : found.landmarks) {

@@ -7,14 +7,13 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/angles.h"
 #include "imaging/grey_calibration.h"
 #include "landmarking/bone_surface.h"
 #include "landmarking/symmetry_plane.h"
 
 namespace maxillo::landmarking {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180;
 
 // A skull-like object in its own frame, symmetric in x: an ellipsoidal shell (the vault), a
 // "face" block in front, a "jaw" bar below and two lateral bumps; asymmetric front to back and

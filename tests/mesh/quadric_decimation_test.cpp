@@ -15,8 +15,6 @@
 namespace maxillo {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 // Vertices on a (rows + 1) x (cols + 1) grid of (u, v) in [0, 1]^2, two triangles per cell;
 // `wrap_u` / `wrap_v` join the last column / row to the first (a closed tube or torus).
 template <typename Surface>
@@ -40,7 +38,7 @@ TriangleMesh parametric_mesh(int rows, int cols, bool wrap_u, bool wrap_v, Surfa
 
 TriangleMesh torus(double major, double minor, int rows, int cols) {
   return parametric_mesh(rows, cols, true, true, [&](double u, double v) {
-    const double a = 2 * kPi * u, b = 2 * kPi * v;
+    const double a = 2 * std::numbers::pi * u, b = 2 * std::numbers::pi * v;
     return Eigen::Vector3d((major + minor * std::cos(b)) * std::cos(a), (major + minor * std::cos(b)) * std::sin(a),
                            minor * std::sin(b));
   });
@@ -101,7 +99,8 @@ TEST(QuadricDecimation, AFinelyCutBoxKeepsItsPlanesItsVolumeAndItsCorners) {
 TEST(QuadricDecimation, ASphereStaysOnItsRadius) {
   const double radius = 10;
   const TriangleMesh sphere = parametric_mesh(120, 240, true, false, [&](double u, double v) {
-    const double theta = kPi * (0.02 + 0.96 * v), phi = 2 * kPi * u;  // poles left open: a tube
+    const double theta = std::numbers::pi * (0.02 + 0.96 * v),
+                 phi = 2 * std::numbers::pi * u;  // poles left open: a tube
     return Eigen::Vector3d(radius * std::sin(theta) * std::cos(phi), radius * std::sin(theta) * std::sin(phi),
                            radius * std::cos(theta));
   });

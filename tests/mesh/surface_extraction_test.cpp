@@ -13,14 +13,13 @@
 namespace maxillo {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kRadius = 15;
 
 void expect_sphere(const TriangleMesh& mesh, double radius, double tolerance) {
   EXPECT_TRUE(is_watertight(mesh));
   EXPECT_EQ(connected_components(mesh).face_counts.size(), 1u);
-  EXPECT_NEAR(signed_volume(mesh) / (4.0 / 3.0 * kPi * std::pow(radius, 3)), 1.0, tolerance);
-  EXPECT_NEAR(surface_area(mesh) / (4 * kPi * radius * radius), 1.0, tolerance);
+  EXPECT_NEAR(signed_volume(mesh) / (4.0 / 3.0 * std::numbers::pi * std::pow(radius, 3)), 1.0, tolerance);
+  EXPECT_NEAR(surface_area(mesh) / (4 * std::numbers::pi * radius * radius), 1.0, tolerance);
 }
 
 TEST(SurfaceExtraction, RawFlyingEdgesSphereMatchesTheAnalyticSizes) {
@@ -51,7 +50,8 @@ TEST(SurfaceExtraction, PlacesTheSurfaceInLpsForObliqueAndMirroredGrids) {
     const Eigen::Vector3d expected_centre = v.geometry.world(centre_ijk);
     const Eigen::Vector3d centroid = mesh.vertices.colwise().mean().transpose();
     EXPECT_LT((centroid - expected_centre).norm(), 0.1) << "handedness " << handedness;
-    EXPECT_NEAR(signed_volume(mesh) / (4.0 / 3.0 * kPi * std::pow(kRadius, 3) * 0.8 * 0.8 * 1.2), 1.0, 0.01);
+    EXPECT_NEAR(signed_volume(mesh) / (4.0 / 3.0 * std::numbers::pi * std::pow(kRadius, 3) * 0.8 * 0.8 * 1.2), 1.0,
+                0.01);
     EXPECT_TRUE(is_watertight(mesh));
   }
 }
@@ -87,7 +87,7 @@ TEST(SurfaceExtraction, MaskSurfaceEnclosesTheMaskVoxels) {
   for (size_t n = 0; n < v.hu.size(); ++n) mask.labels[n] = v.hu[n] > 0 ? 7 : 0;
   TriangleMesh mesh = extract_surface(mask, 7, {.smoothing_iterations = 20});
   EXPECT_TRUE(is_watertight(mesh));
-  EXPECT_NEAR(signed_volume(mesh) / (4.0 / 3.0 * kPi * std::pow(kRadius, 3)), 1.0, 0.03);
+  EXPECT_NEAR(signed_volume(mesh) / (4.0 / 3.0 * std::numbers::pi * std::pow(kRadius, 3)), 1.0, 0.03);
   EXPECT_EQ(extract_surface(mask, 3).face_count(), 0) << "no voxel has label 3";
 }
 

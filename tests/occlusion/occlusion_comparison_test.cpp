@@ -11,14 +11,14 @@ namespace {
 
 using testing::make_box;
 
-struct SlabAndBlock {
+struct SlabAndRaisedBlock {
   TriangleMesh lower = make_box({-5, -5, -2}, {5, 5, 0});
   TriangleMesh upper = make_box({-2, -2, 0.5}, {2, 2, 2.5});  // 0.5 mm above the slab
   DistanceField lower_field{lower}, upper_field{upper};
 };
 
 TEST(CompareOcclusions, APureTranslationMovesEveryRegionVertexByItsLength) {
-  SlabAndBlock s;
+  SlabAndRaisedBlock s;
   const Eigen::Isometry3d a = Eigen::Isometry3d::Identity();
   Eigen::Isometry3d b = a;
   b.pretranslate(Eigen::Vector3d(0.3, -0.4, 1.2));  // |d| = 1.3 mm
@@ -34,7 +34,7 @@ TEST(CompareOcclusions, APureTranslationMovesEveryRegionVertexByItsLength) {
 }
 
 TEST(CompareOcclusions, ARotationMovesEachVertexByTheChordOfItsRadius) {
-  SlabAndBlock s;
+  SlabAndRaisedBlock s;
   const Eigen::Isometry3d a = Eigen::Isometry3d::Identity();
   const double angle = 3.0 * M_PI / 180;
   const Eigen::Isometry3d b(Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitZ()));  // about the z axis through 0
@@ -45,7 +45,7 @@ TEST(CompareOcclusions, ARotationMovesEachVertexByTheChordOfItsRadius) {
 }
 
 TEST(CompareOcclusions, TheRegionIsChosenAtTheReferencePose) {
-  SlabAndBlock s;
+  SlabAndRaisedBlock s;
   Eigen::Isometry3d far = Eigen::Isometry3d::Identity();
   far.pretranslate(Eigen::Vector3d(0, 0, 10));
   EXPECT_EQ(compare_occlusions(s.upper_field, s.lower_field, far, Eigen::Isometry3d::Identity(), 1.0).region.size(),

@@ -13,7 +13,7 @@
 namespace maxillo::records {
 namespace {
 
-OcclusionRecord example() {
+OcclusionRecord example_occlusion() {
   OcclusionRecord r;
   r.upper_file = "upper.stl";
   r.lower_file = "lower.stl";
@@ -39,7 +39,7 @@ OcclusionRecord example() {
 }
 
 TEST(OcclusionRecord, RoundTripsThroughItsText) {
-  const OcclusionRecord written = example();
+  const OcclusionRecord written = example_occlusion();
   const OcclusionRecord read = read_occlusion_record(Json::parse(to_json(written).dump(2)), "test");
   EXPECT_EQ(to_json(read), to_json(written));  // every field, compared through the one writer
   EXPECT_TRUE(read.upper_transform.isApprox(written.upper_transform, 1e-15));
@@ -66,7 +66,7 @@ TEST(OcclusionRecord, RoundTripsThroughItsText) {
 // Results written before "format_version" existed, and version 1 ones, read without the
 // arch's centroid (version 2 added it).
 TEST(OcclusionRecord, OlderResultsReadAsVersion1WithoutTheCentroid) {
-  Json old = to_json(example());
+  Json old = to_json(example_occlusion());
   old.erase("format_version");
   old.erase("upper_centroid");
   const OcclusionRecord read = read_occlusion_record(old, "test");
@@ -75,7 +75,7 @@ TEST(OcclusionRecord, OlderResultsReadAsVersion1WithoutTheCentroid) {
 }
 
 TEST(OcclusionRecord, DamageIsAnErrorNamingTheKey) {
-  const Json good = to_json(example());
+  const Json good = to_json(example_occlusion());
   auto failure = [&](const std::function<void(Json&)>& damage) {
     return testing::error_after_damage(good, damage,
                                        [](const Json& j) { read_occlusion_record(j, "artefact 7 (occlusion)"); });

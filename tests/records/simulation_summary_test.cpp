@@ -12,7 +12,7 @@
 namespace maxillo::records {
 namespace {
 
-SimulationSummary example() {
+SimulationSummary example_summary() {
   SimulationSummary s;
   s.plan_text = "Le Fort I, maxilla 6.0 mm advancement";
   s.model = "mtm";
@@ -39,7 +39,7 @@ SimulationSummary example() {
 }
 
 TEST(SimulationSummary, RoundTripsThroughItsText) {
-  const SimulationSummary written = example();
+  const SimulationSummary written = example_summary();
   const SimulationSummary read = read_simulation_summary(Json::parse(to_json(written).dump(2)), "test");
   EXPECT_EQ(to_json(read), to_json(written));  // every field, compared through the one writer
   EXPECT_EQ(read.tetrahedra, 41234);
@@ -57,7 +57,7 @@ TEST(SimulationSummary, RoundTripsThroughItsText) {
 
 // Version 1 summaries (before the report's facts were added) still read, without those facts.
 TEST(SimulationSummary, AVersion1SummaryReadsWithoutTheReportFacts) {
-  Json v1 = to_json(example());
+  Json v1 = to_json(example_summary());
   for (const char* key : {"plan_text", "meshing_attempts", "mean_aspect_ratio", "soft_landmarks"}) v1.erase(key);
   v1["format_version"] = 1;
   const SimulationSummary read = read_simulation_summary(v1, "test");
@@ -67,7 +67,7 @@ TEST(SimulationSummary, AVersion1SummaryReadsWithoutTheReportFacts) {
 }
 
 TEST(SimulationSummary, DamageIsAnErrorNamingTheKey) {
-  const Json good = to_json(example());
+  const Json good = to_json(example_summary());
   auto failure = [&](const std::function<void(Json&)>& damage) {
     return testing::error_after_damage(good, damage,
                                        [](const Json& j) { read_simulation_summary(j, "sim/simulation.json"); });
