@@ -6,6 +6,7 @@
 #include "core/angles.h"
 #include "core/error.h"
 #include "landmarking/bone_surface.h"
+#include "landmarking/dental_landmarks.h"
 #include "landmarking/head_volume.h"
 #include "landmarking/landmark_template.h"
 #include "landmarking/lateral_landmarks.h"
@@ -197,6 +198,7 @@ LandmarkDetection detect_landmarks(const Volume& ct, const std::string& subject,
   find_symphysis(head, result.scale, found);
   for (int side : {-1, 1}) find_ramus_landmarks(head, result.scale, side, found);
   find_incisors(head, result.scale, found);
+  for (int side : {-1, 1}) find_first_molars(head, result.scale, side, found);
   find_soft_tissue_profile(head, result.scale, found);
 
   FramePoints points;
