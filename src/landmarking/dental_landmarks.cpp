@@ -138,7 +138,8 @@ std::vector<ToothSpan> teeth_along_y(const DentalBox& box, const OcclusalLine& l
       for (int i = 0; i < box.size(0); ++i) mass[size_t(j)] += box.crown(i, j, k);
     }
   std::vector<double> smooth = mass;
-  for (int j = 1; j + 1 < rows; ++j) smooth[size_t(j)] = (mass[size_t(j - 1)] + mass[size_t(j)] + mass[size_t(j + 1)]) / 3;
+  for (int j = 1; j + 1 < rows; ++j)
+    smooth[size_t(j)] = (mass[size_t(j - 1)] + mass[size_t(j)] + mass[size_t(j + 1)]) / 3;
   const double peak = *std::max_element(smooth.begin(), smooth.end());
   std::vector<ToothSpan> teeth;
   for (int j = 0; j < rows;) {
@@ -221,7 +222,8 @@ const ToothSpan* first_molar(const DentalBox& box, const std::vector<ToothSpan>&
 
 void find_first_molars(const HeadVolume& v, double scale, int side, Findings& found) {
   const std::string suffix = side > 0 ? "L" : "R";
-  const Eigen::Vector3d upper = expected_position("U6" + suffix, scale), lower = expected_position("L6" + suffix, scale);
+  const Eigen::Vector3d upper = expected_position("U6" + suffix, scale),
+                        lower = expected_position("L6" + suffix, scale);
   const Eigen::Vector3d centre = (upper + lower) / 2;
   const double x_mid = std::abs(centre.x());
   const Eigen::Vector3d lo(side > 0 ? x_mid - 14 : -x_mid - 12, centre.y() - 24, centre.z() - 14);

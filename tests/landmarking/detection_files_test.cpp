@@ -12,7 +12,8 @@ namespace {
 LandmarkDetection three_landmarks() {
   LandmarkDetection d;
   DetectedLandmark s{"S", Eigen::Vector3d(1.5, -20.25, 40), 0.9, {}, ""};
-  DetectedLandmark orbitale{"OrL", Eigen::Vector3d(33, -57, 0), 0.3, {{"mirror", false, "6.2 mm from the mirror image"}}, ""};
+  DetectedLandmark orbitale{
+      "OrL", Eigen::Vector3d(33, -57, 0), 0.3, {{"mirror", false, "6.2 mm from the mirror image"}}, ""};
   DetectedLandmark molar{"U6R", std::nullopt, 0, {}, "no first molar crown (8.5 to 12.5 mm long) behind the premolars"};
   d.landmarks = {s, orbitale, molar};
   return d;
