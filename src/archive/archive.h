@@ -61,14 +61,14 @@ struct ImportReport {
 struct ImportOptions {
   ProgressDisplay progress = ProgressDisplay::Auto;
   // Called for each problem as it is met (the CLI prints "path: reason" at once).
-  std::function<void(const ImportProblem&)> on_problem;
+  std::function<void(const ImportProblem&)> on_problem{};
   // Called for each file that ends in the archive, once durable: Imported, or AlreadyArchived
   // (the same bytes were archived before). The others go to on_problem.
-  std::function<void(const std::filesystem::path&, ImportOutcome)> on_archived;
+  std::function<void(const std::filesystem::path&, ImportOutcome)> on_archived{};
   size_t batch_files = 500;  // files per durable batch (one syncfs + one transaction)
   // Recorded as each new instance's source instead of its file's path, for files that are only
   // a spool: network_source(AE, ADDRESS) for what `maxillo serve` received (instance_source.h).
-  std::string source_label;
+  std::string source_label{};
 };
 
 enum class RepairMode { ReportOnly, Repair };

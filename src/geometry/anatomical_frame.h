@@ -33,8 +33,8 @@ struct AnatomicalFrame {
 
 // The porions and orbitales that define the Frankfort horizontal (LPS mm), each optional.
 struct FrankfortPoints {
-  std::optional<Eigen::Vector3d> porion_right, porion_left;
-  std::optional<Eigen::Vector3d> orbitale_right, orbitale_left;
+  std::optional<Eigen::Vector3d> porion_right{}, porion_left{};
+  std::optional<Eigen::Vector3d> orbitale_right{}, orbitale_left{};
 };
 
 // The Frankfort frame when the points allow it, else the patient-axes frame (see above).

@@ -15,10 +15,10 @@ namespace maxillo::net {
 
 struct TlsOptions {
   bool enabled = false;
-  std::filesystem::path certificate;  // ours, PEM
-  std::filesystem::path private_key;  // its key, PEM, not encrypted
+  std::filesystem::path certificate{};  // ours, PEM
+  std::filesystem::path private_key{};  // its key, PEM, not encrypted
   // PEM certificate files, or folders of certificates named by their subject hash (c_rehash)
-  std::vector<std::filesystem::path> trusted;
+  std::vector<std::filesystem::path> trusted{};
 };
 
 }  // namespace maxillo::net

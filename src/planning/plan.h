@@ -58,7 +58,8 @@ struct CutSpec {
   Kind kind = Kind::Default;
   LeFortVariant variant = LeFortVariant::High;  // for a default Le Fort I
   CutPlane plane;                               // for Kind::Plane (normal unit)
-  std::array<Eigen::Vector3d, 3> points{};      // for Kind::Points, not collinear
+  // For Kind::Points, not collinear (zero otherwise: Eigen leaves a vector uninitialised).
+  std::array<Eigen::Vector3d, 3> points{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
 };
 
 struct PlanOsteotomies {

@@ -194,7 +194,9 @@ TEST(ArchiveCli, KilledImportLeavesAConsistentArchiveAndReimportCompletesIt) {
       // A killed batch leaves up to 40 orphans of a few hundred objects: more than repair
       // quarantines unasked, so it explains that the import should be run again.
       auto repair = testing::run_maxillo({"--archive", archive, "verify", "--repair"}, folder.path());
-      if (repair.exit_code != 0) EXPECT_NE(repair.err.find("run it again"), std::string::npos) << repair.err;
+      if (repair.exit_code != 0) {
+        EXPECT_NE(repair.err.find("run it again"), std::string::npos) << repair.err;
+      }
     }
 
     auto again = testing::run_maxillo({"--archive", archive, "import", (folder / "in").string()}, folder.path());
@@ -285,13 +287,13 @@ TEST(ArchiveCli, JsonOutputSurvivesLatin1NamesAndFileNames) {
   for (const auto& command : {"patients", "studies", "series"}) {
     auto listed = testing::run_maxillo({"--archive", a, "--json", "list", command}, folder.path());
     EXPECT_EQ(listed.exit_code, 0) << listed.err;
-    EXPECT_NO_THROW((void)Json::parse(listed.out)) << listed.out;
+    EXPECT_TRUE(Json::accept(listed.out)) << listed.out;
   }
   auto patients = Json::parse(testing::run_maxillo({"--archive", a, "--json", "list", "patients"}, folder.path()).out);
   EXPECT_EQ(patients[0].at("name"), "Müller^Jörg");
   auto shown = testing::run_maxillo({"--archive", a, "--json", "show", "P-LATIN"}, folder.path());
   EXPECT_EQ(shown.exit_code, 0) << shown.err;
-  EXPECT_NO_THROW((void)Json::parse(shown.out));
+  EXPECT_TRUE(Json::accept(shown.out)) << shown.out;
   // The Latin-1 file name is kept as the bytes it is (on PostgreSQL too, whose text must be
   // UTF-8), and the index still matches its journal.
   auto verify = testing::run_maxillo({"--archive", a, "verify"}, folder.path());
@@ -316,7 +318,7 @@ TEST(ServerAddressCli, BadAddressesAreRefusedWithTheirExitCodeAndAReason) {
        ErrorCode::kBadArchiveAddress, "not-there"},
   };
   for (const auto& c : cases)
-    for (const std::vector<std::string> command :
+    for (const std::vector<std::string>& command :
          {std::vector<std::string>{"list", "patients"}, {"verify"}, {"import", folder.path().string()}}) {
       std::vector<std::string> args{"--archive", c.address};
       args.insert(args.end(), command.begin(), command.end());

@@ -125,8 +125,9 @@ TEST(PhantomLandmarks, TheSameBitsWhateverTheLoad) {
   ASSERT_EQ(loaded.landmarks.size(), reference.landmarks.size());
   for (size_t i = 0; i < loaded.landmarks.size(); ++i) {
     EXPECT_EQ(loaded.landmarks[i].position.has_value(), reference.landmarks[i].position.has_value());
-    if (loaded.landmarks[i].position)
+    if (loaded.landmarks[i].position) {
       EXPECT_EQ(*loaded.landmarks[i].position, *reference.landmarks[i].position) << loaded.landmarks[i].label;
+    }
   }
   EXPECT_EQ(loaded.midsagittal.normal, reference.midsagittal.normal);
 }
