@@ -50,6 +50,14 @@ class DentalBox {
   std::vector<uint8_t> crown_;
 };
 
+// Each value the mean of itself and its two neighbours (the ends kept): one voxel's noise does
+// not make a narrowing.
+std::vector<double> three_sample_mean(const std::vector<double>& values) {
+  std::vector<double> smooth = values;
+  for (size_t i = 1; i + 1 < values.size(); ++i) smooth[i] = (values[i - 1] + values[i] + values[i + 1]) / 3;
+  return smooth;
+}
+
 // The occlusal level in each band of 4 mm along y, from the crowns' cross-section per height.
 // The upper crowns stand on the lower ones: counted per height, the enamel shows two plateaus
 // (one per arch) and, where the cusp tips meet, a narrowing (the cusps taper to their tips and
@@ -59,9 +67,7 @@ std::optional<double> occlusal_level(const DentalBox& box, int j0, int j1) {
   const int heights = box.size(2);
   std::vector<double> count(size_t(heights), 0);
   for (int k = 0; k < heights; ++k) count[size_t(k)] = box.count_at(k, j0, j1);
-  std::vector<double> smooth = count;
-  for (int k = 1; k + 1 < heights; ++k)
-    smooth[size_t(k)] = (count[size_t(k - 1)] + count[size_t(k)] + count[size_t(k + 1)]) / 3;
+  const std::vector<double> smooth = three_sample_mean(count);
   const auto highest = std::max_element(smooth.begin(), smooth.end());
   if (*highest <= 0) return std::nullopt;
   const int first = int(highest - smooth.begin());
@@ -96,9 +102,9 @@ std::vector<std::optional<double>> occlusal_levels(const DentalBox& box) {
   return level;
 }
 
-// The occlusal line along y: a least-squares line through the bands' levels, so "nearest the
-// other arch" is read across the occlusal plane, which slopes about 10 degrees from the
-// Frankfort horizontal (down towards the front).
+// The occlusal line along y: a least-squares line through the bands' levels (the occlusal plane
+// slopes about 10 degrees from the Frankfort horizontal, down towards the front), so the crowns'
+// heights are read from the plane they meet on, not from a single band's level.
 struct OcclusalLine {
   double level_at_zero = 0, slope = 0;  // z = level_at_zero + slope * y
   double at(double y) const { return level_at_zero + slope * y; }
@@ -137,9 +143,7 @@ std::vector<ToothSpan> teeth_along_y(const DentalBox& box, const OcclusalLine& l
       if (h < 0.5 || h > 6) continue;
       for (int i = 0; i < box.size(0); ++i) mass[size_t(j)] += box.crown(i, j, k);
     }
-  std::vector<double> smooth = mass;
-  for (int j = 1; j + 1 < rows; ++j)
-    smooth[size_t(j)] = (mass[size_t(j - 1)] + mass[size_t(j)] + mass[size_t(j + 1)]) / 3;
+  const std::vector<double> smooth = three_sample_mean(mass);
   const double peak = *std::max_element(smooth.begin(), smooth.end());
   std::vector<ToothSpan> teeth;
   for (int j = 0; j < rows;) {
