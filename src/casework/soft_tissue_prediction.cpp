@@ -51,7 +51,10 @@ Solved solve(const softtissue::TetMesh& mesh, const softtissue::BoundaryConditio
     softtissue::NewtonOptions newton;
     newton.load_steps = 2;
     auto result = softtissue::solve_nonlinear_static(mesh, material, bc, newton);
-    if (!result.converged) throw Error(ErrorCode::kProcessing, "non-linear FEM", "Newton's method did not converge");
+    if (!result.converged)
+      throw Error(ErrorCode::kProcessing, "non-linear FEM",
+                  "Newton's method did not converge (relative residual " + std::to_string(result.relative_residual) +
+                      " after " + std::to_string(result.newton_iterations) + " Newton steps)");
     return {result.displacement, result.newton_iterations};
   }
   if (o.model == softtissue::SoftTissueModel::kMassSpring) {

@@ -1,9 +1,12 @@
 // maxillo bench face [--spacing MM] [--runs 5] [--max-tets N] [--cell-mm MM] [--skin-triangles N]:
 // the soft tissue pipeline's costs on the phantom's face: meshing, solves, skin mappings
 // (bench/face_benchmark.h).
+// maxillo bench face --real [--advance MM ...] [--tie-cavities]: how the predicted profile follows Le Fort I
+// advancements on the real cadaver head, beside published series (bench/face_realism_benchmark.h).
 #include <iostream>
 
 #include "bench/face_benchmark.h"
+#include "bench/face_realism_benchmark.h"
 #include "cli/command.h"
 #include "core/json.h"
 
@@ -22,7 +25,21 @@ void attach_bench_face(CLI::App& bench, CommandContext& ctx) {
   face->add_option("--skin-triangles", args->skin_triangles, "skin decimation target")
       ->check(kTriangles)
       ->capture_default_str();
-  face->callback([args, &ctx] {
+  auto real = std::make_shared<bool>(false);
+  auto realism = std::make_shared<bench::FaceRealismOptions>();
+  face->add_flag("--real", *real,
+                 "the real cadaver head instead: profile ratios per model beside published series (issue 34)");
+  face->add_option("--advance", realism->advancements_mm, "with --real: Le Fort I advancements, mm")
+      ->check(CLI::Range(0.5, 20.0))
+      ->capture_default_str();
+  face->add_flag("--tie-cavities", realism->tie_cavities,
+                 "with --real: join tissue inside the bone's cavities to moved bone too (the rule before issue 34)");
+  face->callback([args, real, realism, &ctx] {
+    if (*real) {
+      const Json figures = bench::run_face_realism_benchmark(*realism);
+      std::cout << (ctx.global.json ? json_text(figures) + "\n" : bench::face_realism_text(figures));
+      return;
+    }
     const Json figures = bench::run_face_benchmark(*args);
     std::cout << (ctx.global.json ? json_text(figures) + "\n" : bench::face_benchmark_text(figures));
   });

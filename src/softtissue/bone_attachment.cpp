@@ -30,6 +30,43 @@ uint8_t nearest_segment(const LabelVolume& segments, const Eigen::Vector3d& p, d
   return found;
 }
 
+// The direction away from the bone near p: from the centroid of the bone voxels within `reach`
+// mm (steadier than the nearest voxel's direction on a staircase surface); zero without bone.
+Eigen::Vector3d away_from_bone(const LabelVolume& segments, const Eigen::Vector3d& p, double reach) {
+  const auto& g = segments.geometry;
+  const Eigen::Vector3d centre = g.continuous_index(p);
+  const Eigen::Vector3i radius = (Eigen::Vector3d::Constant(reach).cwiseQuotient(g.spacing)).array().ceil().cast<int>();
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  int count = 0;
+  for (int k = int(std::floor(centre.z())) - radius.z(); k <= int(std::ceil(centre.z())) + radius.z(); ++k)
+    for (int j = int(std::floor(centre.y())) - radius.y(); j <= int(std::ceil(centre.y())) + radius.y(); ++j)
+      for (int i = int(std::floor(centre.x())) - radius.x(); i <= int(std::ceil(centre.x())) + radius.x(); ++i) {
+        if (!g.contains(i, j, k) || !segments.labels[size_t(g.index(i, j, k))]) continue;
+        const Eigen::Vector3d q = g.world(Eigen::Vector3d(i, j, k));
+        if ((q - p).squaredNorm() > reach * reach) continue;
+        sum += q;
+        ++count;
+      }
+  if (!count) return Eigen::Vector3d::Zero();
+  const Eigen::Vector3d away = p - sum / count;
+  return away.norm() > 1e-9 ? away.normalized() : Eigen::Vector3d::Zero();
+}
+
+// Whether the ray from p along unit `direction` meets bone between `from_mm` and `to_mm`; a ray
+// that leaves the scan meets none.
+bool ray_meets_bone(const LabelVolume& segments, const Eigen::Vector3d& p, const Eigen::Vector3d& direction,
+                    double from_mm, double to_mm) {
+  const auto& g = segments.geometry;
+  const double step = 0.5 * g.spacing.minCoeff();
+  for (double t = from_mm; t <= to_mm; t += step) {
+    const Eigen::Vector3d ijk = g.continuous_index(p + t * direction);
+    const int i = int(std::lround(ijk.x())), j = int(std::lround(ijk.y())), k = int(std::lround(ijk.z()));
+    if (!g.contains(i, j, k)) return false;
+    if (segments.labels[size_t(g.index(i, j, k))]) return true;
+  }
+  return false;
+}
+
 bool on_cut(const Eigen::Vector3d& p, const std::vector<RegionPlane>& planes, double tolerance) {
   for (const auto& plane : planes)
     if (std::abs(plane.side(p)) <= tolerance) return true;
@@ -37,6 +74,22 @@ bool on_cut(const Eigen::Vector3d& p, const std::vector<RegionPlane>& planes, do
 }
 
 }  // namespace
+
+bool inside_bone_cavity(const LabelVolume& segments, const Eigen::Vector3d& p, const AttachmentOptions& options) {
+  const Eigen::Vector3d outward = away_from_bone(segments, p, options.touch_mm + 1);
+  if (outward.isZero()) return false;
+  // Four directions 30 degrees off the outward one, about two axes across it.
+  const Eigen::Vector3d across = outward.unitOrthogonal(), across2 = outward.cross(across);
+  const double tilt = std::tan(30 * M_PI / 180);
+  const Eigen::Vector3d rays[] = {outward, (outward + tilt * across).normalized(),
+                                  (outward - tilt * across).normalized(), (outward + tilt * across2).normalized(),
+                                  (outward - tilt * across2).normalized()};
+  // The rays start clear of the bone the node touches, so that they do not meet it again at once.
+  const double clear = options.touch_mm + 1;
+  int meeting = 0;
+  for (const auto& ray : rays) meeting += ray_meets_bone(segments, p, ray, clear, options.cavity_reach_mm);
+  return meeting >= 3;
+}
 
 Attachment attach_to_bone(const TetMesh& mesh, const LabelVolume& segments,
                           const std::map<uint8_t, Eigen::Isometry3d>& moves, const std::vector<RegionPlane>& cut_planes,
@@ -51,7 +104,10 @@ Attachment attach_to_bone(const TetMesh& mesh, const LabelVolume& segments,
     result.segment[size_t(i)] = s;
     if (s) {
       auto move = moves.find(s);
-      if (move != moves.end()) {
+      if (move != moves.end() && options.outer_surface_only && inside_bone_cavity(segments, p, options)) {
+        result.segment[size_t(i)] = 0;
+        ++result.inner_nodes;
+      } else if (move != moves.end()) {
         result.bc.constraint[size_t(i)] = NodeConstraint::kPrescribed;
         result.bc.displacement.row(i) = (move->second * p - p).transpose();
       } else {

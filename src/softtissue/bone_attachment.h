@@ -4,6 +4,14 @@
 // follows that segment's rigid move (prescribed) or, when the segment does not move, stays put
 // (fixed). Nodes on a cut plane of the region are fixed too: the tissue beyond is not
 // modelled and is taken as unmoved. Every other node is free.
+//
+// A moved segment carries only the tissue on its outer surface (its periosteum): a node inside
+// one of the bone's cavities (a sinus, the nasal cavity seen from its floor or walls) is left
+// free (issue 34): in surgery the septum and the nasal mucosa are freed from the maxilla, and
+// tissue that bone closes around does not pull on the face. Inside means: three of five rays
+// cast from the node away from the bone it touches (the outward direction and four tilted 30
+// degrees about it) meet bone again within cavity_reach_mm. On the outer surface (the lip's side
+// of the alveolus, the cheek's side of the maxilla) the rays leave through the face.
 #include <Eigen/Geometry>
 #include <map>
 #include <vector>
@@ -18,12 +26,19 @@ namespace maxillo::softtissue {
 struct AttachmentOptions {
   double touch_mm = 1.5;                // how close bone must be for a node to be joined to it
   double cut_plane_tolerance_mm = 1.0;  // nodes this close to a region plane are on the cut
+  bool outer_surface_only = true;       // moved segments carry the tissue on their outer surface only
+  double cavity_reach_mm = 60;          // bone this far along a ray from a node closes a cavity around it
 };
 
 struct Attachment {
   BoundaryConditions bc;
   std::vector<uint8_t> segment;  // per node: the bone segment it is joined to (0 = none)
+  int inner_nodes = 0;           // nodes touching a moved segment inside its cavities, left free
 };
+
+// Whether a node at `p`, touching the bone of `segments` around it, lies inside a cavity of
+// the bone (the rule above). `segments`: any non-zero label is bone.
+bool inside_bone_cavity(const LabelVolume& segments, const Eigen::Vector3d& p, const AttachmentOptions& options);
 
 // `segments` labels bone segments (0 = no bone); `moves` gives the rigid move of each moved
 // segment (pre-op -> planned, LPS mm); segments absent from `moves` stay where they are.

@@ -117,5 +117,67 @@ TEST(BoneAttachment, JoinsNodesToTheBoneTheyTouchAndFixesCutPlanes) {
   }
 }
 
+// A 1 mm bone grid, 60 mm a side, origin at 0: labels set by `bone(i, j, k)` (segment 2).
+template <typename Bone>
+LabelVolume bone_volume(Bone bone) {
+  LabelVolume segments;
+  segments.geometry.size = {60, 60, 60};
+  segments.labels.assign(size_t(segments.geometry.voxel_count()), 0);
+  for (int k = 0; k < 60; ++k)
+    for (int j = 0; j < 60; ++j)
+      for (int i = 0; i < 60; ++i)
+        if (bone(i, j, k)) segments.labels[size_t(segments.geometry.index(i, j, k))] = 2;
+  return segments;
+}
+
+TEST(BoneCavity, InsideAClosedBoxButNotOnItsOuterFace) {
+  // A hollow box [10, 50]^3 with 2 mm walls: a sinus.
+  const auto box = bone_volume([](int i, int j, int k) {
+    const bool in_outer = i >= 10 && i <= 50 && j >= 10 && j <= 50 && k >= 10 && k <= 50;
+    const bool in_hollow = i >= 12 && i <= 48 && j >= 12 && j <= 48 && k >= 12 && k <= 48;
+    return in_outer && !in_hollow;
+  });
+  EXPECT_TRUE(inside_bone_cavity(box, {30, 30, 13}, {}));  // on the floor, inside
+  EXPECT_TRUE(inside_bone_cavity(box, {13, 30, 30}, {}));  // on a side wall, inside
+  EXPECT_FALSE(inside_bone_cavity(box, {30, 30, 9}, {}));  // under the floor, outside
+  EXPECT_FALSE(inside_bone_cavity(box, {30, 9, 30}, {}));  // in front of a wall, outside
+  // A tray (the box's floor with a 10 mm rim, open at the top) is no cavity for a node on its
+  // floor: its rays leave upwards.
+  const auto tray = bone_volume([](int i, int j, int k) {
+    const bool in_outer = i >= 10 && i <= 50 && j >= 10 && j <= 50 && k >= 10 && k <= 20;
+    const bool in_hollow = i >= 12 && i <= 48 && j >= 12 && j <= 48 && k >= 12;
+    return in_outer && !in_hollow;
+  });
+  EXPECT_FALSE(inside_bone_cavity(tray, {30, 30, 13}, {}));
+}
+
+TEST(BoneAttachment, MovedBoneCarriesOnlyItsOuterSurface) {
+  // The hollow box of bone (segment 2, moved) with a tet cube inside its cavity and one outside.
+  const auto box = bone_volume([](int i, int j, int k) {
+    const bool in_outer = i >= 10 && i <= 50 && j >= 10 && j <= 50 && k >= 10 && k <= 50;
+    const bool in_hollow = i >= 12 && i <= 48 && j >= 12 && j <= 48 && k >= 12 && k <= 48;
+    return in_outer && !in_hollow;
+  });
+  const Eigen::Isometry3d move(Eigen::Translation3d(0, 3, 0));
+  auto inner = cube(8, 2);
+  inner.nodes.rowwise() += Eigen::RowVector3d(26, 26, 12.2);  // its 9 bottom nodes 1.2 mm above the floor
+  auto attached = attach_to_bone(inner, box, {{uint8_t(2), move}}, {});
+  EXPECT_EQ(count_nodes(attached.bc, NodeConstraint::kPrescribed), 0);
+  EXPECT_EQ(attached.inner_nodes, 9);
+  // Without the rule the floor's nodes follow the bone; unmoved bone holds them either way.
+  AttachmentOptions tie_all;
+  tie_all.outer_surface_only = false;
+  attached = attach_to_bone(inner, box, {{uint8_t(2), move}}, {}, tie_all);
+  EXPECT_EQ(count_nodes(attached.bc, NodeConstraint::kPrescribed), 9);
+  attached = attach_to_bone(inner, box, {}, {});
+  EXPECT_EQ(count_nodes(attached.bc, NodeConstraint::kFixed), 9);
+
+  auto outer = cube(8, 2);
+  outer.nodes.rowwise() += Eigen::RowVector3d(26, 26, 51.2);  // its bottom 1.2 mm above the box's top
+  attached = attach_to_bone(outer, box, {{uint8_t(2), move}}, {});
+  EXPECT_EQ(count_nodes(attached.bc, NodeConstraint::kPrescribed), 9);
+  EXPECT_EQ(attached.inner_nodes, 0);
+}
+
 }  // namespace
 }  // namespace maxillo::softtissue

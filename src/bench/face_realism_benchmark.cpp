@@ -1,0 +1,174 @@
+#include "bench/face_realism_benchmark.h"
+
+#include <string>
+
+#include "bench/cadaver_head_landmarks.h"
+#include "bench/formatted.h"
+#include "bench/peak_memory.h"
+#include "bench/registration_benchmark.h"
+#include "bench/shared_data.h"
+#include "bench/timing.h"
+#include "casework/case_simulation.h"
+#include "casework/case_surfaces.h"
+#include "casework/case_tissues.h"
+#include "casework/planned_case.h"
+#include "casework/profile_response.h"
+#include "casework/soft_tissue_prediction.h"
+#include "ceph/landmark_frame.h"
+#include "core/error.h"
+#include "landmarking/landmark_detection.h"
+#include "planning/distractor_checks.h"
+#include "planning/osteotomy.h"
+#include "planning/plan_application.h"
+
+namespace maxillo::bench {
+namespace {
+
+using casework::SoftTissueOptions;
+using softtissue::SoftTissueModel;
+
+constexpr SoftTissueModel kModels[] = {SoftTissueModel::kMassTensor, SoftTissueModel::kLinearFem,
+                                       SoftTissueModel::kMassSpring, SoftTissueModel::kNonlinearFem};
+
+// The cadaver head prepared as `simulate` prepares a case: landmarks, tissues, skin, bone cut.
+struct PreparedHead {
+  LandmarkSet landmarks;
+  casework::CaseTissues tissues;
+  TriangleMesh skin;
+  planning::OsteotomyResult cut;
+  AnatomicalFrame frame;
+  std::vector<std::string> by_hand;  // landmarks the detector did not find, placed by hand
+};
+
+PreparedHead prepare_cadaver_head() {
+  const Volume ct = read_cadaver_head(shared_data_folder() / "cthead-stanford" / "slices");
+  PreparedHead head;
+  head.landmarks = completed_by_hand(landmarking::detect_landmarks(ct, "cadaver head").present(), head.by_hand);
+  head.frame = anatomical_frame(head.landmarks);
+  head.tissues = casework::segment_case_tissues(ct, head.landmarks);
+  head.skin = casework::extract_case_surfaces(ct, {}, nullptr, &head.tissues.ct_labels).skin;
+  const auto plan = casework::le_fort_advancement_plan(1);
+  head.cut = planning::cut_skeleton(head.tissues.jaws, planning::resolve_osteotomies(plan.osteotomies, head.landmarks));
+  return head;
+}
+
+Json response_json(const casework::ProfileResponse& response) {
+  Json points = Json::array();
+  const auto& published = casework::published_le_fort_advancement_response();
+  for (size_t i = 0; i < response.points.size(); ++i) {
+    const auto& p = response.points[i];
+    points.push_back({{"label", p.label},
+                      {"present", p.present},
+                      {"forward_mm", p.forward_mm},
+                      {"ratio", p.ratio},
+                      {"plausible", p.present && casework::plausible(published[i], p.ratio)}});
+  }
+  return {{"points", points},
+          {"gradient_p999", response.gradient_p999},
+          {"gradient_max", response.gradient_max},
+          {"moved_edges", response.moved_edges}};
+}
+
+// One model on one advancement: the prediction's profile response, or the error it stopped with.
+Json run_model(const PreparedHead& head, const casework::FaceModel& face, double advancement_mm, SoftTissueModel model,
+               bool tie_cavities) {
+  const auto plan = casework::le_fort_advancement_plan(advancement_mm);
+  const auto applied =
+      planning::apply_plan(plan, head.tissues.segmentation, head.landmarks, planning::segmentation_anatomy_labels());
+  casework::SoftTissueInput input{&head.tissues.jaws, &head.cut.segments, &head.skin, head.landmarks,
+                                  casework::moves_by_segment(applied.moves)};
+  SoftTissueOptions options;
+  options.model = model;
+  options.attachment.outer_surface_only = !tie_cavities;
+  Json run = {{"advancement_mm", advancement_mm},
+              {"model", softtissue::model_name(model)},
+              {"title", softtissue::model_title(model)}};
+  const auto start = Clock::now();
+  try {
+    const auto prediction = casework::predict_soft_tissue(input, options, &face);
+    run["seconds"] = seconds_since(start);
+    run["iterations"] = prediction.iterations;
+    run.update(response_json(casework::profile_response(head.skin, prediction.skin_displacement, head.frame,
+                                                        head.landmarks, advancement_mm)));
+    run["fixed_nodes"] = softtissue::count_nodes(prediction.bc, softtissue::NodeConstraint::kFixed);
+    run["prescribed_nodes"] = softtissue::count_nodes(prediction.bc, softtissue::NodeConstraint::kPrescribed);
+  } catch (const Error& error) {
+    run["seconds"] = seconds_since(start);
+    run["error"] = error.what();
+  }
+  return run;
+}
+
+Json published_json() {
+  Json published = Json::array();
+  for (const auto& p : casework::published_le_fort_advancement_response()) {
+    Json entry = {{"label", p.label}, {"published", p.published}, {"source", p.source}};
+    if (p.plausible_low) entry["plausible_low"] = *p.plausible_low;
+    if (p.plausible_high) entry["plausible_high"] = *p.plausible_high;
+    published.push_back(entry);
+  }
+  return published;
+}
+
+}  // namespace
+
+Json run_face_realism_benchmark(const FaceRealismOptions& options) {
+  auto start = Clock::now();
+  const PreparedHead head = prepare_cadaver_head();
+  const double preparation_seconds = seconds_since(start);
+  start = Clock::now();
+  const auto face = casework::build_face_model(head.tissues.jaws, head.landmarks, SoftTissueOptions{});
+  Json figures = {{"preparation_seconds", preparation_seconds},
+                  {"landmarks_by_hand", head.by_hand},
+                  {"tie_cavities", options.tie_cavities},
+                  {"face_model",
+                   {{"tets", face.mesh.tet_count()},
+                    {"nodes", face.mesh.node_count()},
+                    {"cell_mm", face.meshing.cell_size_mm},
+                    {"seconds", seconds_since(start)}}},
+                  {"published", published_json()},
+                  {"advancements_mm", options.advancements_mm}};
+  Json runs = Json::array();
+  for (double advancement : options.advancements_mm)
+    for (auto model : kModels) runs.push_back(run_model(head, face, advancement, model, options.tie_cavities));
+  figures["runs"] = runs;
+  figures["peak_memory_mb"] = double(peak_memory_kb()) / 1024.0;
+  return figures;
+}
+
+std::string face_realism_text(const Json& figures) {
+  const Json& face = figures["face_model"];
+  std::string by_hand;
+  for (const auto& label : figures["landmarks_by_hand"]) by_hand += " " + label.get<std::string>();
+  std::string text = formatted(
+      "cadaver head, landmarks found automatically, by hand where not found (%s); %.1f s "
+      "with tissues and skin\nface model %d tets, %d nodes (cell %.2f mm) in %.1f s\n",
+      by_hand.empty() ? " none" : by_hand.c_str(), figures["preparation_seconds"].get<double>(),
+      face["tets"].get<int>(), face["nodes"].get<int>(), face["cell_mm"].get<double>(), face["seconds"].get<double>());
+  if (figures["tie_cavities"].get<bool>()) text += "tissue inside the bone's cavities joined to moved bone too\n";
+  text += "forward move / advancement at the profile points; * outside the plausible band\n";
+  text += formatted("%-6s %-5s", "adv mm", "model");
+  for (const auto& p : figures["published"]) text += formatted(" %7s", p["label"].get<std::string>().c_str());
+  text += "  gradient P99.9 / max (mm/mm)  seconds\n";
+  for (const auto& run : figures["runs"]) {
+    text += formatted("%6.1f %-5s", run["advancement_mm"].get<double>(), run["model"].get<std::string>().c_str());
+    if (run.contains("error")) {
+      text += "  failed: " + run["error"].get<std::string>() + "\n";
+      continue;
+    }
+    for (const auto& p : run["points"])
+      text += p["present"].get<bool>()
+                  ? formatted(" %6.2f%s", p["ratio"].get<double>(), p["plausible"].get<bool>() ? " " : "*")
+                  : formatted(" %7s", "-");
+    text += formatted("  %6.2f / %6.2f  %13.1f\n", run["gradient_p999"].get<double>(),
+                      run["gradient_max"].get<double>(), run["seconds"].get<double>());
+  }
+  text += "published (fraction of the advancement):\n";
+  for (const auto& p : figures["published"])
+    text +=
+        formatted("  %-6s %s%s%s\n", p["label"].get<std::string>().c_str(), p["published"].get<std::string>().c_str(),
+                  p["source"].get<std::string>().empty() ? "" : "; ", p["source"].get<std::string>().c_str());
+  return text + formatted("peak memory: %.0f MB\n", figures["peak_memory_mb"].get<double>());
+}
+
+}  // namespace maxillo::bench

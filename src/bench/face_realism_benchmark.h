@@ -1,0 +1,29 @@
+#pragma once
+// `maxillo bench face --real`: does the predicted face move as published studies measure faces
+// move (issue 34)? On the real cadaver head (../shared/data/cthead-stanford) with its landmarks
+// found automatically: a Le Fort I advancement of each size asked for, solved with every soft
+// tissue model on one face model; per model and advancement the forward move of the profile
+// points (Prn, the dorsum 8 mm above it, Sn, Ls, Li, PogS) as a fraction of the advancement,
+// the largest displacement gradient on the skin, and the time; the published figures beside them
+// (casework/profile_response.h).
+#include <vector>
+
+#include "core/json.h"
+
+namespace maxillo::bench {
+
+struct FaceRealismOptions {
+  std::vector<double> advancements_mm{3, 6, 9};
+  bool tie_cavities = false;  // join tissue inside the bone's cavities to moved bone too (as before issue 34)
+};
+
+// Error(kFileNotFound) when the cadaver head is absent. Figures: advancements, face_model
+// (tets, nodes, cell_mm, seconds, fixed/prescribed/free nodes at the first advancement),
+// published (label, published, source, plausible_low/high), runs (advancement_mm, model, title,
+// seconds, iterations, error when it failed; points: label, present, forward_mm, ratio,
+// plausible; gradient_p999, gradient_max, moved_edges), peak_memory_mb.
+Json run_face_realism_benchmark(const FaceRealismOptions& options);
+
+std::string face_realism_text(const Json& figures);
+
+}  // namespace maxillo::bench

@@ -1,0 +1,109 @@
+#include "casework/profile_response.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace maxillo::casework {
+namespace {
+
+constexpr double kMovedMm = 0.1;           // edges whose ends both moved less are not in the gradient figures
+constexpr double kProfileHalfWidthMm = 2;  // how far off the midsagittal plane a profile vertex may lie
+constexpr double kProfileHalfHeightMm = 1;
+
+Eigen::Index nearest_vertex(const TriangleMesh& skin, const Eigen::Vector3d& p) {
+  Eigen::Index best = 0;
+  (skin.vertices.rowwise() - p.transpose()).rowwise().squaredNorm().minCoeff(&best);
+  return best;
+}
+
+// The skin's edges, each once, as (smaller, larger) vertex index pairs.
+std::vector<std::pair<int, int>> unique_edges(const TriangleMesh& skin) {
+  std::vector<std::pair<int, int>> edges;
+  edges.reserve(size_t(skin.faces.rows()) * 3);
+  for (Eigen::Index f = 0; f < skin.faces.rows(); ++f)
+    for (int e = 0; e < 3; ++e) {
+      const int a = skin.faces(f, e), b = skin.faces(f, (e + 1) % 3);
+      edges.emplace_back(std::min(a, b), std::max(a, b));
+    }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  return edges;
+}
+
+// The P99.9 and the largest of |u_a - u_b| / |x_a - x_b| over the skin's edges with an end that moved.
+void add_gradient(const TriangleMesh& skin, const Eigen::MatrixX3d& u, ProfileResponse& response) {
+  std::vector<double> gradient;
+  for (const auto& [a, b] : unique_edges(skin)) {
+    if (u.row(a).norm() < kMovedMm && u.row(b).norm() < kMovedMm) continue;
+    const double length = (skin.vertices.row(a) - skin.vertices.row(b)).norm();
+    if (length > 0) gradient.push_back((u.row(a) - u.row(b)).norm() / length);
+  }
+  response.moved_edges = int(gradient.size());
+  if (gradient.empty()) return;
+  const size_t p999 = size_t(std::floor(0.999 * double(gradient.size() - 1)));
+  std::nth_element(gradient.begin(), gradient.begin() + std::ptrdiff_t(p999), gradient.end());
+  response.gradient_p999 = gradient[p999];
+  response.gradient_max = *std::max_element(gradient.begin() + std::ptrdiff_t(p999), gradient.end());
+}
+
+}  // namespace
+
+const std::vector<PublishedResponse>& published_le_fort_advancement_response() {
+  static const std::vector<PublishedResponse> published{
+      {"Prn", "0.17; 1.1 mm for 4.15 mm at the lip",
+       "3D scans of 32 patients (Maxillofac Plast Reconstr Surg 2018, PMC6173856); Vasudavan 2012 (JOMS 70:e270)", 0.0,
+       0.40},
+      {kDorsumLabel, "about 0 (nasal bones not cut)", "Le Fort I leaves the nasal bones in place", 0.0, 0.25},
+      {"Sn", "0.51 +/- 0.13", "Rosen 1988, 41 patients (Plast Reconstr Surg 81:171)", 0.40, 0.95},
+      {"Ls", "0.82 +/- 0.13", "Rosen 1988, 41 patients (Plast Reconstr Surg 81:171)", 0.50, 1.00},
+      {"Li", "not measured in these series", "", std::nullopt, std::nullopt},
+      {"PogS", "about 0 (mandible not moved)", "", std::nullopt, std::nullopt},
+  };
+  return published;
+}
+
+bool plausible(const PublishedResponse& published, double ratio) {
+  if (published.plausible_low && ratio < *published.plausible_low) return false;
+  return !published.plausible_high || ratio <= *published.plausible_high;
+}
+
+std::optional<Eigen::Index> profile_vertex_above(const TriangleMesh& skin, const AnatomicalFrame& frame,
+                                                 const Eigen::Vector3d& tip, double above_mm) {
+  std::optional<Eigen::Index> best;
+  double most_anterior = -INFINITY;
+  for (Eigen::Index v = 0; v < skin.vertices.rows(); ++v) {
+    const Eigen::Vector3d offset = skin.vertices.row(v).transpose() - tip;
+    if (std::abs(offset.dot(frame.left)) > kProfileHalfWidthMm) continue;
+    if (std::abs(offset.dot(frame.superior) - above_mm) > kProfileHalfHeightMm) continue;
+    if (offset.dot(frame.anterior) > most_anterior) {
+      most_anterior = offset.dot(frame.anterior);
+      best = v;
+    }
+  }
+  return best;
+}
+
+ProfileResponse profile_response(const TriangleMesh& skin_before, const Eigen::MatrixX3d& displacement,
+                                 const AnatomicalFrame& frame, const LandmarkSet& landmarks, double advancement_mm) {
+  ProfileResponse response;
+  const auto tip = find_landmark(landmarks, "Prn");
+  for (const auto& published : published_le_fort_advancement_response()) {
+    ProfilePointResponse point{published.label};
+    std::optional<Eigen::Index> vertex;
+    if (published.label == kDorsumLabel) {
+      if (tip) vertex = profile_vertex_above(skin_before, frame, *tip, kDorsumAboveTipMm);
+    } else if (auto p = find_landmark(landmarks, published.label)) {
+      vertex = nearest_vertex(skin_before, *p);
+    }
+    if (vertex && skin_before.vertices.rows() > 0) {
+      point.present = true;
+      point.forward_mm = displacement.row(*vertex).dot(frame.anterior.transpose());
+      point.ratio = advancement_mm != 0 ? point.forward_mm / advancement_mm : 0;
+    }
+    response.points.push_back(point);
+  }
+  add_gradient(skin_before, displacement, response);
+  return response;
+}
+
+}  // namespace maxillo::casework

@@ -1,0 +1,108 @@
+// The profile response (casework/profile_response.h) on a synthetic face whose answers are known:
+// a rigid move gives every point the whole advancement and no gradient; a move that grows
+// linearly with height gives each point its height's share and the slope as the largest gradient.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "casework/profile_response.h"
+
+namespace maxillo::casework {
+namespace {
+
+// A frontal grid (x left, z up, 0.5 mm apart) whose front is a ridge along the midline x = 0:
+// y = -50 + |x| / 2, so the most anterior vertex of a row lies on the midline (LPS: anterior is -y).
+TriangleMesh ridge_face() {
+  constexpr int kColumns = 81, kRows = 161;  // x in [-20, 20], z in [0, 80]
+  TriangleMesh mesh;
+  mesh.vertices.resize(kColumns * kRows, 3);
+  for (int r = 0; r < kRows; ++r)
+    for (int c = 0; c < kColumns; ++c) {
+      const double x = -20 + 0.5 * c, z = 0.5 * r;
+      mesh.vertices.row(r * kColumns + c) << x, -50 + std::abs(x) / 2, z;
+    }
+  mesh.faces.resize(2 * (kColumns - 1) * (kRows - 1), 3);
+  int f = 0;
+  for (int r = 0; r + 1 < kRows; ++r)
+    for (int c = 0; c + 1 < kColumns; ++c) {
+      const int v = r * kColumns + c;
+      mesh.faces.row(f++) << v, v + 1, v + kColumns + 1;
+      mesh.faces.row(f++) << v, v + kColumns + 1, v + kColumns;
+    }
+  return mesh;
+}
+
+AnatomicalFrame patient_axes() { return {}; }  // anterior -y, superior +z, left +x
+
+LandmarkSet profile_landmarks() {
+  return {
+      {"Prn", {0, -50, 50}}, {"Sn", {0, -50, 42}}, {"Ls", {0, -50, 34}}, {"Li", {0, -50, 26}}, {"PogS", {0, -50, 10}}};
+}
+
+TEST(ProfileResponse, RigidAdvancementMovesEveryPointByTheWholeAdvancement) {
+  const auto skin = ridge_face();
+  const Eigen::MatrixX3d u = Eigen::RowVector3d(0, -6, 0).replicate(skin.vertices.rows(), 1);
+  const auto response = profile_response(skin, u, patient_axes(), profile_landmarks(), 6);
+  ASSERT_EQ(response.points.size(), published_le_fort_advancement_response().size());
+  for (const auto& point : response.points) {
+    EXPECT_TRUE(point.present) << point.label;
+    EXPECT_NEAR(point.ratio, 1.0, 1e-12) << point.label;
+  }
+  EXPECT_EQ(response.gradient_max, 0);
+  EXPECT_GT(response.moved_edges, 0);
+}
+
+TEST(ProfileResponse, MoveGrowingWithHeightGivesEachPointItsShareAndTheSlope) {
+  const auto skin = ridge_face();
+  const double slope = 0.05;  // mm of forward move per mm of height
+  Eigen::MatrixX3d u = Eigen::MatrixX3d::Zero(skin.vertices.rows(), 3);
+  u.col(1) = -slope * skin.vertices.col(2);
+  const auto response = profile_response(skin, u, patient_axes(), profile_landmarks(), 5);
+  const auto dorsum = profile_vertex_above(skin, patient_axes(), {0, -50, 50}, kDorsumAboveTipMm);
+  ASSERT_TRUE(dorsum);
+  for (const auto& point : response.points) {
+    const double height =
+        point.label == kDorsumLabel ? skin.vertices(*dorsum, 2) : find_landmark(profile_landmarks(), point.label)->z();
+    EXPECT_NEAR(point.ratio, slope * height / 5, 1e-12) << point.label;
+  }
+  // Along a vertical edge |du| / |dx| is the slope; along any other, less.
+  EXPECT_NEAR(response.gradient_max, slope, 1e-12);
+  EXPECT_LE(response.gradient_p999, slope + 1e-12);
+}
+
+TEST(ProfileResponse, DorsumIsTheMostAnteriorMidlineVertexAboveTheTip) {
+  const auto skin = ridge_face();
+  const Eigen::Vector3d tip(0.3, -50, 40);
+  const auto v = profile_vertex_above(skin, patient_axes(), tip, 8);
+  ASSERT_TRUE(v);
+  EXPECT_EQ(skin.vertices(*v, 0), 0);  // on the ridge
+  EXPECT_NEAR(skin.vertices(*v, 2), 48, 1.0);
+  EXPECT_FALSE(profile_vertex_above(skin, patient_axes(), tip, 60));  // above the face
+}
+
+TEST(ProfileResponse, AbsentLandmarksAreReportedAbsent) {
+  const auto skin = ridge_face();
+  const Eigen::MatrixX3d u = Eigen::MatrixX3d::Zero(skin.vertices.rows(), 3);
+  const auto response = profile_response(skin, u, patient_axes(), {{"Ls", {0, -50, 34}}}, 6);
+  for (const auto& point : response.points) EXPECT_EQ(point.present, point.label == "Ls") << point.label;
+  EXPECT_EQ(response.moved_edges, 0);
+}
+
+TEST(ProfileResponse, PlausibleBandsFollowThePublishedFigures) {
+  for (const auto& published : published_le_fort_advancement_response()) {
+    if (published.label == "Prn") {
+      EXPECT_TRUE(plausible(published, 0.17));
+      EXPECT_FALSE(plausible(published, 0.82));
+    }
+    if (published.label == "Ls") {
+      EXPECT_TRUE(plausible(published, 0.82));
+      EXPECT_FALSE(plausible(published, 0.3));
+    }
+    if (published.label == "Li") {
+      EXPECT_TRUE(plausible(published, 0.3));  // no band
+    }
+  }
+}
+
+}  // namespace
+}  // namespace maxillo::casework
