@@ -71,7 +71,7 @@ Json response_json(const casework::ProfileResponse& response) {
 
 // One model on one advancement: the prediction's profile response, or the error it stopped with.
 Json run_model(const PreparedHead& head, const casework::FaceModel& face, double advancement_mm, SoftTissueModel model,
-               bool tie_cavities) {
+               bool free_cavities) {
   const auto plan = casework::le_fort_advancement_plan(advancement_mm);
   const auto applied =
       planning::apply_plan(plan, head.tissues.segmentation, head.landmarks, planning::segmentation_anatomy_labels());
@@ -79,7 +79,7 @@ Json run_model(const PreparedHead& head, const casework::FaceModel& face, double
                                   casework::moves_by_segment(applied.moves)};
   SoftTissueOptions options;
   options.model = model;
-  options.attachment.outer_surface_only = !tie_cavities;
+  options.attachment.outer_surface_only = free_cavities;
   Json run = {{"advancement_mm", advancement_mm},
               {"model", softtissue::model_name(model)},
               {"title", softtissue::model_title(model)}};
@@ -120,7 +120,7 @@ Json run_face_realism_benchmark(const FaceRealismOptions& options) {
   const auto face = casework::build_face_model(head.tissues.jaws, head.landmarks, SoftTissueOptions{});
   Json figures = {{"preparation_seconds", preparation_seconds},
                   {"landmarks_by_hand", head.by_hand},
-                  {"tie_cavities", options.tie_cavities},
+                  {"free_cavities", options.free_cavities},
                   {"face_model",
                    {{"tets", face.mesh.tet_count()},
                     {"nodes", face.mesh.node_count()},
@@ -130,7 +130,7 @@ Json run_face_realism_benchmark(const FaceRealismOptions& options) {
                   {"advancements_mm", options.advancements_mm}};
   Json runs = Json::array();
   for (double advancement : options.advancements_mm)
-    for (auto model : kModels) runs.push_back(run_model(head, face, advancement, model, options.tie_cavities));
+    for (auto model : kModels) runs.push_back(run_model(head, face, advancement, model, options.free_cavities));
   figures["runs"] = runs;
   figures["peak_memory_mb"] = double(peak_memory_kb()) / 1024.0;
   return figures;
@@ -145,7 +145,7 @@ std::string face_realism_text(const Json& figures) {
       "with tissues and skin\nface model %d tets, %d nodes (cell %.2f mm) in %.1f s\n",
       by_hand.empty() ? " none" : by_hand.c_str(), figures["preparation_seconds"].get<double>(),
       face["tets"].get<int>(), face["nodes"].get<int>(), face["cell_mm"].get<double>(), face["seconds"].get<double>());
-  if (figures["tie_cavities"].get<bool>()) text += "tissue inside the bone's cavities joined to moved bone too\n";
+  if (figures["free_cavities"].get<bool>()) text += "moved bone carries only the tissue on its outer surface\n";
   text += "forward move / advancement at the profile points; * outside the plausible band\n";
   text += formatted("%-6s %-5s", "adv mm", "model");
   for (const auto& p : figures["published"]) text += formatted(" %7s", p["label"].get<std::string>().c_str());

@@ -14,7 +14,7 @@ namespace maxillo::bench {
 
 struct FaceRealismOptions {
   std::vector<double> advancements_mm{3, 6, 9};
-  bool tie_cavities = false;  // join tissue inside the bone's cavities to moved bone too (as before issue 34)
+  bool free_cavities = false;  // moved bone carries only the tissue on its outer surface (AttachmentOptions)
 };
 
 // Error(kFileNotFound) when the cadaver head is absent. Figures: advancements, face_model

@@ -1,7 +1,7 @@
 // maxillo bench face [--spacing MM] [--runs 5] [--max-tets N] [--cell-mm MM] [--skin-triangles N]:
 // the soft tissue pipeline's costs on the phantom's face: meshing, solves, skin mappings
 // (bench/face_benchmark.h).
-// maxillo bench face --real [--advance MM ...] [--tie-cavities]: how the predicted profile follows Le Fort I
+// maxillo bench face --real [--advance MM ...] [--free-cavities]: how the predicted profile follows Le Fort I
 // advancements on the real cadaver head, beside published series (bench/face_realism_benchmark.h).
 #include <iostream>
 
@@ -32,8 +32,8 @@ void attach_bench_face(CLI::App& bench, CommandContext& ctx) {
   face->add_option("--advance", realism->advancements_mm, "with --real: Le Fort I advancements, mm")
       ->check(CLI::Range(0.5, 20.0))
       ->capture_default_str();
-  face->add_flag("--tie-cavities", realism->tie_cavities,
-                 "with --real: join tissue inside the bone's cavities to moved bone too (the rule before issue 34)");
+  face->add_flag("--free-cavities", realism->free_cavities,
+                 "with --real: moved bone carries only the tissue on its outer surface (off by default)");
   face->callback([args, real, realism, &ctx] {
     if (*real) {
       const Json figures = bench::run_face_realism_benchmark(*realism);

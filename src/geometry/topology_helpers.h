@@ -1,5 +1,5 @@
 #pragma once
-// Internal to src/mesh: small pieces shared by mesh_measures.cpp and mesh_repair.cpp.
+// Small pieces shared by mesh_measures.cpp, mesh_repair.cpp and softtissue/bone_attachment.cpp.
 #include <Eigen/Core>
 
 #include <algorithm>

@@ -91,8 +91,7 @@ report::Section soft_tissue_section(const records::StoredSimulation& simulation)
   section.blocks.push_back(report::Paragraph{
       "Predicted face for the planned bone moves (" + s.plan_text + "), computed with the " + title +
       " on a tetrahedral model of the facial soft tissue. "
-      "Tissue on a moved bone segment's outer surface follows it (tissue inside the bone's cavities, such as the "
-      "nasal septum on the maxilla, does not); tissue on unmoved bone and on the model's cut planes "
+      "Tissue touching a moved bone segment follows it; tissue on unmoved bone and on the model's cut planes "
       "(below the orbits, under the chin, in front of the ears) stays in place."});
   section.blocks.push_back(model_facts(s, title));
   if (s.over_tet_budget)

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include "geometry/topology_helpers.h"
+
 namespace maxillo::softtissue {
 namespace {
 
@@ -67,6 +69,30 @@ bool ray_meets_bone(const LabelVolume& segments, const Eigen::Vector3d& p, const
   return false;
 }
 
+// A piece of the mesh that only cavities held (the lining of a sinus, cut off from the face by
+// the mesher) would float with nothing to hold it, and its solve would have no answer: its
+// nodes follow their bone after all. `inner_segment`: per node, the moved segment whose cavity
+// left it free (0 = none).
+void hold_floating_pieces(const TetMesh& mesh, const std::vector<uint8_t>& inner_segment,
+                          const std::map<uint8_t, Eigen::Isometry3d>& moves, Attachment& result) {
+  const int n = mesh.node_count();
+  topology::UnionFind pieces(n);
+  for (int t = 0; t < mesh.tet_count(); ++t)
+    for (int a = 1; a < 4; ++a) pieces.unite(mesh.tets(t, 0), mesh.tets(t, a));
+  std::vector<char> held(size_t(n), 0);
+  for (int i = 0; i < n; ++i)
+    if (result.bc.constraint[size_t(i)] != NodeConstraint::kFree) held[size_t(pieces.find(i))] = 1;
+  for (int i = 0; i < n; ++i) {
+    const uint8_t s = inner_segment[size_t(i)];
+    if (!s || held[size_t(pieces.find(i))]) continue;
+    const Eigen::Vector3d p = mesh.nodes.row(i).transpose();
+    result.bc.constraint[size_t(i)] = NodeConstraint::kPrescribed;
+    result.bc.displacement.row(i) = (moves.at(s) * p - p).transpose();
+    result.segment[size_t(i)] = s;
+    --result.inner_nodes;
+  }
+}
+
 bool on_cut(const Eigen::Vector3d& p, const std::vector<RegionPlane>& planes, double tolerance) {
   for (const auto& plane : planes)
     if (std::abs(plane.side(p)) <= tolerance) return true;
@@ -98,6 +124,7 @@ Attachment attach_to_bone(const TetMesh& mesh, const LabelVolume& segments,
   Attachment result;
   result.bc = all_free(n);
   result.segment.assign(size_t(n), 0);
+  std::vector<uint8_t> inner_segment(size_t(n), 0);
   for (int i = 0; i < n; ++i) {
     const Eigen::Vector3d p = mesh.nodes.row(i).transpose();
     const uint8_t s = nearest_segment(segments, p, options.touch_mm);
@@ -105,6 +132,7 @@ Attachment attach_to_bone(const TetMesh& mesh, const LabelVolume& segments,
     if (s) {
       auto move = moves.find(s);
       if (move != moves.end() && options.outer_surface_only && inside_bone_cavity(segments, p, options)) {
+        inner_segment[size_t(i)] = s;
         result.segment[size_t(i)] = 0;
         ++result.inner_nodes;
       } else if (move != moves.end()) {
@@ -117,6 +145,7 @@ Attachment attach_to_bone(const TetMesh& mesh, const LabelVolume& segments,
       result.bc.constraint[size_t(i)] = NodeConstraint::kFixed;
     }
   }
+  if (result.inner_nodes) hold_floating_pieces(mesh, inner_segment, moves, result);
   return result;
 }
 

@@ -161,20 +161,29 @@ TEST(BoneAttachment, MovedBoneCarriesOnlyItsOuterSurface) {
   const Eigen::Isometry3d move(Eigen::Translation3d(0, 3, 0));
   auto inner = cube(8, 2);
   inner.nodes.rowwise() += Eigen::RowVector3d(26, 26, 12.2);  // its 9 bottom nodes 1.2 mm above the floor
-  auto attached = attach_to_bone(inner, box, {{uint8_t(2), move}}, {});
+  // A cut plane through its top holds it, as the face holds the lining of a real cavity.
+  const std::vector<RegionPlane> top{{Eigen::Vector3d(0, 0, 20.2), -Eigen::Vector3d::UnitZ()}};
+  AttachmentOptions outer_only;
+  outer_only.outer_surface_only = true;
+  auto attached = attach_to_bone(inner, box, {{uint8_t(2), move}}, top, outer_only);
   EXPECT_EQ(count_nodes(attached.bc, NodeConstraint::kPrescribed), 0);
+  EXPECT_EQ(count_nodes(attached.bc, NodeConstraint::kFixed), 9);
   EXPECT_EQ(attached.inner_nodes, 9);
+  // Held by nothing else, the piece would float: it follows its bone after all.
+  attached = attach_to_bone(inner, box, {{uint8_t(2), move}}, {}, outer_only);
+  EXPECT_EQ(count_nodes(attached.bc, NodeConstraint::kPrescribed), 9);
+  EXPECT_EQ(attached.inner_nodes, 0);
   // Without the rule the floor's nodes follow the bone; unmoved bone holds them either way.
   AttachmentOptions tie_all;
   tie_all.outer_surface_only = false;
   attached = attach_to_bone(inner, box, {{uint8_t(2), move}}, {}, tie_all);
   EXPECT_EQ(count_nodes(attached.bc, NodeConstraint::kPrescribed), 9);
-  attached = attach_to_bone(inner, box, {}, {});
+  attached = attach_to_bone(inner, box, {}, {}, outer_only);
   EXPECT_EQ(count_nodes(attached.bc, NodeConstraint::kFixed), 9);
 
   auto outer = cube(8, 2);
   outer.nodes.rowwise() += Eigen::RowVector3d(26, 26, 51.2);  // its bottom 1.2 mm above the box's top
-  attached = attach_to_bone(outer, box, {{uint8_t(2), move}}, {});
+  attached = attach_to_bone(outer, box, {{uint8_t(2), move}}, {}, outer_only);
   EXPECT_EQ(count_nodes(attached.bc, NodeConstraint::kPrescribed), 9);
   EXPECT_EQ(attached.inner_nodes, 0);
 }
