@@ -20,6 +20,7 @@
 #include "planning/distractor_checks.h"
 #include "planning/osteotomy.h"
 #include "planning/plan_application.h"
+#include "softtissue/boundary_move.h"
 
 namespace maxillo::bench {
 namespace {
@@ -90,6 +91,9 @@ Json run_model(const PreparedHead& head, const casework::FaceModel& face, double
     run["iterations"] = prediction.iterations;
     run.update(response_json(casework::profile_response(head.skin, prediction.skin_displacement, head.frame,
                                                         head.landmarks, advancement_mm)));
+    // The default planes: below the orbits, under the chin, in front of the ears.
+    run["boundary_move_mm"] =
+        softtissue::largest_move_near_planes(prediction.mesh, prediction.node_displacement, face.planes);
     run["fixed_nodes"] = softtissue::count_nodes(prediction.bc, softtissue::NodeConstraint::kFixed);
     run["prescribed_nodes"] = softtissue::count_nodes(prediction.bc, softtissue::NodeConstraint::kPrescribed);
   } catch (const Error& error) {
@@ -149,7 +153,7 @@ std::string face_realism_text(const Json& figures) {
   text += "forward move / advancement at the profile points; * outside the plausible band\n";
   text += formatted("%-6s %-5s", "adv mm", "model");
   for (const auto& p : figures["published"]) text += formatted(" %7s", p["label"].get<std::string>().c_str());
-  text += "  gradient P99.9 / max (mm/mm)  seconds\n";
+  text += "  gradient P99.9 / max (mm/mm)  seconds  boundary move (orbits, chin, ears) mm\n";
   for (const auto& run : figures["runs"]) {
     text += formatted("%6.1f %-5s", run["advancement_mm"].get<double>(), run["model"].get<std::string>().c_str());
     if (run.contains("error")) {
@@ -160,8 +164,10 @@ std::string face_realism_text(const Json& figures) {
       text += p["present"].get<bool>()
                   ? formatted(" %6.2f%s", p["ratio"].get<double>(), p["plausible"].get<bool>() ? " " : "*")
                   : formatted(" %7s", "-");
-    text += formatted("  %6.2f / %6.2f  %13.1f\n", run["gradient_p999"].get<double>(),
-                      run["gradient_max"].get<double>(), run["seconds"].get<double>());
+    text += formatted("  %6.2f / %6.2f  %13.1f ", run["gradient_p999"].get<double>(), run["gradient_max"].get<double>(),
+                      run["seconds"].get<double>());
+    for (const auto& move : run["boundary_move_mm"]) text += formatted(" %5.2f", move.get<double>());
+    text += "\n";
   }
   text += "published (fraction of the advancement):\n";
   for (const auto& p : figures["published"])

@@ -17,11 +17,13 @@ struct FaceRealismOptions {
   bool free_cavities = false;  // moved bone carries only the tissue on its outer surface (AttachmentOptions)
 };
 
-// Error(kFileNotFound) when the cadaver head is absent. Figures: advancements, face_model
-// (tets, nodes, cell_mm, seconds, fixed/prescribed/free nodes at the first advancement),
-// published (label, published, source, plausible_low/high), runs (advancement_mm, model, title,
-// seconds, iterations, error when it failed; points: label, present, forward_mm, ratio,
-// plausible; gradient_p999, gradient_max, moved_edges), peak_memory_mb.
+// Error(kFileNotFound) when the cadaver head is absent. Figures: preparation_seconds,
+// landmarks_by_hand, free_cavities, face_model (tets, nodes, cell_mm, seconds), published (label,
+// published, source, plausible_low/high), advancements_mm, runs (advancement_mm, model, title,
+// seconds; error when it failed, else iterations, points: label, present, forward_mm, ratio,
+// plausible; gradient_p999, gradient_max, moved_edges; boundary_move_mm, the largest move within
+// 5 mm inside each region plane: below the orbits, under the chin, in front of the ears;
+// fixed_nodes, prescribed_nodes), peak_memory_mb.
 Json run_face_realism_benchmark(const FaceRealismOptions& options);
 
 std::string face_realism_text(const Json& figures);

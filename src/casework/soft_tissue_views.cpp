@@ -12,7 +12,7 @@ namespace {
 
 constexpr std::array kViews = {render::StandardView::Frontal, render::StandardView::Lateral,
                                render::StandardView::Oblique};
-constexpr int kImagePixels = 640;
+constexpr int kSoftTissueViewPixels = 640;
 
 render::Bounds union_bounds(const TriangleMesh& a, const TriangleMesh& b) {
   render::Scene both;
@@ -39,7 +39,7 @@ SoftTissueViewFiles render_soft_tissue_views(const TriangleMesh& skin_before, co
   std::filesystem::create_directories(folder);
   const auto bounds = union_bounds(skin_before, prediction.skin_after);  // the same cameras for all
   render::RenderSettings settings;
-  settings.size = {kImagePixels, kImagePixels};
+  settings.size = {kSoftTissueViewPixels, kSoftTissueViewPixels};
 
   SoftTissueViewFiles files;
   render::VertexScalars magnitude;
@@ -84,7 +84,7 @@ std::vector<std::filesystem::path> render_uncertainty_views(const TriangleMesh& 
   render::Scene scene;
   scene.meshes.push_back({&skin_after, render::kSkinTone, 1.0, spread});
   render::RenderSettings settings;
-  settings.size = {kImagePixels, kImagePixels};
+  settings.size = {kSoftTissueViewPixels, kSoftTissueViewPixels};
   return pngs(render::render_view_files(scene, frame, views, folder, "soft-tissue-uncertainty-", settings));
 }
 

@@ -11,7 +11,7 @@
 namespace maxillo::casework {
 namespace {
 
-constexpr int kImagePixels = 900;
+constexpr int kValidationViewPixels = 900;
 constexpr double kFramingMarginMm = 15;
 
 // The faces whose three vertices satisfy `inside` (or, with inside == false, the others).
@@ -90,7 +90,7 @@ std::vector<std::filesystem::path> render_error_maps(const TriangleMesh& predict
   scene.meshes.push_back({&face, render::kSkinTone, 1.0, error});
   if (rest.face_count() > 0) scene.meshes.push_back({&rest, render::kSkinTone, 1.0, {}});
   render::RenderSettings settings;
-  settings.size = {kImagePixels, kImagePixels};
+  settings.size = {kValidationViewPixels, kValidationViewPixels};
   const std::array views{render::StandardView::Frontal, render::StandardView::Lateral, render::StandardView::Oblique};
   std::vector<std::filesystem::path> files;
   for (const auto& f : render::render_view_files(scene, frame, views, folder, "error-map-", settings,

@@ -4,6 +4,7 @@
 
 #include "geometry/mesh_measures.h"
 #include "softtissue/bone_attachment.h"
+#include "softtissue/boundary_move.h"
 #include "softtissue/cube_mesh.h"
 #include "softtissue/face_region.h"
 #include "softtissue/gaussian_mapping.h"
@@ -186,6 +187,24 @@ TEST(BoneAttachment, MovedBoneCarriesOnlyItsOuterSurface) {
   attached = attach_to_bone(outer, box, {{uint8_t(2), move}}, {}, outer_only);
   EXPECT_EQ(count_nodes(attached.bc, NodeConstraint::kPrescribed), 9);
   EXPECT_EQ(attached.inner_nodes, 0);
+}
+
+TEST(BoundaryMove, LargestMoveWithinTheBandInsideEachPlane) {
+  // The cube [0, 20]^3 (nodes every 5 mm) moving by u = (0, 0.1 x, 0): at the plane x = 20
+  // (kept side x < 20) the band of 5 mm holds the nodes at x = 15 and 20, so 2 mm; at x = 0
+  // (kept side x > 0) those at x = 0 and 5, so 0.5 mm; a plane beyond the cube sees none.
+  const auto mesh = cube(20, 4);
+  Eigen::MatrixX3d u = Eigen::MatrixX3d::Zero(mesh.node_count(), 3);
+  u.col(1) = 0.1 * mesh.nodes.col(0);
+  const std::vector<RegionPlane> planes{{Eigen::Vector3d(20, 0, 0), -Eigen::Vector3d::UnitX()},
+                                        {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d::UnitX()},
+                                        {Eigen::Vector3d(0, 0, 40), -Eigen::Vector3d::UnitZ()}};
+  const auto largest = largest_move_near_planes(mesh, u, planes, 5);
+  ASSERT_EQ(largest.size(), 3u);
+  EXPECT_NEAR(largest[0], 2.0, 1e-12);
+  EXPECT_NEAR(largest[1], 0.5, 1e-12);
+  EXPECT_EQ(largest[2], 0.0);
+  EXPECT_NEAR(largest_move_near_planes(mesh, u, planes, 2)[0], 2.0, 1e-12);  // x = 20 only
 }
 
 }  // namespace
