@@ -71,13 +71,17 @@ Json response_json(const casework::ProfileResponse& response) {
 }
 
 // One model on one advancement: the prediction's profile response, or the error it stopped with.
-Json run_model(const PreparedHead& head, const casework::FaceModel& face, double advancement_mm, SoftTissueModel model,
-               bool free_cavities) {
-  const auto plan = casework::le_fort_advancement_plan(advancement_mm);
+// The segment moves of a Le Fort I advancement on the head, as `plan apply` finds them.
+casework::SegmentMoves advancement_moves(const PreparedHead& head, double advancement_mm) {
   const auto applied =
-      planning::apply_plan(plan, head.tissues.segmentation, head.landmarks, planning::segmentation_anatomy_labels());
-  casework::SoftTissueInput input{&head.tissues.jaws, &head.cut.segments, &head.skin, head.landmarks,
-                                  casework::moves_by_segment(applied.moves)};
+      planning::apply_plan(casework::le_fort_advancement_plan(advancement_mm), head.tissues.segmentation,
+                           head.landmarks, planning::segmentation_anatomy_labels());
+  return casework::moves_by_segment(applied.moves);
+}
+
+Json run_model(const PreparedHead& head, const casework::FaceModel& face, double advancement_mm,
+               const casework::SegmentMoves& moves, SoftTissueModel model, bool free_cavities) {
+  casework::SoftTissueInput input{&head.tissues.jaws, &head.cut.segments, &head.skin, head.landmarks, moves};
   SoftTissueOptions options;
   options.model = model;
   options.attachment.outer_surface_only = free_cavities;
@@ -133,8 +137,10 @@ Json run_face_realism_benchmark(const FaceRealismOptions& options) {
                   {"published", published_json()},
                   {"advancements_mm", options.advancements_mm}};
   Json runs = Json::array();
-  for (double advancement : options.advancements_mm)
-    for (auto model : kModels) runs.push_back(run_model(head, face, advancement, model, options.free_cavities));
+  for (double advancement : options.advancements_mm) {
+    const auto moves = advancement_moves(head, advancement);  // once for every model
+    for (auto model : kModels) runs.push_back(run_model(head, face, advancement, moves, model, options.free_cavities));
+  }
   figures["runs"] = runs;
   figures["peak_memory_mb"] = double(peak_memory_kb()) / 1024.0;
   return figures;

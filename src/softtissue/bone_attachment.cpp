@@ -8,47 +8,49 @@
 namespace maxillo::softtissue {
 namespace {
 
-// The segment label of the nearest bone voxel within `reach` mm of p, or 0.
-uint8_t nearest_segment(const LabelVolume& segments, const Eigen::Vector3d& p, double reach) {
+// Calls visit(label, centre, squared distance) for every bone voxel (non-zero label) whose
+// centre lies within `reach` mm of p.
+template <typename Visit>
+void for_each_bone_voxel_near(const LabelVolume& segments, const Eigen::Vector3d& p, double reach, Visit visit) {
   const auto& g = segments.geometry;
   const Eigen::Vector3d centre = g.continuous_index(p);
   const Eigen::Vector3i radius = (Eigen::Vector3d::Constant(reach).cwiseQuotient(g.spacing)).array().ceil().cast<int>();
   const Eigen::Vector3i lo = (centre.array().floor().cast<int>() - radius.array()).matrix();
   const Eigen::Vector3i hi = (centre.array().ceil().cast<int>() + radius.array()).matrix();
-  double best = reach * reach;
-  uint8_t found = 0;
   for (int k = lo.z(); k <= hi.z(); ++k)
     for (int j = lo.y(); j <= hi.y(); ++j)
       for (int i = lo.x(); i <= hi.x(); ++i) {
         if (!g.contains(i, j, k)) continue;
         const uint8_t s = segments.labels[size_t(g.index(i, j, k))];
         if (!s) continue;
-        const double d2 = (g.world(Eigen::Vector3d(i, j, k)) - p).squaredNorm();
-        if (d2 <= best) {
-          best = d2;
-          found = s;
-        }
+        const Eigen::Vector3d q = g.world(Eigen::Vector3d(i, j, k));
+        const double d2 = (q - p).squaredNorm();
+        if (d2 <= reach * reach) visit(s, q, d2);
       }
+}
+
+// The segment label of the nearest bone voxel within `reach` mm of p, or 0.
+uint8_t nearest_segment(const LabelVolume& segments, const Eigen::Vector3d& p, double reach) {
+  double best = reach * reach;
+  uint8_t found = 0;
+  for_each_bone_voxel_near(segments, p, reach, [&](uint8_t s, const Eigen::Vector3d&, double d2) {
+    if (d2 <= best) {
+      best = d2;
+      found = s;
+    }
+  });
   return found;
 }
 
 // The direction away from the bone near p: from the centroid of the bone voxels within `reach`
 // mm (steadier than the nearest voxel's direction on a staircase surface); zero without bone.
 Eigen::Vector3d away_from_bone(const LabelVolume& segments, const Eigen::Vector3d& p, double reach) {
-  const auto& g = segments.geometry;
-  const Eigen::Vector3d centre = g.continuous_index(p);
-  const Eigen::Vector3i radius = (Eigen::Vector3d::Constant(reach).cwiseQuotient(g.spacing)).array().ceil().cast<int>();
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   int count = 0;
-  for (int k = int(std::floor(centre.z())) - radius.z(); k <= int(std::ceil(centre.z())) + radius.z(); ++k)
-    for (int j = int(std::floor(centre.y())) - radius.y(); j <= int(std::ceil(centre.y())) + radius.y(); ++j)
-      for (int i = int(std::floor(centre.x())) - radius.x(); i <= int(std::ceil(centre.x())) + radius.x(); ++i) {
-        if (!g.contains(i, j, k) || !segments.labels[size_t(g.index(i, j, k))]) continue;
-        const Eigen::Vector3d q = g.world(Eigen::Vector3d(i, j, k));
-        if ((q - p).squaredNorm() > reach * reach) continue;
-        sum += q;
-        ++count;
-      }
+  for_each_bone_voxel_near(segments, p, reach, [&](uint8_t, const Eigen::Vector3d& q, double) {
+    sum += q;
+    ++count;
+  });
   if (!count) return Eigen::Vector3d::Zero();
   const Eigen::Vector3d away = p - sum / count;
   return away.norm() > 1e-9 ? away.normalized() : Eigen::Vector3d::Zero();
