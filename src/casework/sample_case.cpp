@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "core/progress.h"
+#include "sample/phantom_variation.h"
 
 namespace maxillo::casework {
 namespace {
@@ -44,30 +45,41 @@ std::string_view name_of(SkeletalClass skeletal_class) {
   return "?";
 }
 
-SeriesMetadata phantom_series_metadata(const PhantomSpec& spec, SkeletalClass skeletal_class,
-                                       const std::string& patient_id) {
+PhantomSpec SampleRequest::phantom_spec() const {
+  const ScannerKind scanner = cone_beam ? ScannerKind::kConeBeam : ScannerKind::kCt;
+  if (varied) return varied_phantom_spec(patient_id, scanner, spacing_mm);
+  PhantomSpec spec = phantom_spec_for_class(skeletal_class);
+  spec.spacing_mm = spacing_mm;
+  if (cone_beam) spec.cone_beam = ConeBeamFlavour{};
+  return spec;
+}
+
+std::string SampleRequest::series_description() const {
+  char description[96];
+  const std::string anatomy = varied ? "varied patient" : "skeletal Class " + std::string(name_of(skeletal_class));
+  std::snprintf(description, sizeof description, "Phantom %s %.2f mm, %s", cone_beam ? "cone-beam CT" : "CT",
+                spacing_mm, anatomy.c_str());
+  return description;
+}
+
+SeriesMetadata phantom_series_metadata(const SampleRequest& request) {
   SeriesMetadata metadata;
   metadata.patient_name = "Phantom^Maxillo";
-  metadata.patient_id = patient_id;
+  metadata.patient_id = request.patient_id;
   metadata.patient_sex = "O";
   metadata.study_date = "20240521";
   metadata.study_description = "Synthetic craniofacial phantom";
-  char description[96];
-  std::snprintf(description, sizeof description, "Phantom CT %.2f mm, skeletal Class %s", spec.spacing_mm,
-                std::string(name_of(skeletal_class)).c_str());
-  metadata.series_description = description;
+  metadata.series_description = request.series_description();
   // UIDs derived from the description: the same phantom is the same scan, so regenerating it
   // re-imports as "already archived" instead of piling up copies.
-  const std::string patient = patient_id == kPhantomPatientId ? "" : " of " + patient_id;
+  const std::string patient = request.patient_id == kPhantomPatientId ? "" : " of " + request.patient_id;
   metadata.study_instance_uid = derived_uid("maxillo phantom study" + patient);
-  metadata.series_instance_uid = derived_uid(std::string("maxillo phantom series: ") + description + patient);
+  metadata.series_instance_uid = derived_uid("maxillo phantom series: " + metadata.series_description + patient);
   return metadata;
 }
 
-SampleCase write_sample_case(SkeletalClass skeletal_class, double spacing_mm, const fs::path& out_dir,
-                             const std::string& patient_id) {
-  PhantomSpec spec = phantom_spec_for_class(skeletal_class);
-  spec.spacing_mm = spacing_mm;
+SampleCase write_sample_case(const SampleRequest& request, const fs::path& out_dir) {
+  const PhantomSpec spec = request.phantom_spec();
   std::error_code error;
   fs::create_directories(out_dir, error);
   if (error) throw Error(ErrorCode::kWriteFailed, out_dir.string(), "cannot create the folder: " + error.message());
@@ -75,8 +87,9 @@ SampleCase write_sample_case(SkeletalClass skeletal_class, double spacing_mm, co
   Progress progress("sample", 3);
   const Phantom phantom = make_phantom(spec);
   progress.advance();
-  const SeriesMetadata metadata = phantom_series_metadata(spec, skeletal_class, patient_id);
+  const SeriesMetadata metadata = phantom_series_metadata(request);
   log::debug("sample: patient '", metadata.patient_name, "' id '", metadata.patient_id, "'");
+  if (request.varied) log::debug("sample: ", describe_variation(spec));
   SampleCase sample;
   sample.ct_folder = out_dir / "ct";
   sample.series = write_series_replacing(phantom.ct, metadata, sample.ct_folder);
@@ -89,7 +102,14 @@ SampleCase write_sample_case(SkeletalClass skeletal_class, double spacing_mm, co
   progress.finish();
   sample.landmarks = phantom.landmarks;
   sample.geometry = phantom.ct.geometry;
+  sample.spec = spec;
   return sample;
+}
+
+SampleCase write_sample_case(SkeletalClass skeletal_class, double spacing_mm, const fs::path& out_dir,
+                             const std::string& patient_id) {
+  return write_sample_case(
+      SampleRequest{.skeletal_class = skeletal_class, .spacing_mm = spacing_mm, .patient_id = patient_id}, out_dir);
 }
 
 }  // namespace maxillo::casework

@@ -1,6 +1,9 @@
-// maxillo sample --out DIR [--spacing MM] [--class I|II|III] [--patient-id ID]: writes the synthetic craniofacial
-// phantom as a DICOM CT series (DIR/ct/) with its analytic landmarks (DIR/landmarks.mrk.json,
-// DIR/landmarks.csv; LPS mm). The repository ships no DICOM: this regenerates it in seconds.
+// maxillo sample --out DIR [--spacing MM] [--class I|II|III] [--patient-id ID] [--vary] [--cbct]: writes the
+// synthetic craniofacial phantom as a DICOM CT series (DIR/ct/) with its analytic landmarks
+// (DIR/landmarks.mrk.json, DIR/landmarks.csv; LPS mm). The repository ships no DICOM: this
+// regenerates it in seconds. --vary draws the anatomy, pose and noise from the Patient ID (another
+// patient per ID); --cbct gives the scan a cone-beam scanner's grey values, cupping, metal streaks
+// and cut field.
 // The work is pipeline::write_sample_case (shared with `maxillo demo`).
 #include <iostream>
 #include <map>
@@ -8,26 +11,27 @@
 #include "cli/command.h"
 #include "core/json.h"
 #include "casework/sample_case.h"
+#include "sample/phantom_variation.h"
 
 namespace maxillo::cli {
 namespace {
 
 struct SampleOptions {
   std::filesystem::path out;
-  double spacing_mm = 1.0;
-  SkeletalClass skeletal_class = SkeletalClass::I;
-  std::string patient_id = casework::kPhantomPatientId;
+  casework::SampleRequest request;
 };
 
 void run_sample(const SampleOptions& options, CommandContext& ctx) {
-  const casework::SampleCase sample =
-      casework::write_sample_case(options.skeletal_class, options.spacing_mm, options.out, options.patient_id);
-  const PhantomSpec spec = phantom_spec_for_class(options.skeletal_class);
+  const casework::SampleRequest& request = options.request;
+  const casework::SampleCase sample = casework::write_sample_case(request, options.out);
+  const PhantomSpec& spec = sample.spec;
   const VolumeGeometry& g = sample.geometry;
-  const std::string class_name(casework::name_of(options.skeletal_class));
+  const std::string class_name(request.varied ? "varied" : casework::name_of(request.skeletal_class));
   if (ctx.global.json) {
     Json result = {{"folder", options.out.string()},
                    {"skeletal_class", class_name},
+                   {"series_description", request.series_description()},
+                   {"variation", request.varied ? describe_variation(spec) : ""},
                    {"maxillary_advancement_mm", spec.maxillary_advancement_mm},
                    {"mandibular_protrusion_mm", spec.mandibular_protrusion_mm},
                    {"ct",
@@ -45,9 +49,10 @@ void run_sample(const SampleOptions& options, CommandContext& ctx) {
     std::cout << result.dump(2) << "\n";
     return;
   }
-  std::cout << "wrote " << sample.series.files.size() << " CT slices of " << g.size.x() << " x " << g.size.y() << " ("
-            << g.spacing.x() << " mm, skeletal Class " << class_name << ") to " << sample.ct_folder.string() << "\n"
-            << "wrote " << sample.landmarks.size() << " landmarks (LPS mm) to " << sample.markups_file.string()
+  std::cout << "wrote " << sample.series.files.size() << " slices of " << g.size.x() << " x " << g.size.y() << " ("
+            << request.series_description() << ") to " << sample.ct_folder.string() << "\n";
+  if (request.varied) std::cout << "drawn from the Patient ID: " << describe_variation(spec) << "\n";
+  std::cout << "wrote " << sample.landmarks.size() << " landmarks (LPS mm) to " << sample.markups_file.string()
             << " and " << sample.csv_file.string() << "\n";
 }
 
@@ -56,17 +61,21 @@ void run_sample(const SampleOptions& options, CommandContext& ctx) {
 void attach_sample(CLI::App& app, CommandContext& ctx) {
   auto options = std::make_shared<SampleOptions>();
   app.add_option("--out", options->out, "output folder (created): ct/, landmarks.mrk.json, landmarks.csv")->required();
-  app.add_option("--spacing", options->spacing_mm, "isotropic voxel spacing in mm (0.25 to 4)")
+  app.add_option("--spacing", options->request.spacing_mm, "isotropic voxel spacing in mm (0.25 to 4)")
       ->check(CLI::Range(0.25, 4.0))
       ->capture_default_str();
   static const std::map<std::string, SkeletalClass> classes = {
       {"I", SkeletalClass::I}, {"II", SkeletalClass::II}, {"III", SkeletalClass::III}};
   app.add_option_function<std::string>(
-         "--class", [options](const std::string& name) { options->skeletal_class = classes.at(name); },
+         "--class", [options](const std::string& name) { options->request.skeletal_class = classes.at(name); },
          "skeletal class: I (ANB 2 deg, default), II (ANB ~5) or III (ANB ~-3)")
       ->check(CLI::IsMember({"I", "II", "III"}));
-  app.add_option("--patient-id", options->patient_id, "Patient ID of the phantom (another ID: another patient)")
-      ->capture_default_str();
+  app.add_option("--patient-id", options->request.patient_id, "Patient ID of the phantom")->capture_default_str();
+  app.add_flag(
+      "--vary", options->request.varied,
+      "draw the anatomy (size, jaws), the pose and the noise from the Patient ID: another ID, another patient");
+  app.add_flag("--cbct", options->request.cone_beam,
+               "a cone-beam scan: grey values that are not HU, cupping, metal streaks, a cut field of view");
   app.callback([options, &ctx] { run_sample(*options, ctx); });
 }
 

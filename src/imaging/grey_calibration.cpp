@@ -17,11 +17,23 @@ struct Histogram {
   double centre(size_t bin) const { return low + (double(bin) + 0.5) * width; }
 };
 
+// A scanner fills what it did not reconstruct (a cone-beam scan's corners outside its cylinder,
+// a CT's outside its circle) with one value at or below air's. That value is a spike at the
+// bottom of the histogram, no tissue (tissue is noisy): it is left out, or it would be taken for air.
+void leave_out_padding(std::vector<int64_t>& full, int64_t total) {
+  size_t lowest = 0;
+  while (lowest + 1 < full.size() && full[lowest] == 0) ++lowest;
+  const int64_t next_up = lowest + 1 < full.size() ? full[lowest + 1] : 0;
+  if (full[lowest] > total / 50 && full[lowest] > 20 * next_up) full[lowest] = 0;
+}
+
 // Counts over the central 99.8 % of values, smoothed over 5 bins so that noise makes no peaks.
 Histogram histogram_of(const Volume& volume) {
   std::vector<int64_t> full(65536, 0);
   for (int16_t v : volume.hu) ++full[size_t(int(v) + 32768)];
-  const int64_t total = int64_t(volume.hu.size());
+  leave_out_padding(full, int64_t(volume.hu.size()));
+  int64_t total = 0;
+  for (int64_t count : full) total += count;
   auto percentile = [&](double share) {
     int64_t seen = 0;
     for (size_t v = 0; v < full.size(); ++v)

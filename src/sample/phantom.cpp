@@ -3,6 +3,7 @@
 #include <cassert>
 #include <cmath>
 
+#include "sample/phantom_cone_beam.h"
 #include "sample/phantom_landmarks.h"
 #include "sample/phantom_voxelize.h"
 
@@ -23,6 +24,49 @@ VolumeGeometry phantom_grid(double spacing) {
                       int(std::floor((kMaxZ - kMinZ) / spacing)) + 1);
   g.origin = Eigen::Vector3d(-(g.size.x() - 1) / 2 * spacing, kMinY, kMinZ);
   return g;
+}
+
+// The designed field of view as it lies in the scanner: the bounding box of the placed box.
+VolumeGeometry placed_grid(double spacing, const PhantomPlacement& placement) {
+  if (placement.is_identity()) return phantom_grid(spacing);
+  const VolumeGeometry designed = phantom_grid(spacing);
+  const Eigen::Vector3d far = designed.world(designed.size.cast<double>() - Eigen::Vector3d::Ones());
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e9), hi = -lo;
+  for (int corner = 0; corner < 8; ++corner) {
+    const Eigen::Vector3d c(corner & 1 ? far.x() : designed.origin.x(), corner & 2 ? far.y() : designed.origin.y(),
+                            corner & 4 ? far.z() : designed.origin.z());
+    lo = lo.cwiseMin(placement.to_scanner(c));
+    hi = hi.cwiseMax(placement.to_scanner(c));
+  }
+  VolumeGeometry g;
+  g.spacing = Eigen::Vector3d::Constant(spacing);
+  for (int axis = 0; axis < 3; ++axis) g.size[axis] = int(std::floor((hi[axis] - lo[axis]) / spacing)) + 1;
+  g.origin = lo;
+  return g;
+}
+
+VolumeGeometry scanned_grid(const PhantomSpec& spec) {
+  return spec.cone_beam ? sample::cone_beam_grid(*spec.cone_beam, spec.spacing_mm)
+                        : placed_grid(spec.spacing_mm, spec.placement);
+}
+
+sample::PartList scanned_parts(const sample::PhantomDesign& design, const PhantomSpec& spec) {
+  sample::PartList parts = sample::build_phantom_parts(design);
+  if (spec.cone_beam && spec.cone_beam->metal_fillings) sample::add_amalgam_fillings(design, parts);
+  if (spec.placement.is_identity()) return parts;
+  for (auto& part : parts) part = sample::placed(spec.placement, std::move(part));
+  return parts;
+}
+
+// The designed landmarks where the placed head has them, less those outside a cone-beam field
+// (a scan without them: the truth is "absent").
+LandmarkSet scanned_landmarks(const sample::PhantomDesign& design, const PhantomSpec& spec) {
+  LandmarkSet scanned;
+  for (auto l : sample::phantom_landmarks(design, sample::build_phantom_parts(design))) {
+    l.position = spec.placement.to_scanner(l.position);
+    if (!spec.cone_beam || spec.cone_beam->reconstructs(l.position)) scanned.push_back(l);
+  }
+  return scanned;
 }
 
 }  // namespace
@@ -60,18 +104,16 @@ Phantom make_phantom(const PhantomSpec& spec) {
   assert(std::abs(spec.mandibular_protrusion_mm) <= 12 && std::abs(spec.maxillary_advancement_mm) <= 12 &&
          "phantom displacements beyond 12 mm are not modelled");
   const sample::PhantomDesign design = sample::make_design(spec);
-  const sample::PartList parts = sample::build_phantom_parts(design);
-  sample::PaintedGrid grid = sample::paint_parts(parts, phantom_grid(spec.spacing_mm));
+  sample::PaintedGrid grid = sample::paint_parts(scanned_parts(design, spec), scanned_grid(spec));
   Phantom phantom;
   phantom.ct = sample::compute_ct(grid, spec);
   phantom.labels = LabelVolume{grid.geometry, std::move(grid.tissue)};
-  phantom.landmarks = sample::phantom_landmarks(design, parts);
+  phantom.landmarks = scanned_landmarks(design, spec);
   return phantom;
 }
 
 LandmarkSet make_phantom_landmarks(const PhantomSpec& spec) {
-  const sample::PhantomDesign design = sample::make_design(spec);
-  return sample::phantom_landmarks(design, sample::build_phantom_parts(design));
+  return scanned_landmarks(sample::make_design(spec), spec);
 }
 
 }  // namespace maxillo

@@ -8,10 +8,14 @@ namespace {
 
 // Orbit (left): an elliptic cone from the opening (centre, half width, half height) back to the
 // apex; in front of the opening it continues as a cylinder so the rim is where it meets bone.
-// The opening's lowest point is at z = 0: the infraorbital margin, where Or lies.
+// The opening's lowest point is at z = 0: the infraorbital margin, where Or lies. The outline
+// holds for kOrbitRimDepth behind the opening (an orbit is widest just behind its margin), so
+// the margin where the cavity meets the face (about 3 mm behind the opening at x = 33) has its
+// lowest point at (33, z = 0) exactly, where phantom_landmarks.cpp places Or.
 const Vector3d kOrbitOpening = lps(33, 60, 17.5);
 const Vector3d kOrbitApex = lps(14, 15, 15);
 constexpr double kOrbitHalfWidth = 20, kOrbitHalfHeight = 17.5;
+constexpr double kOrbitRimDepth = 6;
 const Vector3d kEyeCentre = lps(33, 50, 17.5);
 constexpr double kEyeRadius = 12;
 // Nasal cavity: width tapers from the floor (|x| < 12.5) to the roof (|x| < 5); from the
@@ -32,8 +36,8 @@ const Vector3d kJointCentre = lps(50, -8, -4.5);
 const Vector3d kJointSemiAxes{12, 7, 6.5};
 
 bool in_orbit(const Vector3d& p) {
-  double a = anterior(p), depth = anterior(kOrbitOpening) - anterior(kOrbitApex);
-  double t = std::max(0.0, (anterior(kOrbitOpening) - a) / depth);
+  double a = anterior(p), depth = anterior(kOrbitOpening) - kOrbitRimDepth - anterior(kOrbitApex);
+  double t = std::max(0.0, (anterior(kOrbitOpening) - kOrbitRimDepth - a) / depth);
   if (t > 1) return false;
   Vector3d centre = kOrbitOpening + t * (kOrbitApex - kOrbitOpening);
   double scale = 1 - 0.9 * std::pow(t, 1.2);

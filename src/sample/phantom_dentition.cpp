@@ -34,6 +34,17 @@ constexpr std::array<ToothDims, 7> kLowerTeeth = {{{5.0, 9.0, 6.0, 12.5, 1, 20, 
                                                    {11.0, 7.5, 10.5, 14, 2, 0, 0},
                                                    {10.5, 7.0, 10.0, 13, 2, 0, 0}}};
 constexpr double kFossaDepth = 1.0;  // central fossa below the cusp tips (mm)
+// How far the lower central incisors' edges may come forward of their Class I place before they
+// would run into the upper ones (overjet about 3 mm less the upper edges' thickness).
+constexpr double kIncisorClearanceMm = 0.5;
+
+// A mandible brought forward of the maxilla beyond the clearance carries its central incisors
+// into the upper ones. Patients compensate (the lower incisors stand more upright, Class III
+// dento-alveolar compensation): the crown is tipped lingually about the root apex by as much
+// as the excess, so that the incisors keep their overlap and never pass through each other.
+double lingual_tip_of_lower_incisors(const PhantomDesign& design) {
+  return std::max(0.0, design.mandible_shift - design.maxilla_shift - kIncisorClearanceMm);
+}
 
 // Point and unit tangent (distal) of the arch at arc length s from the midline, left side.
 void arch_point(const ArchShape& arch, double s, Vector2d& point, Vector2d& tangent) {
@@ -92,9 +103,22 @@ Dentition::Dentition(const PhantomDesign& design) : design_(design) {
         if (outward.dot(lps(-sign * tangent.y(), tangent.x(), 0)) < 0) outward = -outward;
         // Torque: the root tips lingually (crown labially) by torque_deg.
         Vector3d apical = std::cos(d.torque_deg * kDeg) * occlusal - std::sin(d.torque_deg * kDeg) * outward;
+        Vector3d edge = lps(x, a, z);
+        double root_length = d.root_length;
+        if (jaw == Jaw::kLower && i == 0) {
+          // Tipped about the apex; the edge keeps its height (the root is a little shorter).
+          const double length = d.crown_height + d.root_length, tip = lingual_tip_of_lower_incisors(design);
+          const Vector3d apex = edge + length * apical;
+          const double rise = length * std::cos(d.torque_deg * kDeg);  // apex to edge along the occlusal normal
+          const double torque = std::atan(std::tan(d.torque_deg * kDeg) - tip / rise) / kDeg;
+          apical = std::cos(torque * kDeg) * occlusal - std::sin(torque * kDeg) * outward;
+          const double kept = rise / std::cos(torque * kDeg);
+          edge = apex - kept * apical;
+          root_length -= length - kept;
+        }
         Vector3d buccal = (outward - apical * apical.dot(outward)).normalized();
-        teeth_.push_back(Tooth{jaw, side, i + 1, lps(x, a, z), distal, buccal, apical.normalized(), occlusal, d.width,
-                               d.crown_height, d.thickness, d.root_length, d.roots, i >= 3, i >= 1});
+        teeth_.push_back(Tooth{jaw, side, i + 1, edge, distal, buccal, apical.normalized(), occlusal, d.width,
+                               d.crown_height, d.thickness, root_length, d.roots, i >= 3, i >= 1});
       }
     }
   }
@@ -207,6 +231,26 @@ void add_dentition_parts(const PhantomDesign& design, PartList& parts) {
                      [dentition, tooth](const Vector3d& p) { return dentition->inside(*tooth, ToothPart::kRoot, p); },
                      tissue, Material::kDentine, over});
   }
+}
+
+void add_amalgam_fillings(const PhantomDesign& design, PartList& parts) {
+  auto dentition = std::make_shared<Dentition>(design);
+  for (Jaw jaw : {Jaw::kUpper, Jaw::kLower})
+    for (Side side : {Side::kRight, Side::kLeft}) {
+      const Tooth* tooth = &dentition->tooth(jaw, side, 6);
+      // A class I cavity: an ellipsoid under the central fossa, 3.5 mm mesio-distally,
+      // 2.5 mm bucco-lingually, 2 mm deep, inside the crown only (the cusp tips stay enamel).
+      const Vector3d centre = tooth->origin + 1.2 * tooth->apical;
+      auto inside = [dentition, tooth, jaw, centre](const Vector3d& p) {
+        const Vector3d q = dentition->reference_of(jaw, p) - centre;
+        const Vector3d local(q.dot(tooth->mesiodistal) / 1.75, q.dot(tooth->buccal) / 1.25, q.dot(tooth->apical) / 1.0);
+        return local.squaredNorm() < 1 && dentition->inside(*tooth, ToothPart::kCrown, p);
+      };
+      double shift = std::abs(jaw == Jaw::kUpper ? design.maxilla_shift : design.mandible_shift) + 3;
+      const Tissue tissue = jaw == Jaw::kUpper ? Tissue::kUpperTooth : Tissue::kLowerTooth;
+      parts.push_back({"amalgam filling", Box::around(centre, Vector3d::Constant(shift)), inside, tissue,
+                       Material::kAmalgam, mask_of(tissue)});
+    }
 }
 
 }  // namespace maxillo::sample

@@ -55,11 +55,12 @@ class Dentition {
   // Landmarks on the displaced anatomy.
   Vector3d incisal_edge_centre(Jaw jaw, Side side) const;   // central incisor (U1, L1)
   Vector3d mesiobuccal_cusp_tip(Jaw jaw, Side side) const;  // first molar (U6, L6)
+  // The reference-anatomy point that the jaw's displacement carries to p.
+  Vector3d reference_of(Jaw jaw, const Vector3d& p) const;
 
  private:
   bool inside_reference(const Tooth& tooth, ToothPart part, const Vector3d& p) const;
   Vector3d displaced(Jaw jaw, const Vector3d& reference) const;
-  Vector3d reference_of(Jaw jaw, const Vector3d& p) const;
 
   PhantomDesign design_;
   std::vector<Tooth> teeth_;

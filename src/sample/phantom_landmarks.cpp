@@ -31,6 +31,24 @@ Vector3d first_hit(const PartList& parts, Tissue tissue, const Vector3d& outside
 
 Vector3d mirrored(const Vector3d& p) { return {-p.x(), p.y(), p.z()}; }
 
+// Subnasale, where the columella meets the upper lip: the bottom of the skin's concavity between
+// pronasale and labrale superius, the midline point farthest behind the line joining them
+// (sampled every 0.01 mm of height). The lip below is nearly upright, so "the deepest point"
+// along one axis would depend on the head's pitch; the depth behind that line does not.
+Vector3d subnasale(const SkinProfile& skin) {
+  const Eigen::Vector2d prn(kPronasaleHeight, skin.midline(kPronasaleHeight));
+  const Eigen::Vector2d ls(kLabraleSuperiusHeight, skin.midline(kLabraleSuperiusHeight));
+  const Eigen::Vector2d along = (prn - ls).normalized();
+  double deepest = -1, best_z = kSubnasaleHeight;
+  for (double z = ls.x(); z <= prn.x(); z += 0.01) {
+    const Eigen::Vector2d p(z, skin.midline(z));
+    const Eigen::Vector2d off = p - ls;
+    const double behind = along.x() * off.y() - along.y() * off.x();  // towards smaller a: behind the line
+    if (-behind > deepest) deepest = -behind, best_z = z;
+  }
+  return lps(0, skin.midline(best_z), best_z);
+}
+
 }  // namespace
 
 LandmarkSet phantom_landmarks(const PhantomDesign& d, const PartList& parts) {
@@ -66,7 +84,7 @@ LandmarkSet phantom_landmarks(const PhantomDesign& d, const PartList& parts) {
   add("L6R", teeth.mesiobuccal_cusp_tip(Jaw::kLower, Side::kRight));
   add("L6L", teeth.mesiobuccal_cusp_tip(Jaw::kLower, Side::kLeft));
   add("Prn", skin_point(kPronasaleHeight));
-  add("Sn", skin_point(kSubnasaleHeight));
+  add("Sn", subnasale(skin));
   add("Ls", skin_point(kLabraleSuperiusHeight));
   add("Li", skin_point(kLabraleInferiusHeight));
   add("PogS", skin_point(d.from_mandible_reference(d.Pog).z()));

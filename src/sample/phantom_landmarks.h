@@ -10,7 +10,7 @@
 //   U1/L1 incisal edge centre of the patient's right central incisors
 //   U6R/U6L/L6R/L6L mesio-buccal cusp tips of the first molars
 //   soft tissue on the skin, mid-sagittal: NS (soft nasion, 6 mm in front of N), Prn (pronasale),
-//   Sn (subnasale), Ls/Li (labrale superius/inferius), PogS (soft pogonion, 11 mm in front of Pog).
+//   Sn (subnasale: the bottom of the concavity behind the line Prn-Ls), Ls/Li (labrale superius/inferius), PogS (soft pogonion, 11 mm in front of Pog).
 // Right = patient right = -x.
 #include "ceph/landmark.h"
 #include "sample/phantom_parts.h"

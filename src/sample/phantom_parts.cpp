@@ -30,6 +30,24 @@ Part with_mandible(const PhantomDesign& design, Part part) {
   return part;
 }
 
+Part placed(const PhantomPlacement& placement, Part part) {
+  // The designed box stays part of the test: some parts (the table) are their box.
+  auto inside = std::move(part.inside);
+  part.inside = [placement, inside, designed = part.box](const Vector3d& p) {
+    const Vector3d q = placement.to_anatomy(p);
+    return designed.contains(q) && inside(q);
+  };
+  Box box{placement.to_scanner(part.box.lo), placement.to_scanner(part.box.lo)};
+  for (int corner = 1; corner < 8; ++corner) {
+    const Vector3d c((corner & 1 ? part.box.hi : part.box.lo).x(), (corner & 2 ? part.box.hi : part.box.lo).y(),
+                     (corner & 4 ? part.box.hi : part.box.lo).z());
+    const Vector3d p = placement.to_scanner(c);
+    box = box.united({p, p});
+  }
+  part.box = box;
+  return part;
+}
+
 PartList build_phantom_parts(const PhantomDesign& design) {
   PartList parts;
   add_soft_tissue_parts(design, parts);

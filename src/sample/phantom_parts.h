@@ -14,7 +14,19 @@ namespace maxillo::sample {
 
 // What a voxel is made of; decides its HU (phantom_hu.cpp). Bone's cortical/cancellous split
 // is made later from the distance to the bone surface.
-enum class Material : uint8_t { kAir, kFat, kSoft, kBrain, kVitreous, kBone, kEnamel, kDentine, kHeadRest, kTable };
+enum class Material : uint8_t {
+  kAir,
+  kFat,
+  kSoft,
+  kBrain,
+  kVitreous,
+  kBone,
+  kEnamel,
+  kDentine,
+  kHeadRest,
+  kTable,
+  kAmalgam  // metal fillings (the cone-beam flavour's)
+};
 
 using TissueMask = uint16_t;
 constexpr TissueMask mask_of(Tissue t) { return TissueMask(1u << unsigned(t)); }
@@ -52,6 +64,10 @@ void add_mandible_parts(const PhantomDesign& design, PartList& parts);
 void add_neck_parts(const PhantomDesign& design, PartList& parts);
 void add_dentition_parts(const PhantomDesign& design, PartList& parts);
 void add_support_parts(const PhantomDesign& design, PartList& parts);
+// An occlusal amalgam filling in each first molar's crown (after the teeth).
+void add_amalgam_fillings(const PhantomDesign& design, PartList& parts);
+// The part as it lies in the scanner: queries mapped back to the anatomy frame, box widened.
+Part placed(const PhantomPlacement& placement, Part part);
 
 // Anterior coordinate of the nasal bones' outer surface at (x, z) (shared by the nasal cavity).
 double nasal_bone_front(const PhantomDesign& design, double x, double z);

@@ -1,6 +1,7 @@
 #include "sample/phantom_voxelize.h"
 
 #include "core/parallel_slabs.h"
+#include "sample/phantom_cone_beam.h"
 
 #include <algorithm>
 #include <cmath>
@@ -32,6 +33,7 @@ void paint_part(const Part& part, PaintedGrid& grid) {
 }
 
 // City-block distance (in voxels, capped at 255) from each bone voxel to the nearest non-bone voxel.
+// The grid's border is no surface: bone cut by a small field (a cone-beam scan's) goes on beyond it.
 std::vector<uint8_t> bone_depth(const PaintedGrid& grid) {
   const Eigen::Vector3i n = grid.geometry.size;
   std::vector<uint8_t> depth(grid.material.size());
@@ -43,26 +45,18 @@ std::vector<uint8_t> bone_depth(const PaintedGrid& grid) {
       for (int i = 0; i < n.x(); ++i) {
         int64_t v = grid.geometry.index(i, j, k);
         if (!depth[v]) continue;
-        if (i == 0 || j == 0 || k == 0) {
-          depth[v] = 1;
-          continue;
-        }
-        relax(v, v - sx);
-        relax(v, v - sy);
-        relax(v, v - sz);
+        if (i > 0) relax(v, v - sx);
+        if (j > 0) relax(v, v - sy);
+        if (k > 0) relax(v, v - sz);
       }
   for (int k = n.z() - 1; k >= 0; --k)  // backward pass
     for (int j = n.y() - 1; j >= 0; --j)
       for (int i = n.x() - 1; i >= 0; --i) {
         int64_t v = grid.geometry.index(i, j, k);
         if (!depth[v]) continue;
-        if (i == n.x() - 1 || j == n.y() - 1 || k == n.z() - 1) {
-          depth[v] = 1;
-          continue;
-        }
-        relax(v, v + sx);
-        relax(v, v + sy);
-        relax(v, v + sz);
+        if (i < n.x() - 1) relax(v, v + sx);
+        if (j < n.y() - 1) relax(v, v + sy);
+        if (k < n.z() - 1) relax(v, v + sz);
       }
   return depth;
 }
@@ -79,6 +73,7 @@ float material_hu(Material m) {
     case Material::kDentine: return 1900;
     case Material::kHeadRest: return 60;
     case Material::kTable: return 150;
+    case Material::kAmalgam: return 20000;  // far beyond the scale: saturated (3071) after blur and cupping
   }
   return 0;
 }
@@ -142,9 +137,15 @@ Volume compute_ct(const PaintedGrid& grid, const PhantomSpec& spec) {
   if (spec.partial_volume == PartialVolume::Blurred)
     for (int axis = 0; axis < 3; ++axis) blur_axis(hu, grid.geometry, axis);
 
+  if (spec.cone_beam) {
+    add_cupping(hu, grid.geometry, *spec.cone_beam);
+    if (spec.cone_beam->metal_fillings) add_metal_streaks(hu, grid, *spec.cone_beam);
+  }
   if (spec.noise_sigma_hu > 0) add_noise(hu, grid.geometry, spec.noise_sigma_hu, spec.noise_seed);
+  for (float& value : hu) value = std::clamp(value, -1024.0f, 3071.0f);  // the scanner's range
+  if (spec.cone_beam) to_cone_beam_grey(hu, grid.geometry, *spec.cone_beam);
   Volume ct{grid.geometry, std::vector<int16_t>(hu.size())};
-  for (size_t v = 0; v < hu.size(); ++v) ct.hu[v] = int16_t(std::clamp(std::lround(hu[v]), -1024L, 3071L));
+  for (size_t v = 0; v < hu.size(); ++v) ct.hu[v] = int16_t(std::clamp(std::lround(hu[v]), -32768L, 32767L));
   return ct;
 }
 

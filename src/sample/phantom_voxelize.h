@@ -21,7 +21,8 @@ PaintedGrid paint_parts(const PartList& parts, const VolumeGeometry& geometry);
 // bone cancellous (450 HU); enamel 2800, dentine 1900, soft tissue 40, fat -90, brain 35,
 // vitreous 10, air -1000, head rest 60, table 150. Then the optional [1 2 1]/4 blur along each
 // axis and Gaussian noise (Box-Muller, mt19937_64 seeded per z slice from the spec's seed),
-// clamped to [-1024, 3071].
+// clamped to [-1024, 3071]. The cone-beam flavour (phantom_cone_beam.h) adds cupping and metal
+// streaks before the noise and maps the clamped HU to its grey values after.
 Volume compute_ct(const PaintedGrid& grid, const PhantomSpec& spec);
 
 }  // namespace maxillo::sample

@@ -86,6 +86,27 @@ TEST(GreyCalibration, FindsAirAndSoftTissueInHuAndInAnyLinearScale) {
   }
 }
 
+// A cone-beam scanner pads the corners outside its reconstructed cylinder with one value at or
+// below air's. Those voxels are no tissue: taken for air, they would make every value read wrong.
+TEST(GreyCalibration, ThePaddingOutsideTheReconstructedFieldIsNotAir) {
+  Volume padded = with_grey_scale(phantom_ct(), 0.8, 300);  // air at -500, soft tissue at 332
+  const VolumeGeometry& g = padded.geometry;
+  const Eigen::Vector3d centre = g.world(g.size.cast<double>() / 2);
+  int64_t padding = 0;
+  for (int k = 0; k < g.size.z(); ++k)
+    for (int j = 0; j < g.size.y(); ++j)
+      for (int i = 0; i < g.size.x(); ++i)
+        if ((g.world(Eigen::Vector3d(i, j, k)) - centre).head<2>().norm() > 80) {
+          padded.at(i, j, k) = -700;  // 200 below air
+          ++padding;
+        }
+  ASSERT_GT(double(padding) / double(padded.hu.size()), 0.2);  // as many padded voxels as air ones, or more
+  const GreyCalibration found = estimate_grey_calibration(padded);
+  ASSERT_TRUE(found.from_histogram);
+  EXPECT_NEAR(found.air, -500, 30);
+  EXPECT_NEAR(found.soft_tissue, 332, 30);
+}
+
 TEST(HeadOrientation, ScansNotInHounsfieldUnitsAreCheckedAlike) {
   for (const auto& [scale, offset] : {std::pair{1.0, 1024.0}, std::pair{0.6, 1500.0}}) {
     const Volume scaled = with_grey_scale(phantom_ct(), scale, offset);
