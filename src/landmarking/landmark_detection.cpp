@@ -18,10 +18,11 @@
 namespace maxillo::landmarking {
 namespace {
 
-constexpr double kSnAboveFrankfortDeg = 7;  // adult mean: S-N rises this much anteriorly over Frankfort
-constexpr double kSurfaceSpacingMm = 1.5;   // the symmetry search's grid
-constexpr double kCoarseSpacingMm = 1.0;    // the frame-finding head volumes
-constexpr double kMinBoneCm3 = 40;          // less is not a skull
+constexpr double kSnAboveFrankfortDeg = 7;    // adult mean: S-N rises this much anteriorly over Frankfort
+constexpr double kSurfaceSpacingMm = 1.5;     // the symmetry search's grid
+constexpr double kCoarseSpacingMm = 1.0;      // the frame-finding head volumes
+constexpr double kMinBoneCm3 = 40;            // less is not a skull
+constexpr double kSizeChangeToRefind = 0.03;  // S-N found again longer or shorter than this share: the first was wrong
 
 // A frame (frame -> LPS) with the given axes (columns) and origin.
 Eigen::Isometry3d frame_of(const Eigen::Vector3d& x, const Eigen::Vector3d& y, const Eigen::Vector3d& origin) {
@@ -148,6 +149,25 @@ SellaNasion find_sella_and_nasion(const Volume& ct, const GreyCalibration& grey,
   return {sella->centre, *n.position};
 }
 
+// Nasion was first sought with the scan's pitch unknown (a window wide enough for +-20 degrees),
+// where a head tilted far enough shows another concavity of the midline profile deeper than the
+// frontonasal one, and the head's size follows from it. In the provisional frame the pitch is
+// known, so both points are sought once more in their own windows; when the S-N length found
+// there differs by more than kSizeChangeToRefind, the first pair was wrong and the frame and
+// size are taken from the second. (A difference below it is the resampling's: the first pair
+// stands, so a head whose first pass was right is read exactly as before.)
+Eigen::Isometry3d with_sella_and_nasion_found_again(const Volume& ct, const GreyCalibration& grey,
+                                                    const Eigen::Isometry3d& frame, double& scale) {
+  const HeadVolume coarse(ct, grey, frame, head_box(scale), kCoarseSpacingMm);
+  const auto s = find_sella(coarse, {{0, -14, -14}, {0, 14, 14}});
+  const RuleFinding n = find_nasion(coarse, expected_position("N", scale));
+  if (!s || !n.position) return frame;
+  const double length = (*n.position - s->centre).norm();
+  if (std::abs(length / (70.0 * scale) - 1) <= kSizeChangeToRefind) return frame;
+  scale = std::clamp(length / 70.0, 0.8, 1.3);
+  return pitched(frame, *n.position - s->centre, kSnAboveFrankfortDeg, s->centre);
+}
+
 }  // namespace
 
 LandmarkDetection detect_landmarks(const Volume& ct, const std::string& subject, const DetectionOptions& options) {
@@ -161,6 +181,7 @@ LandmarkDetection detect_landmarks(const Volume& ct, const std::string& subject,
   const SellaNasion sn = find_sella_and_nasion(ct, result.grey, frames.sagittal, subject);
   result.scale = std::clamp((sn.n - sn.s).norm() / 70.0, 0.8, 1.3);
   Eigen::Isometry3d frame = pitched(frames.sagittal, sn.n - sn.s, kSnAboveFrankfortDeg, sn.s);
+  frame = with_sella_and_nasion_found_again(ct, result.grey, frame, result.scale);
   result.frame_source = "S-N rising 7 degrees over Frankfort (porion or orbitale missing)";
   // Frankfort from porion and orbitale, found in the provisional frame.
   {
@@ -195,9 +216,9 @@ LandmarkDetection detect_landmarks(const Volume& ct, const std::string& subject,
     found["Or" + suffix] = find_orbitale(head, expected_position("Or" + suffix, result.scale), side);
   }
   find_maxillary_midline(head, result.scale, found);
-  find_symphysis(head, result.scale, found);
-  for (int side : {-1, 1}) find_ramus_landmarks(head, result.scale, side, found);
   find_incisors(head, result.scale, found);
+  find_symphysis(head, result.scale, found);  // its window follows the lower incisor
+  for (int side : {-1, 1}) find_ramus_landmarks(head, result.scale, side, found);
   for (int side : {-1, 1}) find_first_molars(head, result.scale, side, found);
   find_soft_tissue_profile(head, result.scale, found);
 

@@ -59,6 +59,25 @@ std::optional<ProfilePoint> extreme(const Profile& profile, int sign) {
 // Enamel is above 2200 HU; the densest cortical bone of a mandible stays below it.
 bool is_tooth(const HeadVolume& v, const ProfilePoint& p) { return v.hu({p.x, p.y + 0.75, p.z}) >= 2200; }
 
+// The first forward extremum reading the profile downwards (the upper lip's before the lower
+// lip's, whichever of the two stands further forward), refined; the most anterior point when the
+// profile holds no extremum 2 mm from its ends.
+std::optional<ProfilePoint> first_forward_extremum(const Profile& profile) {
+  if (profile.size() < 3) return std::nullopt;
+  for (int i = 0; i < int(profile.size()); ++i)
+    if (is_local_extremum(profile, i, -1, 2)) return refined_extremum(profile, i, 4);  // lips are flat: a wide fit
+  return extreme(profile, -1);
+}
+
+// The profile point farthest behind the profile's anterior hull (for a concave stretch, the
+// line joining its ends), refined; nullopt for fewer than three points.
+std::optional<ProfilePoint> deepest_behind_line(const Profile& profile) {
+  if (profile.size() < 3) return std::nullopt;
+  const auto depth = depth_behind_hull(profile);
+  const int deepest = int(std::max_element(depth.begin(), depth.end()) - depth.begin());
+  return refined_peak(profile, depth, deepest);
+}
+
 }  // namespace
 
 RuleFinding find_nasion(const HeadVolume& v, const Eigen::Vector3d& expected) {
@@ -165,8 +184,15 @@ void find_maxillary_midline(const HeadVolume& v, double scale, Findings& found) 
 }
 
 void find_symphysis(const HeadVolume& v, double scale, Findings& found) {
-  const Eigen::Vector3d b = expected_position("B", scale), me = expected_position("Me", scale);
-  const Eigen::Vector3d l1 = expected_position("L1", scale);
+  // The template's window, carried with the lower incisor when it was found: faces differ in
+  // height far more than a lower incisor differs from its symphysis.
+  const auto l1_found = found.find("L1");
+  const Eigen::Vector3d l1_template = expected_position("L1", scale);
+  Eigen::Vector3d shift = Eigen::Vector3d::Zero();
+  if (l1_found != found.end() && l1_found->second.position)
+    shift = Eigen::Vector3d(0, 1, 1).cwiseProduct(*l1_found->second.position - l1_template);
+  const Eigen::Vector3d b = expected_position("B", scale) + shift, me = expected_position("Me", scale) + shift;
+  const Eigen::Vector3d l1 = l1_template + shift;
   const Profile front = anterior_profile(v, l1.z() - 2, me.z() - 8, b.y() - 30, b.y() + 45, kBoneHu, 0, kMidlineSlabMm);
   Profile bone_front;  // below the crowns of the lower incisors
   for (const auto& p : front)
@@ -306,15 +332,21 @@ void find_soft_tissue_profile(const HeadVolume& v, double scale, Findings& found
   const auto prn = extreme_between(prn_expected.z() - 15, prn_expected.z() + 15, -1);
   record("Prn", prn, "no nose in the scanned field");
   if (!prn) return;
-  const auto sn = extreme_between(prn->z - 22 * scale, prn->z - 1, +1);
-  record("Sn", sn, "no skin below the nose");
-  if (!sn) return;
-  const auto ls = extreme_between(sn->z - 25 * scale, sn->z - 1, -1);
+  // The deepest skin below the nose, from which the upper lip is sought.
+  const auto below_nose = extreme_between(prn->z - 22 * scale, prn->z - 1, +1);
+  if (!below_nose) record("Sn", below_nose, "no skin below the nose");
+  if (!below_nose) return;
+  const auto ls = first_forward_extremum(between_heights(skin, below_nose->z - 25 * scale, below_nose->z - 1));
   record("Ls", ls, "no upper lip");
+  // Sn, where the columella meets the lip: the bottom of the concavity between Prn and Ls,
+  // measured behind the line that joins them. The lip below it is nearly upright, so the
+  // deepest point along the frame's anterior axis slides down the lip with a degree of pitch;
+  // the depth behind that line does not.
+  record("Sn", ls ? deepest_behind_line(between_heights(skin, ls->z, prn->z)) : below_nose, "no skin below the nose");
   if (!ls) return;
   const auto stomion = extreme_between(ls->z - 14 * scale, ls->z - 1, +1);
   if (!stomion) return;
-  const auto li = extreme_between(stomion->z - 16 * scale, stomion->z - 1, -1);
+  const auto li = first_forward_extremum(between_heights(skin, stomion->z - 16 * scale, stomion->z - 1));
   record("Li", li, "no lower lip");
   if (!li) return;
   const auto fold = extreme_between(li->z - 22 * scale, li->z - 1, +1);

@@ -17,6 +17,7 @@
 #include "core/error.h"
 #include "landmarking/landmark_detection.h"
 #include "sample/phantom.h"
+#include "sample/phantom_variation.h"
 
 namespace maxillo::landmarking {
 namespace {
@@ -51,12 +52,12 @@ TEST(PhantomLandmarks, TheDefaultPhantomsLandmarksAreFoundNearTheirTruth) {
     // Articulare, read in 3D, is never confident (mandible_landmarks.h): flagged for a person.
     EXPECT_EQ(l.flagged(), l.label.starts_with("Ar")) << l.label;
   }
-  // Measured 2026-11-27 (1 mm phantom): mean 0.87 mm over the 27 confident landmarks; Or (2.8)
-  // and L1 (1.8) are the weakest.
-  EXPECT_LT(mean_of(errors), 1.2);
+  // Measured 2026-11-28 (1 mm phantom): mean 0.70 mm over the 27 confident landmarks; L1 (1.8)
+  // the weakest. (Or was 2.6-2.8 mm until the phantom's orbital margin had its lowest point where
+  // its truth said: docs/ARCHITECTURE.md, "Varied phantoms".)
+  EXPECT_LT(mean_of(errors), 1.0);
   for (const auto& [label, e] : errors) std::cout << label << " " << e << " mm\n";
-  for (const auto& [label, e] : errors)
-    EXPECT_LT(e, label.starts_with("Or") ? 3.6 : label == "L1" ? 2.2 : 1.6) << label;
+  for (const auto& [label, e] : errors) EXPECT_LT(e, label == "L1" ? 2.2 : 1.6) << label;
   EXPECT_EQ(found.frame_source, "Frankfort horizontal (porion and orbitale)");
   EXPECT_NEAR(found.scale, 1.0, 0.02);  // S-N 70 mm
 }
@@ -106,6 +107,22 @@ TEST(PhantomLandmarks, AFinerAndACoarserScanOfTheSameHeadAgree) {
         left_out += ")";
       }
     EXPECT_EQ(left_out, "") << spacing << " mm: absent or flagged";  // all but Ar (always flagged)
+  }
+}
+
+// Other patients (size, jaws, noise drawn from their IDs) voxelised turned and shifted in the
+// scanner: not the head the rules were written on. Two of `maxillo bench landmarks`' patients,
+// one Class II-like and small, one large and turned 19 degrees. Measured 2026-11-28 (1 mm):
+// every landmark but Ar within 2 mm, means 0.6-0.7 mm.
+TEST(PhantomLandmarks, OtherPatientsInOtherPosesAreFoundNearTheirTruth) {
+  for (const char* patient : {"BENCH-003", "BENCH-006"}) {
+    const Phantom phantom = make_phantom(varied_phantom_spec(patient, ScannerKind::kCt, 1.0));
+    const LandmarkDetection found = detect_landmarks(phantom.ct, patient);
+    const auto errors = errors_against(found, phantom.landmarks);
+    for (const auto& [label, e] : errors) std::cout << patient << ": " << label << " " << e << " mm\n";
+    EXPECT_LT(mean_of(errors), 1.0) << patient;
+    EXPECT_GE(errors.size(), 24u) << patient;  // 29 less Ar (flagged) and at most three more
+    for (const auto& [label, e] : errors) EXPECT_LT(e, label == "L1" ? 3.0 : 2.0) << patient << " " << label;
   }
 }
 
