@@ -36,6 +36,7 @@ void attach_bench_register(CLI::App& bench, CommandContext& ctx);   // cmd_bench
 void attach_bench_surfaces(CLI::App& bench, CommandContext& ctx);   // cmd_bench_surfaces.cpp
 void attach_bench_claim(CLI::App& bench, CommandContext& ctx);      // cmd_bench_claim.cpp
 void attach_bench_index(CLI::App& bench, CommandContext& ctx);      // cmd_bench_index.cpp
+void attach_bench_landmarks(CLI::App& bench, CommandContext& ctx);  // cmd_bench_landmarks.cpp
 
 void attach_bench(CLI::App& app, CommandContext& ctx) {
   app.require_subcommand(1);
@@ -47,6 +48,7 @@ void attach_bench(CLI::App& app, CommandContext& ctx) {
   attach_bench_surfaces(app, ctx);
   attach_bench_claim(app, ctx);
   attach_bench_index(app, ctx);
+  attach_bench_landmarks(app, ctx);
 }
 
 }  // namespace maxillo::cli
