@@ -111,9 +111,10 @@ TEST(PhantomLandmarks, AFinerAndACoarserScanOfTheSameHeadAgree) {
 }
 
 // Other patients (size, jaws, noise drawn from their IDs) voxelised turned and shifted in the
-// scanner: not the head the rules were written on. Two of `maxillo bench landmarks`' patients,
-// one Class II-like and small, one large and turned 19 degrees. Measured 2026-11-28 (1 mm):
-// every landmark but Ar within 2 mm, means 0.6-0.7 mm.
+// scanner: not the head the rules were written on. Two of `maxillo bench landmarks`' patients:
+// one small (0.96) with its mandible 1.8 mm forward, turned 18.5 degrees; one large (1.06) with
+// both jaws back, turned 19.4 degrees. Measured 2026-11-28 (1 mm): every landmark but Ar within
+// 2 mm, means 0.58 and 0.60 mm over 27.
 TEST(PhantomLandmarks, OtherPatientsInOtherPosesAreFoundNearTheirTruth) {
   for (const char* patient : {"BENCH-003", "BENCH-006"}) {
     const Phantom phantom = make_phantom(varied_phantom_spec(patient, ScannerKind::kCt, 1.0));
