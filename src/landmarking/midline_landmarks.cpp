@@ -276,6 +276,22 @@ std::optional<ProfilePoint> upper_incisor_tip(const Profile& profile) {
   return std::nullopt;
 }
 
+// Where a lower incisor's lingual profile (read upwards, rays from behind) leaves the lower tip for
+// the upper incisor standing in front: the first sample kOverjetJumpMm or more in front of the one
+// below it, within kCrownBandMm of the template's height (lower down the rays cross bone and gum,
+// whose steps are no tip), from a point that lies behind the found upper edge by no more than the
+// largest overjet and a crown (kLargestOverjetMm, scaled). -1 if none.
+constexpr double kOverjetJumpMm = 2.0, kCrownBandMm = 6.0, kLargestOverjetMm = 16.0;
+int overjet_jump(const Profile& lingual, const Eigen::Vector3d& upper_edge, double template_z, double scale) {
+  for (size_t i = 1; i < lingual.size(); ++i) {
+    const ProfilePoint& below = lingual[i - 1];
+    if (std::abs(below.z - template_z) > kCrownBandMm || below.y - lingual[i].y < kOverjetJumpMm) continue;
+    const double behind_upper = below.y - upper_edge.y();
+    if (behind_upper > 0 && behind_upper <= kLargestOverjetMm * scale) return int(i);
+  }
+  return -1;
+}
+
 }  // namespace
 
 void find_incisors(const HeadVolume& v, double scale, Findings& found) {
@@ -298,13 +314,20 @@ void find_incisors(const HeadVolume& v, double scale, Findings& found) {
   }
   // Read upwards, the lower incisor's lingual face leans forward to its tip; above the tip the
   // rays meet the upper incisor's lingual face, which leans back: the tip is the most anterior
-  // point of this profile. Its centre lies half the edge's thickness labially.
-  const int tip = strongest_local_extremum(lower_lingual, -1, 2.5);
+  // point of this profile. With a large overjet the upper incisor stands millimetres in front
+  // of the lower one and the rays above the tip reach it at once (a jump forward), so its
+  // lingual face would be taken for the tip: then the tip is the last point before the jump.
+  // Its centre lies half the edge's thickness labially.
+  const auto upper = found.find("U1");
+  const int jump = upper != found.end() && upper->second.position
+                       ? overjet_jump(lower_lingual, *upper->second.position, l1.z(), scale)
+                       : -1;
+  const int tip = jump > 0 ? jump - 1 : strongest_local_extremum(lower_lingual, -1, 2.5);
   if (tip < 0) {
     found["L1"] = RuleFinding::absent("no lower incisor crown behind the upper incisor");
     return;
   }
-  const ProfilePoint lingual_tip = refined_extremum(lower_lingual, tip, 1.5);
+  const ProfilePoint lingual_tip = jump > 0 ? lower_lingual[size_t(tip)] : refined_extremum(lower_lingual, tip, 1.5);
   const auto labial =
       first_drop(v, {lingual_tip.x, lingual_tip.y - 0.1, lingual_tip.z - 1.5}, {0, -1, 0}, 7, kToothSurfaceHu, 0.1);
   const double y = labial ? (lingual_tip.y + labial->y()) / 2 : lingual_tip.y - 0.6;
