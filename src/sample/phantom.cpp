@@ -31,13 +31,8 @@ VolumeGeometry placed_grid(double spacing, const PhantomPlacement& placement) {
   if (placement.is_identity()) return phantom_grid(spacing);
   const VolumeGeometry designed = phantom_grid(spacing);
   const Eigen::Vector3d far = designed.world(designed.size.cast<double>() - Eigen::Vector3d::Ones());
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e9), hi = -lo;
-  for (int corner = 0; corner < 8; ++corner) {
-    const Eigen::Vector3d c(corner & 1 ? far.x() : designed.origin.x(), corner & 2 ? far.y() : designed.origin.y(),
-                            corner & 4 ? far.z() : designed.origin.z());
-    lo = lo.cwiseMin(placement.to_scanner(c));
-    hi = hi.cwiseMax(placement.to_scanner(c));
-  }
+  const sample::Box box = sample::placed_box(placement, {designed.origin, far});
+  const Eigen::Vector3d lo = box.lo, hi = box.hi;
   VolumeGeometry g;
   g.spacing = Eigen::Vector3d::Constant(spacing);
   for (int axis = 0; axis < 3; ++axis) g.size[axis] = int(std::floor((hi[axis] - lo[axis]) / spacing)) + 1;
@@ -50,8 +45,8 @@ VolumeGeometry scanned_grid(const PhantomSpec& spec) {
                         : placed_grid(spec.spacing_mm, spec.placement);
 }
 
-sample::PartList scanned_parts(const sample::PhantomDesign& design, const PhantomSpec& spec) {
-  sample::PartList parts = sample::build_phantom_parts(design);
+// The designed head's parts (and a cone-beam scan's fillings) as they lie in the scanner.
+sample::PartList scanned_parts(const sample::PhantomDesign& design, sample::PartList parts, const PhantomSpec& spec) {
   if (spec.cone_beam && spec.cone_beam->metal_fillings) sample::add_amalgam_fillings(design, parts);
   if (spec.placement.is_identity()) return parts;
   for (auto& part : parts) part = sample::placed(spec.placement, std::move(part));
@@ -60,9 +55,10 @@ sample::PartList scanned_parts(const sample::PhantomDesign& design, const Phanto
 
 // The designed landmarks where the placed head has them, less those outside a cone-beam field
 // (a scan without them: the truth is "absent").
-LandmarkSet scanned_landmarks(const sample::PhantomDesign& design, const PhantomSpec& spec) {
+LandmarkSet scanned_landmarks(const sample::PhantomDesign& design, const sample::PartList& designed_parts,
+                              const PhantomSpec& spec) {
   LandmarkSet scanned;
-  for (auto l : sample::phantom_landmarks(design, sample::build_phantom_parts(design))) {
+  for (auto l : sample::phantom_landmarks(design, designed_parts)) {
     l.position = spec.placement.to_scanner(l.position);
     if (!spec.cone_beam || spec.cone_beam->reconstructs(l.position)) scanned.push_back(l);
   }
@@ -104,16 +100,18 @@ Phantom make_phantom(const PhantomSpec& spec) {
   assert(std::abs(spec.mandibular_protrusion_mm) <= 12 && std::abs(spec.maxillary_advancement_mm) <= 12 &&
          "phantom displacements beyond 12 mm are not modelled");
   const sample::PhantomDesign design = sample::make_design(spec);
-  sample::PaintedGrid grid = sample::paint_parts(scanned_parts(design, spec), scanned_grid(spec));
+  const sample::PartList designed_parts = sample::build_phantom_parts(design);
+  sample::PaintedGrid grid = sample::paint_parts(scanned_parts(design, designed_parts, spec), scanned_grid(spec));
   Phantom phantom;
   phantom.ct = sample::compute_ct(grid, spec);
   phantom.labels = LabelVolume{grid.geometry, std::move(grid.tissue)};
-  phantom.landmarks = scanned_landmarks(design, spec);
+  phantom.landmarks = scanned_landmarks(design, designed_parts, spec);
   return phantom;
 }
 
 LandmarkSet make_phantom_landmarks(const PhantomSpec& spec) {
-  return scanned_landmarks(sample::make_design(spec), spec);
+  const sample::PhantomDesign design = sample::make_design(spec);
+  return scanned_landmarks(design, sample::build_phantom_parts(design), spec);
 }
 
 }  // namespace maxillo

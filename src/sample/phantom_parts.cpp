@@ -37,15 +37,19 @@ Part placed(const PhantomPlacement& placement, Part part) {
     const Vector3d q = placement.to_anatomy(p);
     return designed.contains(q) && inside(q);
   };
-  Box box{placement.to_scanner(part.box.lo), placement.to_scanner(part.box.lo)};
-  for (int corner = 1; corner < 8; ++corner) {
-    const Vector3d c((corner & 1 ? part.box.hi : part.box.lo).x(), (corner & 2 ? part.box.hi : part.box.lo).y(),
-                     (corner & 4 ? part.box.hi : part.box.lo).z());
-    const Vector3d p = placement.to_scanner(c);
-    box = box.united({p, p});
-  }
-  part.box = box;
+  part.box = placed_box(placement, part.box);
   return part;
+}
+
+Box placed_box(const PhantomPlacement& placement, const Box& box) {
+  Box placed_corners{placement.to_scanner(box.lo), placement.to_scanner(box.lo)};
+  for (int corner = 1; corner < 8; ++corner) {
+    const Vector3d c((corner & 1 ? box.hi : box.lo).x(), (corner & 2 ? box.hi : box.lo).y(),
+                     (corner & 4 ? box.hi : box.lo).z());
+    const Vector3d p = placement.to_scanner(c);
+    placed_corners = placed_corners.united({p, p});
+  }
+  return placed_corners;
 }
 
 PartList build_phantom_parts(const PhantomDesign& design) {

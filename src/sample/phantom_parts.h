@@ -68,6 +68,8 @@ void add_support_parts(const PhantomDesign& design, PartList& parts);
 void add_amalgam_fillings(const PhantomDesign& design, PartList& parts);
 // The part as it lies in the scanner: queries mapped back to the anatomy frame, box widened.
 Part placed(const PhantomPlacement& placement, Part part);
+// The axis-aligned box around a box of the anatomy frame as it lies in the scanner.
+Box placed_box(const PhantomPlacement& placement, const Box& box);
 
 // Anterior coordinate of the nasal bones' outer surface at (x, z) (shared by the nasal cavity).
 double nasal_bone_front(const PhantomDesign& design, double x, double z);
