@@ -3,6 +3,7 @@
 // confidence and the checks it passed or failed. INPUT: a case of the archive (id, case:N or
 // Patient ID), a DICOM series folder, or a MetaImage/NRRD volume.
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <set>
@@ -75,8 +76,11 @@ void print_table(const landmarking::LandmarkDetection& d, double seconds) {
     else
       std::printf("%-5s %9s %9s %9s  %4s  %-8s %s\n", l.label.c_str(), "", "", "", "", "absent", remark.c_str());
   }
-  std::printf("head frame: %s; midsagittal asymmetry %.2f mm; grey values: %s; %.1f s\n", d.frame_source.c_str(),
-              d.asymmetry_mm, d.grey.describe().c_str(), seconds);
+  const std::string cupping = d.cupping > 0 ? " (after a cone-beam cupping of " +
+                                                  std::to_string(int(std::lround(100 * d.cupping))) + " % was undone)"
+                                            : "";
+  std::printf("head frame: %s; midsagittal asymmetry %.2f mm; grey values: %s%s; %.1f s\n", d.frame_source.c_str(),
+              d.asymmetry_mm, d.grey.describe().c_str(), cupping.c_str(), seconds);
 }
 
 // Stores the detected set with the case (beside a set given by hand, which keeps precedence),

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <vector>
 
 namespace maxillo {
@@ -20,18 +21,20 @@ struct Histogram {
 // A scanner fills what it did not reconstruct (a cone-beam scan's corners outside its cylinder,
 // a CT's outside its circle) with one value at or below air's. That value is a spike at the
 // bottom of the histogram, no tissue (tissue is noisy): it is left out, or it would be taken for air.
-void leave_out_padding(std::vector<int64_t>& full, int64_t total) {
+std::optional<int> leave_out_padding(std::vector<int64_t>& full, int64_t total) {
   size_t lowest = 0;
   while (lowest + 1 < full.size() && full[lowest] == 0) ++lowest;
   const int64_t next_up = lowest + 1 < full.size() ? full[lowest + 1] : 0;
-  if (full[lowest] > total / 50 && full[lowest] > 20 * next_up) full[lowest] = 0;
+  if (full[lowest] <= total / 50 || full[lowest] <= 20 * next_up) return std::nullopt;
+  full[lowest] = 0;
+  return int(lowest) - 32768;
 }
 
 // Counts over the central 99.8 % of values, smoothed over 5 bins so that noise makes no peaks.
-Histogram histogram_of(const Volume& volume) {
+Histogram histogram_of(const Volume& volume, std::optional<int>& padding) {
   std::vector<int64_t> full(65536, 0);
   for (int16_t v : volume.hu) ++full[size_t(int(v) + 32768)];
-  leave_out_padding(full, int64_t(volume.hu.size()));
+  padding = leave_out_padding(full, int64_t(volume.hu.size()));
   int64_t total = 0;
   for (int64_t count : full) total += count;
   auto percentile = [&](double share) {
@@ -84,7 +87,7 @@ std::string GreyCalibration::describe() const {
 GreyCalibration estimate_grey_calibration(const Volume& volume) {
   GreyCalibration calibration;
   if (volume.hu.empty()) return calibration;
-  const Histogram h = histogram_of(volume);
+  const Histogram h = histogram_of(volume, calibration.padding);
   // Air and soft tissue lie about 1000 HU apart, a large share of any head scan's range: peaks
   // closer than a tenth of the range are one tissue's noise or fat beside muscle.
   const auto peaks = peaks_of(h, kBins / 10);

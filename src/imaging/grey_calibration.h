@@ -6,6 +6,7 @@
 // the head, the airway, the sinuses) and soft tissue (brain, muscle, skin), so the two largest
 // modes of its histogram name them: air is -1000 HU and soft tissue 40 HU, and the straight line
 // through the two maps every grey value to HU (CT numbers are linear in attenuation).
+#include <optional>
 #include <string>
 
 #include "core/volume.h"
@@ -16,6 +17,7 @@ struct GreyCalibration {
   double air = -1000;           // the grey value of air
   double soft_tissue = 40;      // the grey value of soft tissue
   bool from_histogram = false;  // false: the scan had no two clear modes, the identity is used
+  std::optional<int> padding;   // the value a scanner filled its unreconstructed corners with
 
   double to_hu(double grey) const { return -1000 + (grey - air) * 1040 / (soft_tissue - air); }
   double from_hu(double hu) const { return air + (hu + 1000) * (soft_tissue - air) / 1040; }

@@ -5,8 +5,10 @@
 
 #include "core/angles.h"
 #include "core/error.h"
+#include "imaging/cupping_correction.h"
 #include "landmarking/bone_surface.h"
 #include "landmarking/dental_landmarks.h"
+#include "landmarking/ear_orbit_frame.h"
 #include "landmarking/head_volume.h"
 #include "landmarking/landmark_template.h"
 #include "landmarking/lateral_landmarks.h"
@@ -18,10 +20,11 @@
 namespace maxillo::landmarking {
 namespace {
 
-constexpr double kSnAboveFrankfortDeg = 7;    // adult mean: S-N rises this much anteriorly over Frankfort
-constexpr double kSurfaceSpacingMm = 1.5;     // the symmetry search's grid
-constexpr double kCoarseSpacingMm = 1.0;      // the frame-finding head volumes
-constexpr double kMinBoneCm3 = 40;            // less is not a skull
+constexpr double kSnAboveFrankfortDeg = 7;      // adult mean: S-N rises this much anteriorly over Frankfort
+constexpr double kSurfaceSpacingMm = 1.5;       // the symmetry search's grid
+constexpr double kCoarseSpacingMm = 1.0;        // the frame-finding head volumes
+constexpr double kMinBoneCm3 = 40;              // less is not a skull
+constexpr double kMinSnMm = 56, kMaxSnMm = 91;  // the scales the detector accepts (0.8-1.3) times 70 mm
 constexpr double kSizeChangeToRefind = 0.03;  // S-N found again longer or shorter than this share: the first was wrong
 
 // A frame (frame -> LPS) with the given axes (columns) and origin.
@@ -114,39 +117,61 @@ const DetectedLandmark* LandmarkDetection::find(const std::string& label) const 
 
 namespace {
 
+// The skull's extent in the sagittal frame P, from a midline head volume.
+MidlineExtent midline_extent(const HeadVolume& midline, const std::string& subject) {
+  const FrameBox& wide = midline.box();
+  MidlineExtent e{1e9, -1e9, -1e9};
+  double y_top = 0;
+  for (double z = wide.lo.z(); z <= wide.hi.z(); z += midline.spacing())
+    for (double y = wide.lo.y(); y <= wide.hi.y(); y += midline.spacing())
+      if (midline.hu({0, y, z}) >= kBoneHu) {
+        e.y_front = std::min(e.y_front, y);
+        e.y_back = std::max(e.y_back, y);
+        if (z > e.z_top) e.z_top = z, y_top = y;
+      }
+  if (e.y_back - e.y_front < 60) throw Error(ErrorCode::kBadValue, subject, "no skull in the midsagittal plane");
+  e.vertex_scanned = midline.scanned({0, y_top, e.z_top + 6});
+  return e;
+}
+
 // Sella and nasion in the sagittal frame P, where the pitch is still the scan's: sella's window
 // from the bone's extent, nasion's from sella.
 struct SellaNasion {
   Eigen::Vector3d s, n;  // P frame
 };
 
-SellaNasion find_sella_and_nasion(const Volume& ct, const GreyCalibration& grey, const Eigen::Isometry3d& p_frame,
-                                  const std::string& subject) {
-  // The skull's extent in P from a midline head volume.
-  const FrameBox wide{{-12, -160, -170}, {12, 160, 170}};
-  const HeadVolume midline(ct, grey, p_frame, wide, 2.0);
-  double y_front = 1e9, y_back = -1e9, z_top = -1e9;
-  for (double z = wide.lo.z(); z <= wide.hi.z(); z += 2)
-    for (double y = wide.lo.y(); y <= wide.hi.y(); y += 2)
-      if (midline.hu({0, y, z}) >= kBoneHu) {
-        y_front = std::min(y_front, y);
-        y_back = std::max(y_back, y);
-        z_top = std::max(z_top, z);
-      }
-  if (y_back - y_front < 60) throw Error(ErrorCode::kBadValue, subject, "no skull in the midsagittal plane");
-  const double length = y_back - y_front;
-  const FrameBox sella_window{{0, y_front + 0.2 * length, z_top - 135}, {0, y_front + 0.7 * length, z_top - 55}};
-  const FrameBox box{{-15, y_front - 35, z_top - 170}, {15, y_back + 5, z_top + 5}};
+std::optional<SellaNasion> find_sella_and_nasion(const Volume& ct, const GreyCalibration& grey,
+                                                 const Eigen::Isometry3d& p_frame, const MidlineExtent& e,
+                                                 std::string& why) {
+  const double length = e.y_back - e.y_front;
+  const FrameBox box{{-15, e.y_front - 35, e.z_top - 170}, {15, e.y_back + 5, e.z_top + 5}};
   const HeadVolume section(ct, grey, p_frame, box, kCoarseSpacingMm);
-  const auto sella = find_sella(section, sella_window);
-  if (!sella)
-    throw Error(ErrorCode::kBadValue, subject,
-                "no sella turcica found in the midsagittal plane: not a head CT, or a field of view without the "
-                "cranial base (landmarks need it to set the head's frame)");
+  // The sella lies 55-135 mm below the vertex. A field that ends at the skull's top (a cone-beam
+  // scan cut above the orbits) shows no vertex: the sella, if scanned, lies within 70 mm of the
+  // field's edge (a window 135 mm below the edge would reach the neck, whose recesses then pass
+  // for a fossa). A head without it gets its frame from the ears and orbits.
+  auto window_below_top = [&](double nearest, double farthest) {
+    return FrameBox{{0, e.y_front + 0.2 * length, e.z_top - farthest},
+                    {0, e.y_front + 0.7 * length, e.z_top - nearest}};
+  };
+  const auto sella =
+      e.vertex_scanned ? find_sella(section, window_below_top(55, 135)) : find_sella(section, window_below_top(2, 70));
+  if (!sella) {
+    why = "no sella turcica in the midsagittal plane";
+    return std::nullopt;
+  }
   // Nasion: S-N is about 70 mm and rises 7 degrees; the scan's pitch may add +-20 degrees.
   const RuleFinding n = find_nasion(section, sella->centre + Eigen::Vector3d(0, -68, 8.5));
-  if (!n.position) throw Error(ErrorCode::kBadValue, subject, "no nasion found in front of the sella: " + n.note);
-  return {sella->centre, *n.position};
+  if (!n.position) {
+    why = "no nasion in front of the sella: " + n.note;
+    return std::nullopt;
+  }
+  const double length_sn = (*n.position - sella->centre).norm();
+  if (length_sn < kMinSnMm || length_sn > kMaxSnMm) {
+    why = "the sella and nasion found lie " + std::to_string(int(std::lround(length_sn))) + " mm apart, no adult's S-N";
+    return std::nullopt;
+  }
+  return SellaNasion{sella->centre, *n.position};
 }
 
 // Nasion was first sought with the scan's pitch unknown (a window wide enough for +-20 degrees),
@@ -168,21 +193,53 @@ Eigen::Isometry3d with_sella_and_nasion_found_again(const Volume& ct, const Grey
   return pitched(frame, *n.position - s->centre, kSnAboveFrankfortDeg, s->centre);
 }
 
+// The head frame before Frankfort is measured in it: origin at sella and S-N rising 7 degrees,
+// or, when the field holds no sella or no nasion, Frankfort from the ear canals and orbits.
+// Sets the result's scale and frame source.
+Eigen::Isometry3d provisional_frame(const Volume& ct, const GreyCalibration& grey, const Eigen::Isometry3d& sagittal,
+                                    const std::string& subject, LandmarkDetection& result) {
+  const HeadVolume midline(ct, grey, sagittal, {{-12, -160, -170}, {12, 160, 170}}, 2.0);
+  const MidlineExtent extent = midline_extent(midline, subject);
+  std::string no_sella_nasion, no_frankfort;
+  if (const auto sn = find_sella_and_nasion(ct, grey, sagittal, extent, no_sella_nasion)) {
+    result.scale = std::clamp((sn->n - sn->s).norm() / 70.0, 0.8, 1.3);
+    const Eigen::Isometry3d frame = pitched(sagittal, sn->n - sn->s, kSnAboveFrankfortDeg, sn->s);
+    result.frame_source = "S-N rising 7 degrees over Frankfort (porion or orbitale missing)";
+    return with_sella_and_nasion_found_again(ct, grey, frame, result.scale);
+  }
+  if (const auto eo = frame_from_ears_and_orbits(ct, grey, sagittal, extent, no_frankfort)) {
+    result.scale = eo->scale;
+    result.frame_source = no_sella_nasion;
+    return eo->frame;
+  }
+  throw Error(ErrorCode::kBadValue, subject,
+              "no head frame: " + no_sella_nasion + ", and " + no_frankfort +
+                  ": not a head CT, or a field of view without the cranial base and the ears (landmarks need one "
+                  "of them to set the head's frame)");
+}
+
 }  // namespace
 
-LandmarkDetection detect_landmarks(const Volume& ct, const std::string& subject, const DetectionOptions& options) {
-  require_a_head(ct, subject);
+LandmarkDetection detect_landmarks(const Volume& scan, const std::string& subject, const DetectionOptions& options) {
+  require_a_head(scan, subject);
   LandmarkDetection result;
-  result.grey = estimate_grey_calibration(ct);
+  result.grey = estimate_grey_calibration(scan);
+  // A cone-beam scan's values lose more towards its axis (cupping_correction.h): undone first,
+  // or the thresholds that hold at the rim do not hold in the middle. A CT is read as it is.
+  Volume uncupped;
+  if (!result.grey.is_hounsfield()) {
+    const RadialCupping cupping = estimate_cupping(scan, result.grey);
+    if (cupping.significant()) {
+      uncupped = without_cupping(scan, result.grey, cupping);
+      result.cupping = cupping.depth();
+      result.grey = estimate_grey_calibration(uncupped);
+    }
+  }
+  const Volume& ct = uncupped.hu.empty() ? scan : uncupped;
   const Frames frames = sagittal_frame(ct, result.grey, subject);
   result.midsagittal = frames.midsagittal;
   result.asymmetry_mm = frames.asymmetry;
-  // Provisional head frame: origin at sella, S-N rising 7 degrees.
-  const SellaNasion sn = find_sella_and_nasion(ct, result.grey, frames.sagittal, subject);
-  result.scale = std::clamp((sn.n - sn.s).norm() / 70.0, 0.8, 1.3);
-  Eigen::Isometry3d frame = pitched(frames.sagittal, sn.n - sn.s, kSnAboveFrankfortDeg, sn.s);
-  frame = with_sella_and_nasion_found_again(ct, result.grey, frame, result.scale);
-  result.frame_source = "S-N rising 7 degrees over Frankfort (porion or orbitale missing)";
+  Eigen::Isometry3d frame = provisional_frame(ct, result.grey, frames.sagittal, subject, result);
   // Frankfort from porion and orbitale, found in the provisional frame.
   {
     const HeadVolume coarse(ct, result.grey, frame, head_box(result.scale), kCoarseSpacingMm);
@@ -198,7 +255,11 @@ LandmarkDetection detect_landmarks(const Volume& ct, const std::string& subject,
     if (po_count && or_count) {
       const Eigen::Vector3d forward = orb / or_count - po / po_count;
       frame = pitched(frame, Eigen::Vector3d(0, forward.y(), forward.z()), 0, Eigen::Vector3d::Zero());
-      result.frame_source = "Frankfort horizontal (porion and orbitale)";
+      const bool sella_nasion_frame = result.frame_source.starts_with("S-N");
+      result.frame_source = sella_nasion_frame ? "Frankfort horizontal (porion and orbitale)"
+                                               : "Frankfort horizontal (porion and orbitale, found without sella "
+                                                 "and nasion: " +
+                                                     result.frame_source + ")";
     }
   }
   result.head_frame = frame;
@@ -208,7 +269,9 @@ LandmarkDetection detect_landmarks(const Volume& ct, const std::string& subject,
   if (auto s = find_sella(head, {{0, -14, -14}, {0, 14, 14}}))
     found["S"] = RuleFinding::found(s->centre, evidence_between(1.5 - s->fit_rms_mm, 0, 1));
   else
-    found["S"] = RuleFinding::absent("no sella turcica in the head frame");
+    found["S"] =
+        RuleFinding::absent(head.scanned(Eigen::Vector3d::Zero()) ? "no sella turcica in the head frame"
+                                                                  : "the sella lies outside the scanned field");
   found["N"] = find_nasion(head, expected_position("N", result.scale));
   for (int side : {-1, 1}) {
     const std::string suffix = side > 0 ? "L" : "R";

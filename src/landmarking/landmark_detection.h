@@ -46,7 +46,8 @@ struct LandmarkDetection {
   Eigen::Isometry3d head_frame = Eigen::Isometry3d::Identity();  // head frame -> LPS
   std::string frame_source;                                      // "Frankfort (porion, orbitale)" or "S-N + 7 degrees"
   GreyCalibration grey;
-  double scale = 1;  // S-N / 70 mm
+  double cupping = 0;  // the share of soft tissue's level lost on a cone-beam scan's axis, undone first
+  double scale = 1;    // S-N / 70 mm
 
   // The landmarks present, as a set for the cephalometry (absent ones left out).
   LandmarkSet present() const;

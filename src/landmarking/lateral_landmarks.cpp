@@ -70,15 +70,15 @@ std::vector<int> outer_canal(const HeadVolume& v, const std::vector<uint8_t>& ca
 
 }  // namespace
 
-RuleFinding find_porion(const HeadVolume& v, const Eigen::Vector3d& expected, int side) {
+RuleFinding find_porion(const HeadVolume& v, const Eigen::Vector3d& expected, int side, const Eigen::Vector2d& reach) {
   Grid3 g;
   g.step = std::max(0.5, v.spacing());
   const double lateral = std::abs(expected.x());
   const double x_near = lateral - 30, x_far = lateral + 15;
-  g.lo = {side > 0 ? x_near : -x_far, expected.y() - 20, expected.z() - 16};
+  g.lo = {side > 0 ? x_near : -x_far, expected.y() - reach.x(), expected.z() - reach.y()};
   g.nx = int((x_far - x_near) / g.step) + 1;
-  g.ny = int(40 / g.step) + 1;
-  g.nz = int(32 / g.step) + 1;
+  g.ny = int(2 * reach.x() / g.step) + 1;
+  g.nz = int(2 * reach.y() / g.step) + 1;
   std::vector<uint8_t> canal(size_t(g.nx * g.ny * g.nz), 0);
   for (int k = 0; k < g.nz; ++k)
     for (int j = 0; j < g.ny; ++j)

@@ -11,9 +11,11 @@
 namespace maxillo::landmarking {
 
 // The ear canal is found as the air inside the temporal bone (bone close above and below)
-// within 20 mm of `expected` that opens at the bone's lateral surface (the middle ear and the
-// mastoid cells lie deeper and stay closed); Po is the top of the canal where it leaves the bone.
-RuleFinding find_porion(const HeadVolume& v, const Eigen::Vector3d& expected, int side);
+// within `reach` (y, z: mm either side) of `expected` that opens at the bone's lateral surface
+// (the middle ear and the mastoid cells lie deeper and stay closed); Po is the top of the canal
+// where it leaves the bone.
+RuleFinding find_porion(const HeadVolume& v, const Eigen::Vector3d& expected, int side,
+                        const Eigen::Vector2d& reach = {20, 16});
 
 // Seen from the front, rays below the orbit end on the maxilla and zygoma while rays into the
 // orbit's opening go deep: the rim's lower edge is where that depth jumps, and Or is the lowest

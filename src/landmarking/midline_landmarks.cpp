@@ -11,7 +11,8 @@
 namespace maxillo::landmarking {
 namespace {
 
-constexpr double kMidlineSlabMm = 1.5;  // bone profiles: the most anterior bone within this of x = 0
+constexpr double kMidlineSlabMm = 1.5;         // bone profiles: the most anterior bone within this of x = 0
+constexpr double kForeheadAboveNasionMm = 10;  // scanned this far above a nasion, or it is absent
 // Crowns against lips and air: low enough to keep a thin incisal edge that the partial volume
 // has faded (the edge itself is placed at the half maximum, first_edge).
 constexpr double kToothSurfaceHu = 500;
@@ -91,6 +92,10 @@ RuleFinding find_nasion(const HeadVolume& v, const Eigen::Vector3d& expected) {
   for (size_t i = 0; i < depth.size(); ++i)
     if (depth[i] > depth[size_t(deepest)]) deepest = int(i);
   const ProfilePoint n = refined_peak(forehead_to_nose, depth, deepest);
+  // The concavity is the frontonasal one only if the forehead above it was scanned: a field cut
+  // just above the nose makes its own "deepest point" at the edge.
+  if (!v.scanned(midline_point(n) + Eigen::Vector3d(0, 0, kForeheadAboveNasionMm)))
+    return RuleFinding::absent("the forehead above the nasion lies outside the scanned field");
   return RuleFinding::found(midline_point(n), evidence_between(depth[size_t(deepest)], 0.3, 2.5),
                             depth[size_t(deepest)] < 1 ? "a shallow frontonasal concavity" : "");
 }

@@ -17,6 +17,9 @@ constexpr double kWallReachMm = 10;  // bone this close in front, behind and bel
 constexpr double kWallHu = 150;
 constexpr double kMinPocketMm2 = 12, kMaxPocketMm2 = 400;
 constexpr double kOpenAboveMm = 30;  // the fossa opens to the brain: no bone this far above it
+// A cone-beam field may end a little above the fossa: the brain seen up to the field's edge,
+// at least this far, is open too (what lies beyond was not scanned, not bone).
+constexpr double kOpenToFieldEdgeMm = 6;
 
 // The section's pixels: rows along z (downwards), columns along y.
 struct Section {
@@ -95,6 +98,18 @@ bool fit_circle(const std::vector<Eigen::Vector2d>& points, Eigen::Vector2d& cen
   return true;
 }
 
+// Soft tissue (the brain) straight above `p` for kOpenAboveMm, or up to the scanned field's
+// edge when that lies at least kOpenToFieldEdgeMm above.
+bool opens_upwards(const HeadVolume& v, const Eigen::Vector3d& p) {
+  for (double t = 0; t <= kOpenAboveMm; t += 0.5) {
+    const Eigen::Vector3d q = p + Eigen::Vector3d(0, 0, t);
+    // The voxel above too: the interpolation mixes in the unscanned air beyond the edge.
+    if (!v.scanned(q + Eigen::Vector3d(0, 0, v.spacing()))) return t >= kOpenToFieldEdgeMm;
+    if (!soft(v.hu(q))) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 std::optional<SellaFinding> find_sella(const HeadVolume& v, const FrameBox& window) {
@@ -122,12 +137,7 @@ std::optional<SellaFinding> find_sella(const HeadVolume& v, const FrameBox& wind
       z_top = std::max(z_top, p.z());
     }
     const Eigen::Vector3d above(0, y_sum / double(region.size()), z_top + s.step);
-    bool open = true;
-    for (double t = 0; t <= kOpenAboveMm && open; t += 0.5) {
-      const double hu = v.hu(above + Eigen::Vector3d(0, 0, t));
-      open = soft(hu);
-    }
-    if (!open) continue;
+    if (!opens_upwards(v, above)) continue;
     // Of the pockets that open into the cranial cavity, the sella is the lowest: the deepest
     // point of the central skull base (the olfactory recess in front of it lies higher).
     if (!best || z_top < best_top) {

@@ -1,0 +1,106 @@
+#include "landmarking/ear_orbit_frame.h"
+
+#include <cmath>
+
+#include "core/angles.h"
+#include "landmarking/head_volume.h"
+#include "landmarking/landmark_template.h"
+#include "landmarking/lateral_landmarks.h"
+
+namespace maxillo::landmarking {
+namespace {
+
+constexpr double kSpacingMm = 1.0;
+constexpr double kPitchReachDeg = 30, kPitchStepDeg = 5;
+constexpr double kMaxCanalMismatchMm = 15;  // the two canals' heights and depths differ by less
+
+struct Porions {
+  Eigen::Vector3d left, right;
+  Eigen::Vector3d middle() const { return (left + right) / 2; }
+};
+
+// Both ear canals, each sought over its side's lateral third from 40 to 150 mm behind the
+// skull's front and over 130 mm below its top.
+std::optional<Porions> find_porions_anywhere(const HeadVolume& v, const MidlineExtent& extent, std::string& why) {
+  const double y_centre = extent.y_front + 95, z_centre = extent.z_top - 65;
+  Porions p;
+  for (int side : {-1, 1}) {
+    const RuleFinding f = find_porion(v, {side * 62.0, y_centre, z_centre}, side, {55, 65});
+    if (!f.position) {
+      why = std::string("no ") + (side > 0 ? "left" : "right") + " ear canal: " + f.note;
+      return std::nullopt;
+    }
+    (side > 0 ? p.left : p.right) = *f.position;
+  }
+  if ((p.left - p.right).tail<2>().norm() > kMaxCanalMismatchMm) {
+    why = "the two ear canals found do not face each other across the midsagittal plane";
+    return std::nullopt;
+  }
+  return p;
+}
+
+// Frankfort's forward direction in the sagittal frame rising `pitch_deg` anteriorly.
+Eigen::Vector3d forward_at(double pitch_deg) { return {0, -std::cos(pitch_deg * kDeg), std::sin(pitch_deg * kDeg)}; }
+
+struct Orbitales {
+  Eigen::Vector3d middle{0, 0, 0};
+  double misplacement_mm = 1e9;  // from where the pitch put them
+};
+
+// The orbitales where Frankfort rising `pitch_deg` from the porions would put them.
+std::optional<Orbitales> orbitales_at_pitch(const HeadVolume& v, const Porions& po, double scale, double pitch_deg) {
+  // The template's orbitale lies level with the porion, 77 mm in front and 29 mm nearer the midline.
+  const Eigen::Vector3d to_orbitale = expected_position("OrL", scale) - expected_position("PoL", scale);
+  Orbitales o;
+  o.misplacement_mm = 0;
+  for (int side : {-1, 1}) {
+    const Eigen::Vector3d porion = side > 0 ? po.left : po.right;
+    Eigen::Vector3d expected = porion + std::abs(to_orbitale.y()) * forward_at(pitch_deg);
+    expected.x() = side * std::abs(expected_position("OrL", scale).x());
+    const RuleFinding f = find_orbitale(v, expected, side);
+    if (!f.position || f.evidence < 0.5) return std::nullopt;
+    o.middle += *f.position / 2;
+    o.misplacement_mm += (*f.position - expected).tail<2>().norm() / 2;
+  }
+  return o;
+}
+
+}  // namespace
+
+std::optional<EarOrbitFrame> frame_from_ears_and_orbits(const Volume& ct, const GreyCalibration& grey,
+                                                        const Eigen::Isometry3d& sagittal, const MidlineExtent& extent,
+                                                        std::string& why) {
+  const FrameBox box{{-85, extent.y_front - 20, extent.z_top - 150}, {85, extent.y_front + 160, extent.z_top + 2}};
+  const HeadVolume v(ct, grey, sagittal, box, kSpacingMm);
+  const auto po = find_porions_anywhere(v, extent, why);
+  if (!po) return std::nullopt;
+  const double width = 2 * expected_position("PoL", 1).x();
+  const double scale = std::clamp((po->left - po->right).norm() / width, 0.8, 1.3);
+  std::optional<Orbitales> best;
+  for (double pitch = -kPitchReachDeg; pitch <= kPitchReachDeg + 1e-9; pitch += kPitchStepDeg) {
+    const auto o = orbitales_at_pitch(v, *po, scale, pitch);
+    if (o && (!best || o->misplacement_mm < best->misplacement_mm)) best = o;
+  }
+  if (!best) {
+    why = "no inferior orbital rims in front of the ear canals";
+    return std::nullopt;
+  }
+  // Frankfort: x the midsagittal normal, y posterior along porion-orbitale, z superior.
+  Eigen::Vector3d forward = best->middle - po->middle();
+  forward.x() = 0;
+  forward.normalize();
+  Eigen::Matrix3d axes;
+  axes.col(0) = Eigen::Vector3d::UnitX();
+  axes.col(1) = -forward;
+  axes.col(2) = axes.col(0).cross(axes.col(1));
+  // The origin where the template's sella lies over the porions' midpoint.
+  const Eigen::Vector3d sella_from_porion = -expected_position("PoL", scale);
+  Eigen::Vector3d origin = po->middle() + axes.col(1) * sella_from_porion.y() + axes.col(2) * sella_from_porion.z();
+  origin.x() = 0;
+  Eigen::Isometry3d local = Eigen::Isometry3d::Identity();
+  local.linear() = axes;
+  local.translation() = origin;
+  return EarOrbitFrame{sagittal * local, scale};
+}
+
+}  // namespace maxillo::landmarking
