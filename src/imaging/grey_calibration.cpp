@@ -19,22 +19,42 @@ struct Histogram {
 };
 
 // A scanner fills what it did not reconstruct (a cone-beam scan's corners outside its cylinder,
-// a CT's outside its circle) with one value at or below air's. That value is a spike at the
-// bottom of the histogram, no tissue (tissue is noisy): it is left out, or it would be taken for air.
-std::optional<int> leave_out_padding(std::vector<int64_t>& full, int64_t total) {
+// a CT's outside its circle) with one value, below air's or air's own. Tissue is noisy, so that
+// value is a spike. Below air it is the lowest value, far above the next one up, and must be
+// left out of the histogram, or it would be taken for air's mode. (At air's own value it moves
+// no mode, and cannot be told from air that a scanner clamps to one value, as the cadaver head's
+// is: it is not sought.)
+std::optional<int> spike_below_air(const std::vector<int64_t>& full, int64_t total) {
   size_t lowest = 0;
   while (lowest + 1 < full.size() && full[lowest] == 0) ++lowest;
   const int64_t next_up = lowest + 1 < full.size() ? full[lowest + 1] : 0;
-  if (full[lowest] <= total / 50 || full[lowest] <= 20 * next_up) return std::nullopt;
-  full[lowest] = 0;
-  return int(lowest) - 32768;
+  if (full[lowest] > total / 50 && full[lowest] > 20 * next_up) return int(lowest) - 32768;
+  return std::nullopt;
 }
 
-// Counts over the central 99.8 % of values, smoothed over 5 bins so that noise makes no peaks.
-Histogram histogram_of(const Volume& volume, std::optional<int>& padding) {
-  std::vector<int64_t> full(65536, 0);
-  for (int16_t v : volume.hu) ++full[size_t(int(v) + 32768)];
-  padding = leave_out_padding(full, int64_t(volume.hu.size()));
+// Whether `value` is a spike near the grid's axis too (within 40 % of the smaller half-width):
+// a scanner reconstructs there, so the spike is the air of a scan without noise (a synthetic
+// one), not padding.
+bool spike_near_the_axis(const Volume& volume, int value) {
+  const auto& g = volume.geometry;
+  const double ci = (g.size.x() - 1) / 2.0, cj = (g.size.y() - 1) / 2.0;
+  const double reach = 0.4 * std::min(ci * g.spacing.x(), cj * g.spacing.y());
+  int64_t at = 0, below = 0, above = 0;
+  for (int k = 0; k < g.size.z(); k += 2)
+    for (int j = 0; j < g.size.y(); j += 2)
+      for (int i = 0; i < g.size.x(); i += 2) {
+        if (std::hypot((i - ci) * g.spacing.x(), (j - cj) * g.spacing.y()) > reach) continue;
+        const int v = volume.at(i, j, k);
+        at += v == value, below += v == value - 1, above += v == value + 1;
+      }
+  return at > 2 * std::max(below, above) + 10;
+}
+
+// The counts of every value (`full`, indexed by value + 32768) over their central 99.8 %
+// (`left_out` not counted), smoothed over 5 bins so
+// that noise makes no peaks.
+Histogram histogram_of(std::vector<int64_t> full, std::optional<int> left_out) {
+  if (left_out) full[size_t(*left_out + 32768)] = 0;
   int64_t total = 0;
   for (int64_t count : full) total += count;
   auto percentile = [&](double share) {
@@ -87,7 +107,12 @@ std::string GreyCalibration::describe() const {
 GreyCalibration estimate_grey_calibration(const Volume& volume) {
   GreyCalibration calibration;
   if (volume.hu.empty()) return calibration;
-  const Histogram h = histogram_of(volume, calibration.padding);
+  std::vector<int64_t> full(65536, 0);
+  for (int16_t v : volume.hu) ++full[size_t(int(v) + 32768)];
+  const int64_t total = int64_t(volume.hu.size());
+  calibration.padding = spike_below_air(full, total);
+  if (calibration.padding && spike_near_the_axis(volume, *calibration.padding)) calibration.padding.reset();
+  const Histogram h = histogram_of(full, calibration.padding);
   // Air and soft tissue lie about 1000 HU apart, a large share of any head scan's range: peaks
   // closer than a tenth of the range are one tissue's noise or fat beside muscle.
   const auto peaks = peaks_of(h, kBins / 10);

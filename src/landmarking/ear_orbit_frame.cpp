@@ -13,6 +13,7 @@ namespace {
 constexpr double kSpacingMm = 1.0;
 constexpr double kPitchReachDeg = 30, kPitchStepDeg = 5;
 constexpr double kMaxCanalMismatchMm = 15;  // the two canals' heights and depths differ by less
+constexpr double kMaxMisplacementMm = 5;    // an orbitale this far from where its pitch put it is another edge
 
 struct Porions {
   Eigen::Vector3d left, right;
@@ -43,25 +44,38 @@ std::optional<Porions> find_porions_anywhere(const HeadVolume& v, const MidlineE
 Eigen::Vector3d forward_at(double pitch_deg) { return {0, -std::cos(pitch_deg * kDeg), std::sin(pitch_deg * kDeg)}; }
 
 struct Orbitales {
-  Eigen::Vector3d middle{0, 0, 0};
-  double misplacement_mm = 1e9;  // from where the pitch put them
+  Eigen::Vector3d middle{0, 0, 0};  // of the rims found
+  int found = 0;                    // 1 when one orbit lies at the field's edge
+  double misplacement_mm = 0;       // mean distance from where the pitch put them
+
+  // Two rims beat one; then the nearer to where they were expected.
+  bool better_than(const Orbitales& other) const {
+    return found != other.found ? found > other.found : misplacement_mm < other.misplacement_mm;
+  }
 };
 
-// The orbitales where Frankfort rising `pitch_deg` from the porions would put them.
+// The orbitales where Frankfort rising `pitch_deg` from the porions would put them: those found
+// with full evidence within kMaxMisplacementMm of that place (a pitch 2.5 degrees off, half the
+// search's step, moves them 3.4 mm; farther, the rule has read another edge of the face).
 std::optional<Orbitales> orbitales_at_pitch(const HeadVolume& v, const Porions& po, double scale, double pitch_deg) {
   // The template's orbitale lies level with the porion, 77 mm in front and 29 mm nearer the midline.
   const Eigen::Vector3d to_orbitale = expected_position("OrL", scale) - expected_position("PoL", scale);
   Orbitales o;
-  o.misplacement_mm = 0;
   for (int side : {-1, 1}) {
     const Eigen::Vector3d porion = side > 0 ? po.left : po.right;
     Eigen::Vector3d expected = porion + std::abs(to_orbitale.y()) * forward_at(pitch_deg);
     expected.x() = side * std::abs(expected_position("OrL", scale).x());
     const RuleFinding f = find_orbitale(v, expected, side);
-    if (!f.position || f.evidence < 0.5) return std::nullopt;
-    o.middle += *f.position / 2;
-    o.misplacement_mm += (*f.position - expected).tail<2>().norm() / 2;
+    if (!f.position || f.evidence < 0.5) continue;
+    const double misplacement = (*f.position - expected).tail<2>().norm();
+    if (misplacement > kMaxMisplacementMm) continue;
+    o.middle += *f.position;
+    o.misplacement_mm += misplacement;
+    ++o.found;
   }
+  if (o.found == 0) return std::nullopt;
+  o.middle /= o.found;
+  o.misplacement_mm /= o.found;
   return o;
 }
 
@@ -79,7 +93,7 @@ std::optional<EarOrbitFrame> frame_from_ears_and_orbits(const Volume& ct, const 
   std::optional<Orbitales> best;
   for (double pitch = -kPitchReachDeg; pitch <= kPitchReachDeg + 1e-9; pitch += kPitchStepDeg) {
     const auto o = orbitales_at_pitch(v, *po, scale, pitch);
-    if (o && (!best || o->misplacement_mm < best->misplacement_mm)) best = o;
+    if (o && (!best || o->better_than(*best))) best = o;
   }
   if (!best) {
     why = "no inferior orbital rims in front of the ear canals";

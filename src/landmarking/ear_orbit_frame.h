@@ -8,8 +8,9 @@
 //     plane puts them (the side is known, the height and depth are not): the head's size (the
 //     porions lie 123.5 mm apart at scale 1) and the back end of Frankfort;
 //  2. the orbits' lower rims, sought where each pitch within +-30 degrees would put them in
-//     front of the porions; the pitch whose rims are found closest to where it put them wins,
-//     and the line from the porions' midpoint to the orbitales' midpoint is Frankfort.
+//     front of the porions; the pitch whose rims are found closest to where it put them wins
+//     (two rims before one: an orbit may lie at the field's edge), and the line from the
+//     porions' midpoint to the orbitales' midpoint is Frankfort.
 //
 // The frame's origin is then where sella lies over Frankfort in the landmark template.
 #include <optional>
@@ -36,7 +37,7 @@ struct EarOrbitFrame {
 };
 
 // `sagittal`: frame -> LPS whose x is the midsagittal normal and whose pitch is the scan's.
-// nullopt, with the reason in `why`, when either ear canal or both orbital rims are not found.
+// nullopt, with the reason in `why`, when either ear canal, or both orbital rims, are not found.
 std::optional<EarOrbitFrame> frame_from_ears_and_orbits(const Volume& ct, const GreyCalibration& grey,
                                                         const Eigen::Isometry3d& sagittal, const MidlineExtent& extent,
                                                         std::string& why);

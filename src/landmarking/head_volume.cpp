@@ -31,6 +31,9 @@ HeadVolume::HeadVolume(const Volume& ct, const GreyCalibration& grey, const Eige
     const size_t begin = size_t(g.index(0, 0, first)), end = size_t(g.index(0, 0, last));
     for (size_t i = begin; i < end; ++i) {
       int16_t& v = volume_.hu[i];
+      // The scanner's padding (a cone-beam scan's corners outside its cylinder) was not scanned
+      // either; it keeps its value, which reads as air.
+      if (grey.padding && v == *grey.padding) scanned_[i] = 0;
       if (v == kOutside) {
         scanned_[i] = 0;
         v = -1000;

@@ -25,7 +25,8 @@ class HeadVolume {
 
   // HU at a point of the frame (trilinear; outside the box: -1000).
   double hu(const Eigen::Vector3d& p) const;
-  // Whether the point lies inside the scanned field (not padded with air by the resampling).
+  // Whether the point lies inside the scanned field (not padded with air by the resampling, nor
+  // the scanner's padding value: GreyCalibration::padding).
   bool scanned(const Eigen::Vector3d& p) const;
   Eigen::Vector3d to_lps(const Eigen::Vector3d& p) const { return frame_to_lps_ * p; }
   const Eigen::Isometry3d& frame_to_lps() const { return frame_to_lps_; }

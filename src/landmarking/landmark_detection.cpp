@@ -25,6 +25,7 @@ constexpr double kSurfaceSpacingMm = 1.5;       // the symmetry search's grid
 constexpr double kCoarseSpacingMm = 1.0;        // the frame-finding head volumes
 constexpr double kMinBoneCm3 = 40;              // less is not a skull
 constexpr double kMinSnMm = 56, kMaxSnMm = 91;  // the scales the detector accepts (0.8-1.3) times 70 mm
+constexpr double kFieldEdgeMarginMm = 3;        // a landmark needs the field around it this far
 constexpr double kSizeChangeToRefind = 0.03;  // S-N found again longer or shorter than this share: the first was wrong
 
 // A frame (frame -> LPS) with the given axes (columns) and origin.
@@ -193,6 +194,20 @@ Eigen::Isometry3d with_sella_and_nasion_found_again(const Volume& ct, const Grey
   return pitched(frame, *n.position - s->centre, kSnAboveFrankfortDeg, s->centre);
 }
 
+// A point whose surroundings the field's edge cuts (the chin at a cone-beam field's floor, a
+// porion at its cylinder's wall) cannot be told from the cut: the bone's extreme may be the
+// edge's. Such a point is reported absent rather than invented.
+void leave_out_points_at_the_field_edge(const HeadVolume& head, Findings& found) {
+  for (auto& [label, f] : found) {
+    if (!f.position) continue;
+    bool inside = head.scanned(*f.position);
+    for (int axis = 0; axis < 3 && inside; ++axis)
+      for (double d : {-kFieldEdgeMarginMm, kFieldEdgeMarginMm})
+        inside = inside && head.scanned(*f.position + d * Eigen::Vector3d::Unit(axis));
+    if (!inside) f = RuleFinding::absent("at the edge of the scanned field: the anatomy around it was not scanned");
+  }
+}
+
 // The head frame before Frankfort is measured in it: origin at sella and S-N rising 7 degrees,
 // or, when the field holds no sella or no nasion, Frankfort from the ear canals and orbits.
 // Sets the result's scale and frame source.
@@ -285,6 +300,7 @@ LandmarkDetection detect_landmarks(const Volume& scan, const std::string& subjec
   for (int side : {-1, 1}) find_first_molars(head, result.scale, side, found);
   find_soft_tissue_profile(head, result.scale, found);
 
+  leave_out_points_at_the_field_edge(head, found);
   FramePoints points;
   for (const auto& [label, f] : found)
     if (f.position) points[label] = *f.position;

@@ -354,8 +354,12 @@ void find_soft_tissue_profile(const HeadVolume& v, double scale, Findings& found
   auto record = [&](const char* label, const std::optional<ProfilePoint>& p, const char* what) {
     found[label] = p ? RuleFinding::found(midline_point(*p), 1) : RuleFinding::absent(what);
   };
-  const auto ns = extreme_between(n.z() - 10, n.z() + 12, +1);
-  record("NS", ns, "no skin in front of nasion");
+  // The soft-tissue nasion overlies the frontonasal suture: without a nasion (a field cut above
+  // the nose) its concavity is not known to be there.
+  if (found.count("N") && found.at("N").position)
+    record("NS", extreme_between(n.z() - 10, n.z() + 12, +1), "no skin in front of nasion");
+  else
+    found["NS"] = RuleFinding::absent("needs the nasion");
   const Eigen::Vector3d prn_expected = expected_position("Prn", scale);
   const auto prn = extreme_between(prn_expected.z() - 15, prn_expected.z() + 15, -1);
   record("Prn", prn, "no nose in the scanned field");

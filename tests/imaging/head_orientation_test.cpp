@@ -87,24 +87,36 @@ TEST(GreyCalibration, FindsAirAndSoftTissueInHuAndInAnyLinearScale) {
 }
 
 // A cone-beam scanner pads the corners outside its reconstructed cylinder with one value at or
-// below air's. Those voxels are no tissue: taken for air, they would make every value read wrong.
+// below air's. Those voxels are no tissue: taken for air, they would make every value read wrong;
+// the calibration names the value (the landmarks take it for unscanned).
 TEST(GreyCalibration, ThePaddingOutsideTheReconstructedFieldIsNotAir) {
-  Volume padded = with_grey_scale(phantom_ct(), 0.8, 300);  // air at -500, soft tissue at 332
-  const VolumeGeometry& g = padded.geometry;
-  const Eigen::Vector3d centre = g.world(g.size.cast<double>() / 2);
-  int64_t padding = 0;
-  for (int k = 0; k < g.size.z(); ++k)
-    for (int j = 0; j < g.size.y(); ++j)
-      for (int i = 0; i < g.size.x(); ++i)
-        if ((g.world(Eigen::Vector3d(i, j, k)) - centre).head<2>().norm() > 80) {
-          padded.at(i, j, k) = -700;  // 200 below air
-          ++padding;
-        }
-  ASSERT_GT(double(padding) / double(padded.hu.size()), 0.2);  // as many padded voxels as air ones, or more
-  const GreyCalibration found = estimate_grey_calibration(padded);
-  ASSERT_TRUE(found.from_histogram);
-  EXPECT_NEAR(found.air, -500, 30);
-  EXPECT_NEAR(found.soft_tissue, 332, 30);
+  for (const int16_t padding_value : {-700, -900}) {          // 200 and 400 below air
+    Volume padded = with_grey_scale(phantom_ct(), 0.8, 300);  // air at -500, soft tissue at 332
+    const VolumeGeometry& g = padded.geometry;
+    const Eigen::Vector3d centre = g.world(g.size.cast<double>() / 2);
+    int64_t padding = 0;
+    for (int k = 0; k < g.size.z(); ++k)
+      for (int j = 0; j < g.size.y(); ++j)
+        for (int i = 0; i < g.size.x(); ++i)
+          if ((g.world(Eigen::Vector3d(i, j, k)) - centre).head<2>().norm() > 80) {
+            padded.at(i, j, k) = padding_value;
+            ++padding;
+          }
+    ASSERT_GT(double(padding) / double(padded.hu.size()), 0.2);  // as many padded voxels as air ones, or more
+    const GreyCalibration found = estimate_grey_calibration(padded);
+    ASSERT_TRUE(found.from_histogram);
+    EXPECT_NEAR(found.air, -500, 30) << padding_value;
+    EXPECT_NEAR(found.soft_tissue, 332, 30) << padding_value;
+    ASSERT_TRUE(found.padding) << padding_value;
+    EXPECT_EQ(*found.padding, padding_value);
+  }
+  // The phantom as it is (noisy air, no padding) has none; a scan without noise has its air as
+  // a spike too, which is still air.
+  EXPECT_FALSE(estimate_grey_calibration(phantom_ct()).padding);
+  const Volume quiet = make_phantom({.noise_sigma_hu = 0}).ct;
+  const GreyCalibration noiseless = estimate_grey_calibration(quiet);
+  EXPECT_FALSE(noiseless.padding);
+  EXPECT_NEAR(noiseless.air, -1000, 30);
 }
 
 TEST(HeadOrientation, ScansNotInHounsfieldUnitsAreCheckedAlike) {
