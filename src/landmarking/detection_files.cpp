@@ -83,6 +83,7 @@ Json detection_json(const LandmarkDetection& d) {
           {"asymmetry_mm", d.asymmetry_mm},
           {"scale", d.scale},
           {"grey_values", d.grey.describe()},
+          {"cone_beam_cupping_undone", d.cupping},
           {"landmarks", landmarks}};
 }
 

@@ -27,7 +27,9 @@
 
 namespace maxillo::landmarking {
 
-inline constexpr const char* kMethodVersion = "maxillo-landmarks 1";
+// The method's version, stored with every automatic set: 2 reads cone-beam scans (their cupping
+// undone, a frame from the ears and orbits, nothing taken at the field's edge).
+inline constexpr const char* kMethodVersion = "maxillo-landmarks 2";
 
 struct DetectedLandmark {
   std::string label;

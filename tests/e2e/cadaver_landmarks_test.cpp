@@ -42,7 +42,7 @@ TEST(CadaverNoHands, AReportAndAPlanWithoutALandmarkFile) {
 
   ASSERT_EQ(run_command(maxillo + " -q report 1 --out " + quote(folder / "report.pdf")).exit_code, 0);
   const std::string text = testing::pdf_text(folder / "report.pdf");
-  EXPECT_NE(text.find("found automatically (maxillo-landmarks 1)"), std::string::npos) << text.substr(0, 3000);
+  EXPECT_NE(text.find("found automatically (maxillo-landmarks 2)"), std::string::npos) << text.substr(0, 3000);
   EXPECT_NE(text.find("SNA"), std::string::npos);
   EXPECT_EQ(text.find("No landmarks are attached"), std::string::npos);
 

@@ -44,5 +44,32 @@ TEST(LandmarksCommand, DetectsTheSamplesLandmarksIntoCsvAndMarkups) {
   EXPECT_NE(unknown.err.find("unknown landmark label 'Xx'"), std::string::npos) << unknown.err;
 }
 
+// A cone-beam sample (grey values that are not HU, cupping, metal streaks, a cut field) through
+// the same command: the grey scale and the cupping found are said, and the points the field
+// holds come out near the sample's own.
+TEST(LandmarksCommand, ReadsAConeBeamSample) {
+  testing::TemporaryFolder folder("landmarks-command-cbct");
+  ASSERT_EQ(
+      testing::run_maxillo(
+          {"sample", "--vary", "--cbct", "--patient-id", "BENCH-003", "--out", (folder / "cb").string()}, folder.path())
+          .exit_code,
+      0);
+  const auto run = testing::run_maxillo(
+      {"landmarks", "detect", (folder / "cb" / "ct").string(), "--out", (folder / "found.csv").string(), "--json"},
+      folder.path());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const Json document = Json::parse(run.out);
+  EXPECT_EQ(document["method"], "maxillo-landmarks 2");
+  EXPECT_NE(document["grey_values"].get<std::string>().find("mapped to -1000 and 40 HU"), std::string::npos)
+      << document["grey_values"];
+  EXPECT_GT(document["cone_beam_cupping_undone"].get<double>(), 0.05);
+  const LandmarkSet found = read_landmarks(folder / "found.csv");
+  const LandmarkSet truth = read_landmarks(folder / "cb" / "landmarks.csv");
+  for (const char* label : {"S", "N", "ANS", "PNS", "Me", "OrL", "PoR", "U6R"})
+    if (find_landmark(truth, label) && find_landmark(found, label))
+      EXPECT_LT((*find_landmark(found, label) - *find_landmark(truth, label)).norm(), 1.5) << label;
+  EXPECT_GE(found.size(), 24u);
+}
+
 }  // namespace
 }  // namespace maxillo
