@@ -5,7 +5,7 @@
 namespace maxillo {
 
 // kAllArtefactKinds lists every kind: the last enumerator closes the list.
-static_assert(std::size(kAllArtefactKinds) == size_t(ArtefactKind::kOrientation) + 1);
+static_assert(std::size(kAllArtefactKinds) == size_t(ArtefactKind::kLandmarkRender) + 1);
 
 std::string kind_name(ArtefactKind kind) {
   switch (kind) {
@@ -32,6 +32,7 @@ std::string kind_name(ArtefactKind kind) {
     case ArtefactKind::kChartWits: return "chart-wits";
     case ArtefactKind::kReport: return "report";
     case ArtefactKind::kOrientation: return "orientation";
+    case ArtefactKind::kLandmarkRender: return "landmark-render";
   }
   return "unknown";
 }

@@ -32,6 +32,7 @@ enum class ArtefactKind {
   kChartWits,            // the Wits appraisal over the follow-up (PNG)
   kReport,               // the consultation report (PDF)
   kOrientation,          // the CT's header checked against the anatomy, or confirmed by hand (JSON)
+  kLandmarkRender,       // the landmarks drawn on bone and skin, one picture per view (PNG)
 };
 
 // Every kind, in the order above (for tables and tests).
@@ -47,7 +48,7 @@ inline constexpr ArtefactKind kAllArtefactKinds[] = {
     ArtefactKind::kSimulationImage,     ArtefactKind::kValidation,
     ArtefactKind::kValidationDistances, ArtefactKind::kValidationImage,
     ArtefactKind::kChartWits,           ArtefactKind::kReport,
-    ArtefactKind::kOrientation};
+    ArtefactKind::kOrientation,         ArtefactKind::kLandmarkRender};
 
 // The name the index stores: "landmarks", "plan-result", "render-skin-frontal", ...
 std::string kind_name(ArtefactKind kind);

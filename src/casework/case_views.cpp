@@ -30,6 +30,7 @@ std::string artefact_kind(ViewedTissue tissue, render::StandardView view) {
     case StandardView::Frontal:
       return kind_name(skin ? ArtefactKind::kRenderSkinFrontal : ArtefactKind::kRenderBoneFrontal);
     case StandardView::Lateral:
+    case StandardView::LeftLateral:  // not among the case's views
       return kind_name(skin ? ArtefactKind::kRenderSkinLateral : ArtefactKind::kRenderBoneLateral);
     case StandardView::Oblique:
       return kind_name(skin ? ArtefactKind::kRenderSkinOblique : ArtefactKind::kRenderBoneOblique);

@@ -1,5 +1,7 @@
 #include "ceph/landmark.h"
 
+#include <algorithm>
+#include <array>
 #include <cstdio>
 
 #include "core/error.h"
@@ -23,6 +25,18 @@ std::optional<Eigen::Vector3d> bilateral_mean(const LandmarkSet& set, const std:
   if (right && left) return 0.5 * (*right + *left);
   if (auto single = find_landmark(set, label)) return single;
   return right ? right : left;
+}
+
+bool is_bilateral_base(const std::string& label) {
+  static constexpr std::array kBilateralBases = {"Or", "Po", "Go", "Ar", "Co", "U6", "L6", "U5", "L5", "U4", "L4"};
+  return std::find(kBilateralBases.begin(), kBilateralBases.end(), label) != kBilateralBases.end();
+}
+
+std::optional<std::string> bilateral_base(const std::string& label) {
+  if (label.size() < 2 || (label.back() != 'R' && label.back() != 'L')) return std::nullopt;
+  std::string base = label.substr(0, label.size() - 1);
+  if (!is_bilateral_base(base)) return std::nullopt;
+  return base;
 }
 
 std::string landmarks_hash(const LandmarkSet& set) {

@@ -32,6 +32,11 @@ Eigen::Vector3d require_landmark(const LandmarkSet& set, const std::string& labe
 // unsuffixed label (a 2D cephalogram), else whichever side exists.
 std::optional<Eigen::Vector3d> bilateral_mean(const LandmarkSet& set, const std::string& label);
 
+// The bilateral landmarks' names without side (Or, Po, Go, Ar, Co, U6, L6, U5, L5, U4, L4).
+bool is_bilateral_base(const std::string& label);
+// "GoR" -> "Go" for a known bilateral landmark with an R/L suffix; nullopt otherwise (midline).
+std::optional<std::string> bilateral_base(const std::string& label);
+
 // SHA-256 of the labels and positions (to 1 µm) in order: what derivation keys use to name a
 // landmark set.
 std::string landmarks_hash(const LandmarkSet& set);

@@ -12,16 +12,6 @@ namespace maxillo {
 namespace {
 
 constexpr std::array kMidlineLabels = {"S", "N", "A", "B", "ANS", "PNS", "Pog", "Gn", "Me", "Si"};
-constexpr std::array kBilateralBases = {"Or", "Po", "Go", "Ar", "Co", "U6", "L6", "U5", "L5", "U4", "L4"};
-
-// "GoR" -> "Go" when the base is a known bilateral landmark; nullopt otherwise.
-std::optional<std::string> bilateral_base(const std::string& label) {
-  if (label.size() < 2 || (label.back() != 'R' && label.back() != 'L')) return std::nullopt;
-  std::string base = label.substr(0, label.size() - 1);
-  for (const char* known : kBilateralBases)
-    if (base == known) return base;
-  return std::nullopt;
-}
 
 // Midline labels as they are; bilateral pairs as the mean of the sides present.
 std::map<std::string, Eigen::Vector3d> merge_bilateral(const LandmarkSet& landmarks) {
@@ -43,9 +33,7 @@ std::map<std::string, Eigen::Vector3d> merge_bilateral(const LandmarkSet& landma
 bool is_mid_sagittal(const std::string& label) {
   for (const char* m : kMidlineLabels)
     if (label == m) return true;
-  for (const char* b : kBilateralBases)
-    if (label == b) return true;
-  return false;
+  return is_bilateral_base(label);
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 #include "records/case_landmarks.h"
 #include "sections/cephalometry_section.h"
 #include "sections/landmark_section.h"
+#include "casework/landmark_views.h"
 #include "records/derivation.h"
 #include "records/plan_archive.h"
 #include "sections/planning_section.h"
@@ -190,6 +191,9 @@ ConsultationResult write_consultation_report(Archive& archive, int64_t case_id, 
   }
   const LandmarkSet landmarks = stored_landmarks ? stored_landmarks->landmarks : LandmarkSet{};
   auto views = casework::case_views(archive, case_id, surfaces, landmarks, options.views);
+  std::vector<casework::LandmarkView> landmark_pictures;
+  if (stored_landmarks && !stored_landmarks->landmarks.empty())
+    landmark_pictures = casework::landmark_views(archive, case_id, surfaces, *stored_landmarks, options.views);
   result.seconds_views = seconds_since(start);
   progress.advance();
 
@@ -202,8 +206,8 @@ ConsultationResult write_consultation_report(Archive& archive, int64_t case_id, 
   model.sections.push_back(
       summary_section(contents, series, surfaces, landmark_summary(stored_landmarks, detection_failure), orientation));
   model.sections.push_back(views_section(views));
-  if (auto landmarks_page =
-          sections::landmark_section(stored_landmarks, records::newest_automatic_landmarks(archive, case_id)))
+  if (auto landmarks_page = sections::landmark_section(
+          stored_landmarks, records::newest_automatic_landmarks(archive, case_id), landmark_pictures))
     model.sections.push_back(std::move(*landmarks_page));
   model.sections.push_back(sections::case_cephalometry_section(archive, case_id, sex_for_norms(contents.patient.sex)));
   if (auto plan_result = records::latest_plan_result(archive, case_id))

@@ -18,6 +18,7 @@ Eigen::Vector3d towards_camera(StandardView view, const AnatomicalFrame& frame) 
     case StandardView::Frontal: return frame.anterior;
     case StandardView::Lateral: return right;
     case StandardView::Oblique: return (frame.anterior + right).normalized();
+    case StandardView::LeftLateral: return frame.left;
   }
   return frame.anterior;
 }
@@ -29,12 +30,13 @@ std::string_view name_of(StandardView view) {
     case StandardView::Frontal: return "frontal";
     case StandardView::Lateral: return "lateral";
     case StandardView::Oblique: return "oblique";
+    case StandardView::LeftLateral: return "left-lateral";
   }
   return "frontal";
 }
 
 std::optional<StandardView> parse_standard_view(std::string_view name) {
-  for (auto view : {StandardView::Frontal, StandardView::Lateral, StandardView::Oblique})
+  for (auto view : {StandardView::Frontal, StandardView::Lateral, StandardView::Oblique, StandardView::LeftLateral})
     if (name == name_of(view)) return view;
   return std::nullopt;
 }

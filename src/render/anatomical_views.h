@@ -7,6 +7,8 @@
 //   Lateral : right profile, the orthodontic standard: camera on the patient's right, the face
 //             pointing to the image's right.
 //   Oblique : 45 degrees between frontal and right lateral (right-front).
+//   LeftLateral : left profile, the face pointing to the image's left (what the right lateral
+//             hides: the left-sided landmarks).
 #include <Eigen/Core>
 #include <optional>
 #include <string_view>
@@ -16,9 +18,9 @@
 
 namespace maxillo::render {
 
-enum class StandardView { Frontal, Lateral, Oblique };
+enum class StandardView { Frontal, Lateral, Oblique, LeftLateral };
 
-std::string_view name_of(StandardView view);                             // "frontal", "lateral", "oblique"
+std::string_view name_of(StandardView view);  // "frontal", "lateral", "oblique", "left-lateral"
 std::optional<StandardView> parse_standard_view(std::string_view name);  // inverse of name_of
 
 // Fraction of the image left free around the scene's projection on each side.

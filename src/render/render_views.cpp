@@ -18,6 +18,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "render/marker_overlay.h"
 #include "render/offscreen_context_impl.h"
 #include "render/vtk_scene_builder.h"
 #include "render/window_image.h"
@@ -108,8 +109,12 @@ std::vector<RgbImage> render_scene(const Scene& scene, std::span<const Camera> c
   std::vector<RgbImage> images;
   for (const auto& camera : cameras) {
     apply_camera(*renderer, bar_renderer ? widened_for_viewport(camera, kSceneWidthWithBar) : camera);
+    // The markers' labels are laid out anew for each camera: where they go depends on the view.
+    const auto overlay = marker_props(*renderer, scene.markers);
+    for (const auto& prop : overlay) renderer->AddViewProp(prop);
     window.Render();
     images.push_back(grab_window(window));
+    for (const auto& prop : overlay) renderer->RemoveViewProp(prop);
     if (images.back().width != settings.size.width || images.back().height != settings.size.height)
       throw Error(ErrorCode::kRenderFailed, "OSMesa", "read back an image of the wrong size");
   }

@@ -40,8 +40,18 @@ struct SceneMesh {
   std::optional<VertexScalars> scalars;
 };
 
+// A marked point (a landmark), drawn over the meshes so that a point inside the skull (the sella)
+// stays visible: a disc with a dark rim, and its label beside it where it hides no other label
+// or marker (render/label_layout.h), joined to the disc by a line when it had to move away.
+struct SceneMarker {
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();  // LPS mm
+  std::string label;
+  ColourRGB colour;
+};
+
 struct Scene {
   std::vector<SceneMesh> meshes;
+  std::vector<SceneMarker> markers;  // drawn in this order; earlier labels get the nearer places
 };
 
 enum class Projection {
@@ -58,7 +68,7 @@ struct Camera {
   double view_angle_deg = 15;      // Perspective: full vertical angle
 };
 
-// Axis-aligned bounds of everything in a scene (LPS mm). Empty when min > max.
+// Axis-aligned bounds of a scene's meshes (LPS mm; markers do not count). Empty when min > max.
 struct Bounds {
   Eigen::Vector3d min = Eigen::Vector3d::Constant(1e300);
   Eigen::Vector3d max = Eigen::Vector3d::Constant(-1e300);

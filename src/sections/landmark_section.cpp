@@ -54,10 +54,25 @@ report::Table comparison_table(const records::StoredLandmarks& given, const reco
   return table;
 }
 
+// The pictures two to a row (large enough to read the labels), with what the colours mean.
+void add_pictures(report::Section& section, const records::StoredLandmarks& stored,
+                  const std::vector<casework::LandmarkView>& pictures) {
+  if (pictures.empty()) return;
+  report::ImageGrid grid;
+  grid.per_row = 2;
+  for (const auto& p : pictures) grid.figures.push_back({p.png, p.caption});
+  section.blocks.push_back(std::move(grid));
+  section.blocks.push_back(report::Note{
+      stored.automatic ? "Blue: found automatically, every check passed. Orange: flagged (see the table), not used for "
+                         "planning until confirmed. Points inside the skull (the sella) are drawn over the bone."
+                       : "Green: given with the case. Points inside the skull (the sella) are drawn over the bone."});
+}
+
 }  // namespace
 
 std::optional<report::Section> landmark_section(const std::optional<records::StoredLandmarks>& stored,
-                                                const std::optional<records::StoredLandmarks>& automatic_beside) {
+                                                const std::optional<records::StoredLandmarks>& automatic_beside,
+                                                const std::vector<casework::LandmarkView>& pictures) {
   if (!stored || stored->landmarks.empty()) return std::nullopt;
   report::Section section{"landmarks", {}};
   if (stored->automatic) {
@@ -69,6 +84,7 @@ std::optional<report::Section> landmark_section(const std::optional<records::Sto
   } else {
     section.blocks.push_back(report::Paragraph{"Attached to the case (" + stored->source + ")."});
   }
+  add_pictures(section, *stored, pictures);
   section.blocks.push_back(landmark_table(*stored));
   section.blocks.push_back(report::Note{"Positions in the patient frame (LPS), millimetres."});
   if (!stored->automatic && automatic_beside && automatic_beside->automatic) {

@@ -3,9 +3,12 @@
 // surgeon can check them at a glance: label, position (LPS mm), where it came from (a file or
 // the automatic detection), the detection's confidence and status (flagged ones with their
 // failed checks; absent ones with the reason); and, when an automatic set was stored beside a set
-// given by hand, how far each automatic landmark lies from the given one.
+// given by hand, how far each automatic landmark lies from the given one. With the pictures of
+// casework/landmark_views.h the section opens with the landmarks drawn on bone and skin.
 #include <optional>
+#include <vector>
 
+#include "casework/landmark_views.h"
 #include "records/case_landmarks.h"
 #include "report/report_model.h"
 
@@ -14,7 +17,9 @@ namespace maxillo::sections {
 // nullopt: the case has no landmarks (the section is left out; the summary says why).
 // `automatic_beside`: an automatic set stored beside a set given by hand (which the case uses):
 // the distance of each of its landmarks from the given one is shown after the table.
+// `pictures`: the set drawn on bone and skin (casework::landmark_views), shown first.
 std::optional<report::Section> landmark_section(const std::optional<records::StoredLandmarks>& stored,
-                                                const std::optional<records::StoredLandmarks>& automatic_beside = {});
+                                                const std::optional<records::StoredLandmarks>& automatic_beside = {},
+                                                const std::vector<casework::LandmarkView>& pictures = {});
 
 }  // namespace maxillo::sections

@@ -43,9 +43,10 @@ TEST_F(DemoTest, ReportPassesQpdfCheck) {
 TEST_F(DemoTest, ReportTextIsExtractable) {
   ASSERT_TRUE(std::filesystem::exists(report()));
   auto text = testing::pdf_text(report());
-  for (const char* expected : {"Phantom, Maxillo", "MAXILLO-PHANTOM-001", "Synthetic craniofacial phantom", "CT",
-                               "skin, frontal", "skin, lateral", "bone, oblique", "Frankfort frame", "Case contents",
-                               "SNA", "ANB", "surface-skin", "page 1 of"})
+  for (const char* expected :
+       {"Phantom, Maxillo", "MAXILLO-PHANTOM-001", "Synthetic craniofacial phantom", "CT", "skin, frontal",
+        "skin, lateral", "bone, oblique", "Frankfort frame", "Case contents", "SNA", "ANB", "surface-skin", "page 1 of",
+        "right lateral: midline and right-sided landmarks", "left lateral: left-sided landmarks"})
     EXPECT_NE(text.find(expected), std::string::npos) << "missing text: " << expected;
 }
 
@@ -53,7 +54,8 @@ TEST_F(DemoTest, ReportHasRealRenderedViews) {
   ASSERT_TRUE(std::filesystem::exists(report()));
   EXPECT_GE(testing::pdf_page_count(report()), 1);
   auto views = testing::pdf_images(report(), folder_->path() / "images");
-  EXPECT_EQ(views.size(), 27u) << "frontal, lateral and oblique views of skin and of bone, the occlusionogram, the "
+  EXPECT_EQ(views.size(), 30u) << "frontal, lateral and oblique views of skin and of bone, the landmarks drawn in "
+                                  "three views, the occlusionogram, the "
                                   "splint, the Wits chart, three views of the planned skeleton, the face before, "
                                   "predicted and its displacement map (3 views each), the uncertainty band (2), the "
                                   "validation's error maps (3) and profiles expected";
@@ -74,7 +76,8 @@ TEST_F(DemoTest, ReportIsStoredInTheArchiveAndVerifies) {
   EXPECT_EQ(verify.exit_code, 0) << verify.output;
   auto show =
       run_command(std::string(MAXILLO_BINARY) + " --json --archive " + quote(archive) + " show case:1 2>/dev/null");
-  for (const char* kind : {"\"report\"", "\"surface-skin\"", "\"render-bone-lateral\"", "\"landmarks\""})
+  for (const char* kind :
+       {"\"report\"", "\"surface-skin\"", "\"render-bone-lateral\"", "\"landmarks\"", "\"landmark-render\""})
     EXPECT_NE(show.output.find(kind), std::string::npos) << kind << " missing in " << show.output;
 }
 

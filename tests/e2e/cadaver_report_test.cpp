@@ -32,13 +32,19 @@ TEST(CadaverReport, WrapImportAndReport) {
   EXPECT_NE(text.find("found automatically"), std::string::npos) << text.substr(0, 2000);
   EXPECT_NE(text.find("SNA"), std::string::npos) << "the cephalometry of the automatic landmarks";
   auto views = testing::pdf_images(folder / "report.pdf", folder / "images");
-  ASSERT_EQ(views.size(), 6u);
+  ASSERT_EQ(views.size(), 9u) << "three views of skin and of bone, and the landmarks drawn in three views";
   for (const auto& view : views) EXPECT_GT(view.foreground_fraction, 0.1) << view.file;
+  // The landmark page: each landmark drawn and labelled, the views named by what they show.
+  EXPECT_NE(text.find("right lateral: midline and right-sided landmarks"), std::string::npos);
+  EXPECT_NE(text.find("left lateral: left-sided landmarks"), std::string::npos);
 
   // A second report reuses the stored surfaces and renders (same derivation keys).
   auto again = run_command(maxillo + " --json report CTHEAD-UNC --out " + quote(folder / "again.pdf") + " 2>/dev/null");
   ASSERT_EQ(again.exit_code, 0);
   EXPECT_NE(again.output.find("\"surfaces_reused\": true"), std::string::npos) << again.output;
+  // ... and the landmark pictures: still three of them in the archive.
+  auto show = run_command(maxillo + " --json show case:1 2>/dev/null");
+  EXPECT_EQ(testing::count_of(show.output, "\"landmark-render\""), 3u) << show.output;
 }
 
 }  // namespace

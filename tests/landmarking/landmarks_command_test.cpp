@@ -65,9 +65,11 @@ TEST(LandmarksCommand, ReadsAConeBeamSample) {
   EXPECT_GT(document["cone_beam_cupping_undone"].get<double>(), 0.05);
   const LandmarkSet found = read_landmarks(folder / "found.csv");
   const LandmarkSet truth = read_landmarks(folder / "cb" / "landmarks.csv");
-  for (const char* label : {"S", "N", "ANS", "PNS", "Me", "OrL", "PoR", "U6R"})
-    if (find_landmark(truth, label) && find_landmark(found, label))
+  for (const char* label : {"S", "N", "ANS", "PNS", "Me", "OrL", "PoR", "U6R"}) {
+    if (find_landmark(truth, label) && find_landmark(found, label)) {
       EXPECT_LT((*find_landmark(found, label) - *find_landmark(truth, label)).norm(), 1.5) << label;
+    }
+  }
   EXPECT_GE(found.size(), 24u);
 }
 

@@ -150,8 +150,11 @@ TEST(PhantomLandmarks, AConeBeamFieldCutBelowTheSellaGetsItsFrameFromTheEarsAndO
   }
   // Nothing invented: the chin below the field's floor, a porion beyond its wall, the soft-tissue
   // nasion without its nasion are absent, each with its reason.
-  for (const auto& l : found.landmarks)
-    if (!find_landmark(phantom.landmarks, l.label)) EXPECT_FALSE(l.position) << l.label << " invented";
+  for (const auto& l : found.landmarks) {
+    if (!find_landmark(phantom.landmarks, l.label)) {
+      EXPECT_FALSE(l.position) << l.label << " invented";
+    }
+  }
   // The frame: its origin where the designed sella lies, its size the head's.
   const Eigen::Vector3d sella = spec.placement.to_scanner({0, 0, 20});
   EXPECT_LT((found.head_frame.inverse() * sella).norm(), 2.5);

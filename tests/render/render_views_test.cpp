@@ -61,7 +61,7 @@ Camera frontal_camera_for(const Scene& scene) {
 TEST(RenderScene, SphereCoversItsProjectedArea) {
   const double radius = 30;
   auto sphere = uv_sphere({5, -3, 7}, radius, 180, 360);
-  Scene scene{{{&sphere, kBoneIvory, 1.0, {}}}};
+  Scene scene{{{&sphere, kBoneIvory, 1.0, {}}}, {}};
   Camera camera = frontal_camera_for(scene);
   camera.parallel_scale_mm = 50;  // visible area 100 x 100 mm
   RenderSettings settings{{512, 512}};
@@ -75,7 +75,7 @@ TEST(RenderScene, SphereCoversItsProjectedArea) {
 TEST(RenderScene, BoxSilhouetteHasTheExpectedAspectInEachView) {
   // 40 mm left-right, 200 mm antero-posterior, 80 mm high.
   auto slab = box({-20, -100, -40}, {20, 100, 40});
-  Scene scene{{{&slab, kBoneIvory, 1.0, {}}}};
+  Scene scene{{{&slab, kBoneIvory, 1.0, {}}}, {}};
   std::vector<Camera> cameras;
   for (auto view : {StandardView::Frontal, StandardView::Lateral})
     cameras.push_back(standard_camera(view, AnatomicalFrame{}, scene_bounds(scene), 1.0));
@@ -91,7 +91,7 @@ TEST(RenderScene, LateralViewShowsTheFaceOnTheRight) {
   // A head-like ball with a "nose" on its anterior (-y) side.
   auto head = uv_sphere({0, 0, 0}, 60, 40, 80);
   auto nose = uv_sphere({0, -75, 0}, 15, 20, 40);
-  Scene scene{{{&head, kBoneIvory, 1.0, {}}, {&nose, {0.8, 0.1, 0.1}, 1.0, {}}}};
+  Scene scene{{{&head, kBoneIvory, 1.0, {}}, {&nose, {0.8, 0.1, 0.1}, 1.0, {}}}, {}};
   auto camera = standard_camera(StandardView::Lateral, AnatomicalFrame{}, scene_bounds(scene), 1.0);
   auto image = render_scene(scene, std::span(&camera, 1), {kSmall}).front();
   long red_x_sum = 0, red_count = 0;
@@ -106,8 +106,8 @@ TEST(RenderScene, TranslucentSkinShowsBoneBeneath) {
   auto skin = uv_sphere({0, 0, 0}, 60, 60, 120);
   auto bone = uv_sphere({0, 0, 0}, 35, 60, 120);
   const ColourRGB blue{0.2, 0.3, 0.9};  // far from the skin tone, so blending is measurable
-  Scene with_bone{{{&bone, blue, 1.0, {}}, {&skin, kSkinTone, 0.45, {}}}};
-  Scene skin_only{{{&skin, kSkinTone, 0.45, {}}}};
+  Scene with_bone{{{&bone, blue, 1.0, {}}, {&skin, kSkinTone, 0.45, {}}}, {}};
+  Scene skin_only{{{&skin, kSkinTone, 0.45, {}}}, {}};
   auto camera = frontal_camera_for(with_bone);
   auto a = render_scene(with_bone, std::span(&camera, 1), {kSmall}).front();
   auto b = render_scene(skin_only, std::span(&camera, 1), {kSmall}).front();
@@ -126,7 +126,7 @@ TEST(RenderScene, VertexScalarsFollowTheColourMap) {
   auto sphere = uv_sphere({0, 0, 0}, 40, 60, 120);
   VertexScalars heights{{}, -40, 40, ColourMap::Diverging, "height (mm)"};
   for (Eigen::Index v = 0; v < sphere.vertex_count(); ++v) heights.values.push_back(sphere.vertices(v, 2));
-  Scene scene{{{&sphere, kBoneIvory, 1.0, heights}}};
+  Scene scene{{{&sphere, kBoneIvory, 1.0, heights}}, {}};
   auto camera = frontal_camera_for(scene);
   auto image = render_scene(scene, std::span(&camera, 1), {kSmall}).front();
   // With a colour bar the scene keeps the left 82% of the image, centred there.
@@ -146,9 +146,42 @@ TEST(RenderScene, VertexScalarsFollowTheColourMap) {
   EXPECT_TRUE(bar_red && bar_blue);
 }
 
+// Markers (scene.h) are drawn over the meshes: a landmark inside an opaque skull (the sella)
+// stays visible, where the camera projects it, with its label beside it.
+TEST(RenderScene, MarkersInsideAnOpaqueMeshAreDrawnWhereTheyProjectWithTheirLabels) {
+  auto skull = uv_sphere({0, 0, 0}, 30, 60, 120);
+  Scene scene{{{&skull, kBoneIvory, 1.0, {}}}, {}};
+  const ColourRGB red{1, 0, 0};
+  scene.markers = {{{0, 0, 0}, "S", red}, {{20, 0, 0}, "PoL", red}};
+  Camera camera = frontal_camera_for(scene);
+  camera.parallel_scale_mm = 50;  // 512 pixels for 100 mm: 5.12 pixels per mm
+  RenderSettings settings{{512, 512}};
+  const auto image = render_scene(scene, std::span(&camera, 1), settings).front();
+  auto is_marker_red = [](const std::uint8_t* px) { return px[0] > 200 && px[1] < 60 && px[2] < 60; };
+  EXPECT_TRUE(is_marker_red(image.at(256, 256))) << "the centre, inside the sphere";
+  // The patient's left (+x) is on the image's right in a frontal view: 20 mm = 102 pixels.
+  EXPECT_TRUE(is_marker_red(image.at(256 + 102, 256)));
+  // The label: dark red text (the marker's colour, darker) just right of the marker.
+  int text_pixels = 0;
+  for (int y = 240; y < 272; ++y)
+    for (int x = 256 + 102 + 6; x < 256 + 102 + 60; ++x) {
+      const auto* px = image.at(x, y);
+      text_pixels += px[0] > 120 && px[0] < 215 && px[1] < 40 && px[2] < 40;
+    }
+  EXPECT_GT(text_pixels, 10) << "no label beside the marker";
+
+  // A marker outside the view changes nothing; without markers the sphere is as before.
+  Scene with_outside = scene;
+  with_outside.markers.push_back({{1000, 0, 0}, "far", red});
+  EXPECT_EQ(render_scene(with_outside, std::span(&camera, 1), settings).front().pixels, image.pixels);
+  Scene bare{{{&skull, kBoneIvory, 1.0, {}}}, {}};
+  const auto plain = render_scene(bare, std::span(&camera, 1), settings).front();
+  EXPECT_FALSE(is_marker_red(plain.at(256, 256)));
+}
+
 TEST(RenderScene, ScalarCountMismatchIsRejected) {
   auto sphere = uv_sphere({0, 0, 0}, 40, 10, 20);
-  Scene scene{{{&sphere, kBoneIvory, 1.0, VertexScalars{{1.0, 2.0}, 0, 1, ColourMap::Sequential, ""}}}};
+  Scene scene{{{&sphere, kBoneIvory, 1.0, VertexScalars{{1.0, 2.0}, 0, 1, ColourMap::Sequential, ""}}}, {}};
   auto camera = frontal_camera_for(scene);
   EXPECT_THROW(render_scene(scene, std::span(&camera, 1), {kSmall}), Error);
 }
@@ -156,7 +189,7 @@ TEST(RenderScene, ScalarCountMismatchIsRejected) {
 TEST(RenderScene, RendersAreDeterministic) {
   auto skin = uv_sphere({0, 0, 0}, 60, 60, 120);
   auto slab = box({-30, -20, -30}, {30, 20, 30});
-  Scene scene{{{&slab, kBoneIvory, 1.0, {}}, {&skin, kSkinTone, 0.45, {}}}};
+  Scene scene{{{&slab, kBoneIvory, 1.0, {}}, {&skin, kSkinTone, 0.45, {}}}, {}};
   auto camera = standard_camera(StandardView::Oblique, AnatomicalFrame{}, scene_bounds(scene), 1.0);
   auto first = render_scene(scene, std::span(&camera, 1), {kSmall}).front();
   auto second = render_scene(scene, std::span(&camera, 1), {kSmall}).front();
@@ -168,7 +201,7 @@ TEST(RenderScene, PngFilesAreRealAndRoundTrip) {
   fs::create_directories(folder);
   auto skin = uv_sphere({0, 0, 0}, 60, 60, 120);
   auto bone = uv_sphere({0, 0, 0}, 35, 60, 120);
-  Scene scene{{{&bone, kBoneIvory, 1.0, {}}, {&skin, kSkinTone, 0.45, {}}}};
+  Scene scene{{{&bone, kBoneIvory, 1.0, {}}, {&skin, kSkinTone, 0.45, {}}}, {}};
   auto camera = standard_camera(StandardView::Oblique, AnatomicalFrame{}, scene_bounds(scene), 1.0);
   auto image = render_scene(scene, std::span(&camera, 1), {kSmall}).front();
   write_png(image, folder / "oblique.png");
@@ -184,7 +217,7 @@ TEST(RenderScene, PngFilesAreRealAndRoundTrip) {
 TEST(RenderScene, MillionTriangleMeshRenders) {
   auto sphere = uv_sphere({0, 0, 0}, 80, 500, 1000);  // 998,000 triangles
   ASSERT_GT(sphere.face_count(), 990'000);
-  Scene scene{{{&sphere, kBoneIvory, 1.0, {}}}};
+  Scene scene{{{&sphere, kBoneIvory, 1.0, {}}}, {}};
   auto camera = frontal_camera_for(scene);
   const auto start = std::chrono::steady_clock::now();
   auto image = render_scene(scene, std::span(&camera, 1), {{1024, 1024}}).front();
@@ -205,7 +238,7 @@ TEST(RenderViewFiles, WritesOnePngPerViewNamedAfterIt) {
   const fs::path folder = fs::temp_directory_path() / ("maxillo-views-" + std::to_string(::getpid()));
   fs::create_directories(folder);
   auto head = uv_sphere({0, 0, 0}, 60, 30, 60);
-  Scene scene{{{&head, kSkinTone, 1.0, {}}}};
+  Scene scene{{{&head, kSkinTone, 1.0, {}}}, {}};
   const StandardView views[] = {StandardView::Frontal, StandardView::Lateral, StandardView::Oblique};
   auto files = render_view_files(scene, AnatomicalFrame{}, views, folder, "case7-", {{320, 200}});
   ASSERT_EQ(files.size(), 3u);

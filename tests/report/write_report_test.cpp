@@ -23,7 +23,7 @@ std::vector<Figure> render_phantom_views(const fs::path& folder) {
   auto skin = render::testing::uv_sphere({0, 0, 0}, 70, 60, 120);
   auto bone = render::testing::box({-45, -40, -50}, {45, 40, 45});
   auto nose = render::testing::uv_sphere({0, -72, 0}, 14, 30, 60);
-  Scene scene{{{&bone, kBoneIvory, 1.0, {}}, {&nose, kSkinTone, 1.0, {}}, {&skin, kSkinTone, 0.4, {}}}};
+  Scene scene{{{&bone, kBoneIvory, 1.0, {}}, {&nose, kSkinTone, 1.0, {}}, {&skin, kSkinTone, 0.4, {}}}, {}};
   std::vector<Camera> cameras;
   std::vector<Figure> figures;
   for (auto view : {StandardView::Frontal, StandardView::Lateral, StandardView::Oblique}) {

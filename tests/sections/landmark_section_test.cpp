@@ -57,5 +57,46 @@ TEST(LandmarkSection, AGivenSetIsComparedWithTheAutomaticOneBesideIt) {
   EXPECT_TRUE(mean_said);
 }
 
+// Which landmarks each picture of the landmark page draws, and in which colour.
+TEST(LandmarkPictures, EachViewDrawsTheLandmarksItCanShowColouredByStatus) {
+  auto stored = automatic_set();
+  stored.landmarks.push_back({"GoR", {-45, -10, -60}});
+  using render::StandardView;
+  auto labels_in = [&](StandardView view) {
+    std::vector<std::string> labels;
+    for (const auto& m : casework::landmark_markers(stored, view)) labels.push_back(m.label);
+    return labels;
+  };
+  EXPECT_EQ(labels_in(StandardView::Frontal), (std::vector<std::string>{"S", "OrL", "GoR"}));
+  EXPECT_EQ(labels_in(StandardView::Lateral), (std::vector<std::string>{"S", "GoR"}));
+  EXPECT_EQ(labels_in(StandardView::LeftLateral), (std::vector<std::string>{"OrL"}));
+
+  const auto frontal = casework::landmark_markers(stored, StandardView::Frontal);
+  auto same = [](const render::ColourRGB& a, const render::ColourRGB& b) {
+    return a.r == b.r && a.g == b.g && a.b == b.b;
+  };
+  EXPECT_TRUE(same(frontal[0].colour, casework::kAutomaticLandmarkColour));
+  EXPECT_TRUE(same(frontal[1].colour, casework::kFlaggedLandmarkColour)) << "OrL is flagged";
+  stored.automatic.reset();  // a set given by hand
+  EXPECT_TRUE(
+      same(casework::landmark_markers(stored, StandardView::Frontal)[1].colour, casework::kGivenLandmarkColour));
+}
+
+TEST(LandmarkSection, ThePicturesComeFirstTwoToARow) {
+  const std::vector<casework::LandmarkView> pictures{
+      {render::StandardView::Frontal, "/tmp/a.png", "frontal: every landmark"},
+      {render::StandardView::Lateral, "/tmp/b.png", "right lateral: midline and right-sided landmarks"}};
+  const auto section = landmark_section(automatic_set(), std::nullopt, pictures);
+  ASSERT_TRUE(section);
+  const report::ImageGrid* grid = nullptr;
+  for (const auto& block : section->blocks)
+    if ((grid = std::get_if<report::ImageGrid>(&block))) break;
+  ASSERT_TRUE(grid);
+  EXPECT_EQ(grid->per_row, 2);
+  ASSERT_EQ(grid->figures.size(), 2u);
+  EXPECT_EQ(grid->figures[1].caption, "right lateral: midline and right-sided landmarks");
+  EXPECT_FALSE(std::holds_alternative<report::ImageGrid>(section->blocks.back())) << "the table follows the pictures";
+}
+
 }  // namespace
 }  // namespace maxillo::sections
