@@ -48,7 +48,7 @@ void require_trusted_orientation(Archive& archive, int64_t case_id, const std::s
               what + " refused: " + record.finding +
                   ". Check the scan (and its conversion); if the volume is right as it is, confirm it with `maxillo "
                   "orientation case:" +
-                  std::to_string(case_id) + " --confirm`");
+                  std::to_string(case_id) + " --confirm`; if an axis was flipped, have it undone with `--reorient`");
 }
 
 records::OrientationRecord confirm_orientation(Archive& archive, int64_t case_id) {

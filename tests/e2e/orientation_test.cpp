@@ -4,6 +4,10 @@
 // and goes on once a person confirms it. Skipped where the data are absent.
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <iterator>
+
+#include "support/cadaver_dicom.h"
 #include "support/cthead_metaimage.h"
 #include "support/pdf_tools.h"
 #include "support/temporary_folder.h"
@@ -60,6 +64,46 @@ TEST(OrientationCheck, AHeaderThatContradictsTheAnatomyIsFlaggedRefusedAndConfir
   const std::string confirmed_text = testing::pdf_text(folder / "confirmed.pdf");
   EXPECT_EQ(confirmed_text.find("CONTRADICTS THE ANATOMY"), std::string::npos);
   EXPECT_NE(confirmed_text.find("Confirmed by hand"), std::string::npos);
+}
+
+// The example: the cadaver head converted with its y axis flipped (the face at +y, a
+// mirror). `--reorient` stores a corrected copy, and the copy is the correctly converted head:
+// the landmarks found on it are those found on the right conversion, to the last digit.
+TEST(OrientationCheck, AFlippedYAxisIsReorientedIntoTheRightHead) {
+  if (!std::filesystem::exists(testing::cthead_slices() / "CThead.113"))
+    GTEST_SKIP() << "real data absent: " << testing::cthead_slices();
+  testing::TemporaryFolder folder("maxillo-reorient");
+  testing::write_cthead_metaimage(folder.path(), "raw.mhd");
+  const std::string maxillo = std::string(MAXILLO_BINARY) + " --archive " + quote(folder / "archive");
+  const auto converted =
+      run_command(maxillo + " convert " + quote(folder / "raw.mhd") + " --out " + quote(folder / "flipped") +
+                  " --direction 1,0,0,0,-1,0,0,0,-1 --origin -127.5,127.5,224 --hu-offset -1024 2>&1");
+  ASSERT_EQ(converted.exit_code, 0) << converted.output;
+  EXPECT_NE(converted.output.find("the face points posterior"), std::string::npos) << converted.output;
+  ASSERT_EQ(run_command(maxillo + " -q import " + quote(folder / "flipped")).exit_code, 0);
+  EXPECT_EQ(run_command(maxillo + " orientation 1 2>&1").exit_code, 26);
+
+  const auto reoriented = run_command(maxillo + " orientation 1 --reorient 2>&1");
+  ASSERT_EQ(reoriented.exit_code, 0) << reoriented.output;
+  EXPECT_NE(reoriented.output.find("reoriented: the y axis flipped back"), std::string::npos) << reoriented.output;
+  EXPECT_NE(reoriented.output.find("the header agrees with the anatomy"), std::string::npos) << reoriented.output;
+  EXPECT_NE(run_command(maxillo + " list cases").output.find("agrees"), std::string::npos);
+  const auto show = run_command(maxillo + " show case:1 2>&1").output;
+  EXPECT_NE(show.find("unassigned"), std::string::npos) << "the original series is kept: " << show;
+
+  const auto right = testing::wrap_cadaver_as_dicom(folder / "right");
+  ASSERT_EQ(right.exit_code, 0) << right.output;
+  ASSERT_EQ(run_command(maxillo + " -q landmarks detect 1 --out " + quote(folder / "reoriented.csv")).exit_code, 0);
+  ASSERT_EQ(
+      run_command(maxillo + " -q landmarks detect " + quote(folder / "right") + " --out " + quote(folder / "right.csv"))
+          .exit_code,
+      0);
+  const auto read = [](const std::filesystem::path& file) {
+    std::ifstream in(file);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  EXPECT_EQ(read(folder / "reoriented.csv"), read(folder / "right.csv"));
+  EXPECT_EQ(run_command(maxillo + " orientation 1 --reorient 2>&1").exit_code, 26) << "nothing left to undo";
 }
 
 }  // namespace
