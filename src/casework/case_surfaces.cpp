@@ -5,6 +5,7 @@
 #include "archive/artefact_kind.h"
 #include "core/log.h"
 #include "core/parallel_slabs.h"
+#include "imaging/hounsfield_reading.h"
 #include "imaging/volume_assembly.h"
 #include "records/archived_series.h"
 #include "records/derivation.h"
@@ -34,7 +35,7 @@ std::string surfaces_key(Archive& archive, int64_t series, const Json& parameter
 
 // Skin: the body mask's boundary (head rest and table removed by the segmentation), drawn
 // through the CT's own sub-voxel values. Bone: all bone including teeth.
-CaseSurfaces extract_case_surfaces(const Volume& volume, const SurfaceRecipe& recipe, SurfaceTimes* times,
+CaseSurfaces extract_case_surfaces(const Volume& scan, const SurfaceRecipe& recipe, SurfaceTimes* times,
                                    const LabelVolume* segmented) {
   using Clock = std::chrono::steady_clock;
   auto seconds_since = [](Clock::time_point start) {
@@ -42,6 +43,9 @@ CaseSurfaces extract_case_surfaces(const Volume& volume, const SurfaceRecipe& re
   };
   SurfaceTimes spent;
   const auto started = Clock::now();
+  // The thresholds are in HU: a cone-beam scan is read as HU first (hounsfield_reading.h).
+  const std::optional<Volume> converted = in_hounsfield_units(scan);
+  const Volume& volume = converted ? *converted : scan;
   const LabelVolume made = segmented ? LabelVolume{} : segment_tissues(volume, recipe.segmentation);
   const LabelVolume& labels = segmented ? *segmented : made;
   spent.segmentation = seconds_since(started);
@@ -67,7 +71,8 @@ Json SurfaceRecipe::to_json() const {
             {"bone_hu", segmentation.bone_hu},
             {"teeth_hu", segmentation.teeth_hu},
             {"headrest_gap_mm", segmentation.headrest_gap_mm},
-            {"min_bone_island_mm3", segmentation.min_bone_island_mm3}}},
+            {"min_bone_island_mm3", segmentation.min_bone_island_mm3},
+            {"bone_edge", segmentation.bone_edge_at_half_maximum ? "half-maximum" : "threshold"}}},
           {"skin", surface_json(skin)},
           {"bone", surface_json(bone)}};
 }

@@ -14,6 +14,7 @@
 #include "mesh/mesh_io.h"
 #include "geometry/mesh_transform.h"
 #include "mesh/surface_extraction.h"
+#include "imaging/hounsfield_reading.h"
 #include "records/archived_series.h"
 #include "records/case_landmarks.h"
 #include "casework/case_surfaces.h"
@@ -269,7 +270,7 @@ CaseValidation validate_case(Archive& archive, int64_t case_id, const Validation
   v.preop_series = planned.preop_series;
 
   log::info("validation: registering the post-operative CT, its surfaces and the pre-operative bone segments");
-  const Volume postop_ct = records::load_archived_series(archive, v.postop_series);
+  const Volume postop_ct = as_hounsfield_units(records::load_archived_series(archive, v.postop_series));
   RigidRegistrationOptions registration = options.registration;
   if (!registration.box) registration.box = cranial_registration_box(planned.preop_ct, &planned.landmarks);
   std::optional<CaseSurfaces> postop = stored_case_surfaces(archive, case_id, v.postop_series);

@@ -7,6 +7,7 @@
 #include "core/log.h"
 #include "core/sha256.h"
 #include "imaging/volume_assembly.h"
+#include "imaging/hounsfield_reading.h"
 #include "records/archived_series.h"
 #include "records/case_landmarks.h"
 #include "casework/case_surfaces.h"
@@ -50,7 +51,8 @@ PlannedCase load_planned_case(Archive& archive, int64_t case_id, const CaseTissu
   c.plan = std::move(*plan);
   c.preop_series = records::primary_series(archive.case_contents(case_id));
   c.face_models = std::make_shared<PlannedCase::FaceModels>();
-  c.preop_ct = records::load_archived_series(archive, c.preop_series);
+  // Read as HU (a cone-beam scan's grey values mapped, hounsfield_reading.h): every step below thresholds in HU.
+  c.preop_ct = as_hounsfield_units(records::load_archived_series(archive, c.preop_series));
   c.tissues = tissues ? *tissues : segment_case_tissues(c.preop_ct, c.landmarks);
   c.planned_moves = moves_by_segment(plan_moves(archive, case_id, c.plan.plan, c.landmarks, c.tissues.segmentation));
   c.cut = planning::cut_skeleton(c.tissues.jaws, planning::resolve_osteotomies(c.plan.plan.osteotomies, c.landmarks));

@@ -9,6 +9,7 @@
 #include "cli/command.h"
 #include "core/error.h"
 #include "core/json.h"
+#include "imaging/hounsfield_reading.h"
 #include "imaging/segmentation.h"
 #include "imaging/volume_assembly.h"
 #include "mesh/mesh_io.h"
@@ -26,6 +27,7 @@ struct SurfacesOptions {
   int64_t triangles = 200000;
   int smoothing_iterations = 15;
   double headrest_gap_mm = 3;
+  std::string bone_edge = "threshold";  // or "half-maximum" (segmentation.h)
   std::string format = "stl";
 };
 
@@ -83,11 +85,26 @@ Json make_surface(const std::string& name, const Volume& volume, const LabelVolu
   return describe_surface(name, mesh, file, clock.seconds());
 }
 
+// How the scan's values were read, and the grey values of the scan the thresholds fell on.
+Json grey_values_json(const GreyReading& reading, const SurfacesOptions& options) {
+  return {{"hounsfield_as_stored", reading.hounsfield_as_stored()},
+          {"reading", reading.describe()},
+          {"cupping_undone", reading.cupping_depth},
+          {"skin_threshold_grey", reading.grey_of(options.skin_hu)},
+          {"bone_threshold_grey", reading.grey_of(options.bone_hu)}};
+}
+
 void print_surfaces_text(const Json& result) {
   const Json& v = result["volume"];
   std::cout << "volume: " << v["size"][0] << " x " << v["size"][1] << " x " << v["size"][2] << " voxels, spacing "
             << v["spacing_mm"][0] << " x " << v["spacing_mm"][1] << " x " << v["spacing_mm"][2] << " mm ("
             << v["slice_spacing"].get<std::string>() << "), loaded in " << v["seconds"] << " s\n";
+  const Json& grey = result["grey_values"];
+  std::cout << "grey values: " << grey["reading"].get<std::string>();
+  if (!grey["hounsfield_as_stored"].get<bool>())
+    std::cout << "; thresholds at " << std::lround(grey["skin_threshold_grey"].get<double>()) << " (skin) and "
+              << std::lround(grey["bone_threshold_grey"].get<double>()) << " (bone) in the scan's values";
+  std::cout << "\n";
   std::cout << "segmentation: " << result["segmentation_seconds"] << " s\n";
   for (const Json& s : result["surfaces"])
     std::cout << s["name"].get<std::string>() << ": " << s["triangles"] << " triangles, " << s["components"]
@@ -100,13 +117,17 @@ void run_surfaces(const SurfacesOptions& options, CommandContext& ctx) {
   Stopwatch total;
   AssemblyReport assembly;
   Stopwatch load_clock;
-  const Volume volume = load_series_volume(series_files(options.inputs), &assembly);
+  // The thresholds are in HU: a cone-beam scan is read as HU first, and the output says how.
+  GreyReading reading;
+  const Volume volume = as_hounsfield_units(load_series_volume(series_files(options.inputs), &assembly), &reading);
   const double load_seconds = load_clock.seconds();
   const VolumeGeometry& g = volume.geometry;
 
   Stopwatch segmentation_clock;
-  SegmentationOptions segmentation{
-      .skin_hu = options.skin_hu, .bone_hu = options.bone_hu, .headrest_gap_mm = options.headrest_gap_mm};
+  SegmentationOptions segmentation{.skin_hu = options.skin_hu,
+                                   .bone_hu = options.bone_hu,
+                                   .headrest_gap_mm = options.headrest_gap_mm,
+                                   .bone_edge_at_half_maximum = options.bone_edge == "half-maximum"};
   const LabelVolume labels = segment_tissues(volume, segmentation);
   const double segmentation_seconds = segmentation_clock.seconds();
 
@@ -126,6 +147,7 @@ void run_surfaces(const SurfacesOptions& options, CommandContext& ctx) {
                    {"slices_read", assembly.input_slices},
                    {"slice_spacing", assembly.spacing == SliceSpacing::Uniform ? "uniform" : "resampled"},
                    {"seconds", load_seconds}}},
+                 {"grey_values", grey_values_json(reading, options)},
                  {"frame", "patient LPS; lengths mm, areas mm2, volumes mm3"},
                  {"segmentation_seconds", segmentation_seconds},
                  {"surfaces", Json::array()}};
@@ -163,6 +185,11 @@ void attach_surfaces(CLI::App& app, CommandContext& ctx) {
                  "opening radius (mm) that detaches a head rest touching the skin (0: off)")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 20.0));
+  app.add_option("--bone-edge", options->bone_edge,
+                 "where bone ends: the threshold's boundary, or trimmed by the half-maximum rule (the partial-volume "
+                 "voxel over each bone left out)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"threshold", "half-maximum"}));
   app.add_option("--format", options->format, "mesh file format")
       ->capture_default_str()
       ->check(CLI::IsMember({"stl", "ply", "obj", "vtp"}));

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "imaging/distance_morphology.h"
+#include "imaging/half_maximum_edge.h"
 #include "imaging/mask_components.h"
 
 namespace maxillo {
@@ -77,6 +78,7 @@ LabelVolume segment_tissues(const Volume& volume, const SegmentationOptions& opt
 
   Mask bone = threshold(volume, options.bone_hu);
   intersect(bone, filled);
+  if (options.bone_edge_at_half_maximum) trim_to_half_maximum(bone, grid, volume.hu);
   const double voxel_mm3 = volume.geometry.spacing.prod();
   bone = components_of_at_least(bone, grid, int64_t(std::ceil(options.min_bone_island_mm3 / voxel_mm3)));
 

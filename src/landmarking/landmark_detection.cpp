@@ -5,7 +5,7 @@
 
 #include "core/angles.h"
 #include "core/error.h"
-#include "imaging/cupping_correction.h"
+#include "imaging/hounsfield_reading.h"
 #include "landmarking/bone_surface.h"
 #include "landmarking/dental_landmarks.h"
 #include "landmarking/ear_orbit_frame.h"
@@ -238,18 +238,12 @@ Eigen::Isometry3d provisional_frame(const Volume& ct, const GreyCalibration& gre
 LandmarkDetection detect_landmarks(const Volume& scan, const std::string& subject, const DetectionOptions& options) {
   require_a_head(scan, subject);
   LandmarkDetection result;
-  result.grey = estimate_grey_calibration(scan);
-  // A cone-beam scan's values lose more towards its axis (cupping_correction.h): undone first,
-  // or the thresholds that hold at the rim do not hold in the middle. A CT is read as it is.
+  // A cone-beam scan's values lose more towards its axis: undone first, or the thresholds that
+  // hold at the rim do not hold in the middle (imaging/hounsfield_reading.h). A CT is read as it is.
   Volume uncupped;
-  if (!result.grey.is_hounsfield()) {
-    const RadialCupping cupping = estimate_cupping(scan, result.grey);
-    if (cupping.significant()) {
-      uncupped = without_cupping(scan, result.grey, cupping);
-      result.cupping = cupping.depth();
-      result.grey = estimate_grey_calibration(uncupped);
-    }
-  }
+  const GreyReading reading = read_grey_values(scan, &uncupped);
+  result.grey = reading.grey;
+  result.cupping = reading.cupping_depth;
   const Volume& ct = uncupped.hu.empty() ? scan : uncupped;
   const Frames frames = sagittal_frame(ct, result.grey, subject);
   result.midsagittal = frames.midsagittal;

@@ -84,6 +84,29 @@ TEST_F(Commands, ConvertThenSurfaces) {
   EXPECT_TRUE(std::filesystem::exists(folder / "surfaces" / "bone.ply"));
 }
 
+// Issue 28: a cone-beam scan's grey values are not HU; `surfaces` reads them through the scan's
+// own air and soft-tissue modes (its cupping undone) and says where its thresholds fell.
+TEST_F(Commands, SurfacesOfAConeBeamScanSayHowItsGreyValuesWereRead) {
+  TemporaryFolder folder("commands-cbct");
+  ASSERT_EQ(maxillo("-q sample --cbct --spacing 2 --out " + testing::quote(folder / "cb")).exit_code, 0);
+  auto surfaces = maxillo("--json surfaces " + testing::quote(folder / "cb" / "ct") + " --out " +
+                          testing::quote(folder / "surfaces") + " --bone-edge half-maximum --triangles 20000");
+  ASSERT_EQ(surfaces.exit_code, 0) << surfaces.output;
+  const Json result = Json::parse(surfaces.output);
+  const Json& grey = result["grey_values"];
+  EXPECT_FALSE(grey["hounsfield_as_stored"].get<bool>());
+  EXPECT_GT(grey["cupping_undone"].get<double>(), 0.02);
+  EXPECT_NE(grey["reading"].get<std::string>().find("mapped to -1000 and 40 HU"), std::string::npos) << grey;
+  // The sample's scanner: grey = air's grey + (HU + 1000) (ConeBeamFlavour's defaults), so 300 HU falls near 1300.
+  EXPECT_NEAR(grey["bone_threshold_grey"].get<double>(), 1300, 80) << grey;
+  const Json& bone = result["surfaces"][1];
+  EXPECT_GT(bone["triangles"].get<int>(), 1000);
+  EXPECT_GT(bone["volume_mm3"].get<double>(), 50000) << "the jaws and midface in the field";
+  auto text = maxillo("surfaces " + testing::quote(folder / "cb" / "ct") + " --out " +
+                      testing::quote(folder / "surfaces") + " --triangles 20000");
+  EXPECT_NE(text.output.find("(bone) in the scan's values"), std::string::npos) << text.output;
+}
+
 TEST_F(Commands, RejectsBadOptionsAndInputs) {
   TemporaryFolder folder("commands-bad");
   const auto mhd = write_synthetic_head(folder);
