@@ -14,8 +14,8 @@ namespace {
 
 using render::StandardView;
 
-constexpr std::array kViews = {StandardView::Frontal, StandardView::Lateral, StandardView::LeftLateral};
-constexpr double kSkinOpacity = 0.3;  // the bone shows through; the skin's landmarks sit on its outline
+constexpr std::array kLandmarkViews = {StandardView::Frontal, StandardView::Lateral, StandardView::LeftLateral};
+constexpr double kSkinOpacityOverLandmarks = 0.3;  // the bone shows through; the skin's landmarks sit on its outline
 
 bool shown_in(StandardView view, const std::string& label) {
   const auto base = bilateral_base(label);
@@ -26,7 +26,7 @@ bool shown_in(StandardView view, const std::string& label) {
   }
 }
 
-std::string caption_for(StandardView view) {
+std::string landmark_caption(StandardView view) {
   switch (view) {
     case StandardView::Lateral: return "right lateral: midline and right-sided landmarks";
     case StandardView::LeftLateral: return "left lateral: left-sided landmarks";
@@ -34,7 +34,7 @@ std::string caption_for(StandardView view) {
   }
 }
 
-std::string picture_name(StandardView view) { return "landmarks-" + std::string(render::name_of(view)); }
+std::string landmark_picture_name(StandardView view) { return "landmarks-" + std::string(render::name_of(view)); }
 
 render::ColourRGB colour_of(const records::StoredLandmarks& stored, const std::string& label) {
   if (!stored.automatic) return kGivenLandmarkColour;
@@ -52,8 +52,9 @@ Json picture_parameters(const records::StoredLandmarks& stored, const ViewRecipe
               {"look", 1}};  // raise when the pictures' look changes
 }
 
-void render_and_store(Archive& archive, int64_t case_id, const CaseSurfaces& surfaces,
-                      const records::StoredLandmarks& stored, const ViewRecipe& recipe, const std::string& key) {
+void render_and_store_landmarks(Archive& archive, int64_t case_id, const CaseSurfaces& surfaces,
+                                const records::StoredLandmarks& stored, const ViewRecipe& recipe,
+                                const std::string& key) {
   const auto frame = anatomical_frame(stored.landmarks);
   render::Scene skin_only;
   skin_only.meshes.push_back({&surfaces.skin, render::kSkinTone, 1.0, std::nullopt});
@@ -62,14 +63,14 @@ void render_and_store(Archive& archive, int64_t case_id, const CaseSurfaces& sur
   render::RenderSettings settings;
   settings.size = {recipe.image_size_px, recipe.image_size_px};
   TemporaryFolder scratch("maxillo-landmark-views");
-  for (auto view : kViews) {
+  for (auto view : kLandmarkViews) {
     render::Scene scene;
     scene.meshes.push_back({&surfaces.bone, render::kBoneIvory, 1.0, std::nullopt});
-    scene.meshes.push_back({&surfaces.skin, render::kSkinTone, kSkinOpacity, std::nullopt});
+    scene.meshes.push_back({&surfaces.skin, render::kSkinTone, kSkinOpacityOverLandmarks, std::nullopt});
     scene.markers = landmark_markers(stored, view);
     const auto camera = render::standard_camera(view, frame, framing, 1.0);
     const auto images = render::render_scene(scene, std::span(&camera, 1), settings);
-    const auto file = scratch / (picture_name(view) + ".png");
+    const auto file = scratch / (landmark_picture_name(view) + ".png");
     render::write_png(images.front(), file);
     records::store_picture(archive, case_id, ArtefactKind::kLandmarkRender, key, file);
   }
@@ -92,15 +93,15 @@ std::vector<LandmarkView> landmark_views(Archive& archive, int64_t case_id, cons
   auto find_all = [&] {
     const auto artefacts = archive.artefacts(case_id);
     std::vector<LandmarkView> views;
-    for (auto view : kViews)
+    for (auto view : kLandmarkViews)
       if (const auto* found =
-              records::newest_with_key(artefacts, ArtefactKind::kLandmarkRender, key, picture_name(view)))
-        views.push_back({view, archive.object_path(found->object_sha256), caption_for(view)});
+              records::newest_with_key(artefacts, ArtefactKind::kLandmarkRender, key, landmark_picture_name(view)))
+        views.push_back({view, archive.object_path(found->object_sha256), landmark_caption(view)});
     return views;
   };
   auto views = find_all();
-  if (views.size() == kViews.size()) return views;
-  render_and_store(archive, case_id, surfaces, stored, recipe, key);
+  if (views.size() == kLandmarkViews.size()) return views;
+  render_and_store_landmarks(archive, case_id, surfaces, stored, recipe, key);
   return find_all();
 }
 

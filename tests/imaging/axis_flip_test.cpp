@@ -8,7 +8,8 @@
 #include "imaging/axis_flip.h"
 #include "sample/phantom.h"
 
-namespace maxillo {
+// Its own namespace: the orientation tests built in the same unity file name their flips alike.
+namespace maxillo::axis_flip_testing {
 namespace {
 
 const Eigen::Matrix3d kFlipY = Eigen::Vector3d(1, -1, 1).asDiagonal();
@@ -73,4 +74,4 @@ TEST(AxisFlip, NothingToUndoWhenTheHeaderAgreesOrTheFaceIsSideways) {
 }
 
 }  // namespace
-}  // namespace maxillo
+}  // namespace maxillo::axis_flip_testing
