@@ -71,6 +71,7 @@ Json SurfaceRecipe::to_json() const {
             {"bone_hu", segmentation.bone_hu},
             {"teeth_hu", segmentation.teeth_hu},
             {"headrest_gap_mm", segmentation.headrest_gap_mm},
+            {"max_restored_piece_mm3", segmentation.max_restored_piece_mm3},
             {"min_bone_island_mm3", segmentation.min_bone_island_mm3},
             {"bone_edge", segmentation.bone_edge_at_half_maximum ? "half-maximum" : "threshold"}}},
           {"skin", surface_json(skin)},

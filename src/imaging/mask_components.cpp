@@ -125,6 +125,25 @@ Mask components_of_at_least(const Mask& mask, const MaskGrid& grid, int64_t min_
   return paint(r, c, grid, [&](size_t root) { return c.voxels[root] >= min_voxels; });
 }
 
+ComponentLabels label_components(const Mask& mask, const MaskGrid& grid) {
+  const Runs r = runs_of(mask, grid, 1);
+  const Components c = components_of(r, grid);
+  ComponentLabels out{std::vector<int32_t>(grid.voxel_count(), 0), {0}};
+  std::vector<int32_t> number(r.runs.size(), 0);  // by root run, 1-based
+  const size_t nx = grid.size[0];
+  for (size_t row = 0; row + 1 < r.row_start.size(); ++row)
+    for (size_t a = r.row_start[row]; a < r.row_start[row + 1]; ++a) {
+      int32_t& n = number[c.root[a]];
+      if (!n) {
+        out.voxels.push_back(c.voxels[c.root[a]]);
+        n = out.count();
+      }
+      std::fill(out.label.begin() + long(row * nx + r.runs[a].begin),
+                out.label.begin() + long(row * nx + r.runs[a].end), n);
+    }
+  return out;
+}
+
 Mask holes_filled(const Mask& mask, const MaskGrid& grid) {
   const Runs background = runs_of(mask, grid, 0);
   const Components c = components_of(background, grid);

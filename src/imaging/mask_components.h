@@ -5,6 +5,7 @@
 // grow with the number of runs (the mask's boundary), not with its voxels: a 512 x 512 x 330
 // head CT's body is about 0.3 million runs for 86 million voxels.
 #include <cstdint>
+#include <vector>
 
 #include "imaging/mask_grid.h"
 
@@ -15,6 +16,15 @@ Mask largest_component(const Mask& mask, const MaskGrid& grid);
 
 // The components of at least min_voxels voxels.
 Mask components_of_at_least(const Mask& mask, const MaskGrid& grid, int64_t min_voxels);
+
+// Every voxel's component: 0 outside the mask, 1..count inside, numbered in index order of their
+// first voxel; `voxels[c]` (c >= 1) is component c's size (voxels[0] = 0).
+struct ComponentLabels {
+  std::vector<int32_t> label;
+  std::vector<int64_t> voxels;
+  int32_t count() const { return int32_t(voxels.size()) - 1; }
+};
+ComponentLabels label_components(const Mask& mask, const MaskGrid& grid);
 
 // The mask with its holes filled: background regions (6-connected) that do not reach the
 // border of the grid become foreground.

@@ -9,14 +9,19 @@
 //      cushion that touches the skin over a thin contact (thinner than ~2 x radius);
 //   3. the largest connected component, dilated back by the same ball and intersected with
 //      step 1 (restores ears and nose rims the opening thinned), largest component again;
-//   4. enclosed cavities filled (3D hole filling: sinuses or airway pockets with no opening
+//   4. the pieces the opening cut off put back where they are soft tissue: at most
+//      max_restored_piece_mm3 and of soft tissue's mean grey value (-150 to +150 HU). A nose
+//      whose walls, with the nostrils behind them, are thinner than the ball is cut off whole (the
+//      cadaver head's was, and its face model had no nose); a head rest or a table is a larger
+//      piece, a pad, a cushion or metal streaks in the air are not soft tissue's grey;
+//   5. enclosed cavities filled (3D hole filling: sinuses or airway pockets with no opening
 //      to the outside at this resolution).
 // Bone: HU >= bone_hu inside the body; with bone_edge_at_half_maximum its boundary voxels kept
 // only where they reach half-way between the bone and what lies beside it (half_maximum_edge.h:
 // the threshold alone lays a voxel of partial volume over every bone); islands smaller than
 // min_bone_island_mm3 dropped.
 // Teeth: bone voxels with HU >= teeth_hu (enamel, dense dentine, fillings).
-// Enclosed air: cavities filled in step 4 (maxillary/frontal sinus air where it is closed off).
+// Enclosed air: cavities filled in step 5 (maxillary/frontal sinus air where it is closed off).
 #include <cstdint>
 
 #include "core/volume.h"
@@ -35,8 +40,9 @@ struct SegmentationOptions {
   double skin_hu = -400;
   double bone_hu = 300;
   double teeth_hu = 1500;
-  double headrest_gap_mm = 3;        // opening radius (step 2 above); 0 disables the opening
-  double min_bone_island_mm3 = 200;  // smaller bone pieces are noise, metal streaks or debris
+  double headrest_gap_mm = 3;             // opening radius (step 2 above); 0 disables the opening
+  double max_restored_piece_mm3 = 50000;  // step 4: larger pieces cut off the body stay outside it
+  double min_bone_island_mm3 = 200;       // smaller bone pieces are noise, metal streaks or debris
   // true: the bone's boundary by the half-maximum rule (bone Dice 0.97-0.98 on the phantom, 0.90
   // by the threshold alone). Not the default yet: the face models are built and checked on the
   // threshold's bone, and the non-linear FEM does not converge on the phantom's trimmed one.

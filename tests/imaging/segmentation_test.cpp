@@ -98,6 +98,81 @@ TEST(Segmentation, SyntheticHeadLabelsAndHeadRestRemoval) {
   EXPECT_GT(counts[kEnclosedAir], 100);
 }
 
+// A nose whose walls are thinner than the opening's ball (as the cadaver head's alae, septum and
+// tip, 4-5 mm with the nostrils behind them): the opening cuts it off whole and the dilation back
+// reaches only its root. It is a small piece cut off the body, so it is body again; the head rest
+// (a far larger piece) stays outside.
+TEST(Segmentation, AThinNoseAndEarAreKeptWhileAPadAndTheHeadRestGo) {
+  SyntheticHead h = make_head();
+  const VolumeGeometry& g = h.volume.geometry;
+  const Eigen::Vector3d tip_centre(80, 20, 90);  // on the face's front (y = c.y - 80)
+  const Eigen::Vector3d outer(12, 25, 20), inner(8, 21, 16);
+  std::vector<uint8_t> in_nose(h.volume.hu.size(), 0);
+  for (int k = 0; k < g.size.z(); ++k)
+    for (int j = 0; j < g.size.y(); ++j)
+      for (int i = 0; i < g.size.x(); ++i) {
+        const Eigen::Vector3d p = g.world(Eigen::Vector3d(i, j, k));
+        const size_t n = size_t(g.index(i, j, k));
+        if (h.in_head[n] || p.y() > tip_centre.y()) continue;
+        const Eigen::Vector3d d = p - tip_centre;
+        if (d.cwiseQuotient(outer).norm() <= 1 && d.cwiseQuotient(inner).norm() > 1) {
+          h.volume.hu[n] = 40;
+          in_nose[n] = 1;
+        }
+      }
+  // Two plates 8 mm (4 voxels) thick on the head's sides (x = 20 and x = 140), 20 x 20 mm,
+  // thinner than the 2 mm grid's ball (5 voxels across): on the right an "ear" of soft tissue's
+  // grey, on the left a pad of foam (-300 HU). The dilation back reaches into both.
+  std::vector<uint8_t> in_ear(h.volume.hu.size(), 0), in_pad(h.volume.hu.size(), 0);
+  for (int k = 0; k < g.size.z(); ++k)
+    for (int j = 0; j < g.size.y(); ++j)
+      for (int i = 0; i < g.size.x(); ++i) {
+        const Eigen::Vector3d p = g.world(Eigen::Vector3d(i, j, k));
+        const size_t n = size_t(g.index(i, j, k));
+        if (h.in_head[n] || std::abs(p.y() - 100) > 10 || std::abs(p.z() - 90) > 10) continue;
+        if (p.x() > 11 && p.x() < 20) {
+          h.volume.hu[n] = 30;
+          in_ear[n] = 1;
+        } else if (p.x() > 140 && p.x() < 149) {
+          h.volume.hu[n] = -300;
+          in_pad[n] = 1;
+        }
+      }
+  auto kept_of = [&](const std::vector<uint8_t>& truth, const LabelVolume& labels) {
+    int64_t kept = 0, total = 0;
+    for (size_t n = 0; n < truth.size(); ++n) {
+      total += truth[n];
+      kept += truth[n] && labels.labels[n] != kBackground;
+    }
+    return double(kept) / double(total);
+  };
+  auto nose_kept = [&](const LabelVolume& labels) {
+    int64_t kept = 0, total = 0;
+    for (size_t n = 0; n < in_nose.size(); ++n) {
+      total += in_nose[n];
+      kept += in_nose[n] && labels.labels[n] == kSoftTissue;
+    }
+    return double(kept) / double(total);
+  };
+  auto headrest_left = [&](const LabelVolume& labels) {
+    int64_t left = 0;
+    for (size_t n = 0; n < h.in_headrest_far.size(); ++n) left += h.in_headrest_far[n] && labels.labels[n];
+    return left;
+  };
+  const LabelVolume without = segment_tissues(h.volume, {.max_restored_piece_mm3 = 0});
+  EXPECT_LT(nose_kept(without), 0.5) << "the walls are not thin enough for the opening to cut the nose";
+  EXPECT_EQ(headrest_left(without), 0);
+
+  EXPECT_LT(kept_of(in_ear, without), 0.9);
+  EXPECT_LT(kept_of(in_pad, without), 0.9);
+
+  const LabelVolume labels = segment_tissues(h.volume);
+  EXPECT_GT(nose_kept(labels), 0.999);
+  EXPECT_GT(kept_of(in_ear, labels), 0.999);
+  EXPECT_EQ(kept_of(in_pad, labels), kept_of(in_pad, without)) << "a pad's grey is not soft tissue's";
+  EXPECT_EQ(headrest_left(labels), 0) << "the head rest is a larger piece and stays outside";
+}
+
 TEST(Segmentation, RestrictToMaskMakesTheMaskBoundaryTheIsoLevel) {
   Volume v;
   v.geometry.size = {4, 1, 1};
