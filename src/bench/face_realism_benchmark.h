@@ -15,14 +15,16 @@ namespace maxillo::bench {
 struct FaceRealismOptions {
   std::vector<double> advancements_mm{3, 6, 9};
   bool free_cavities = false;  // moved bone carries only the tissue on its outer surface (AttachmentOptions)
+  bool nose_root = false;      // the region's second piece above the orbits (SoftTissueOptions::nose_root)
 };
 
 // Error(kFileNotFound) when the cadaver head is absent. Figures: preparation_seconds,
-// landmarks_by_hand, free_cavities, face_model (tets, nodes, cell_mm, seconds), published (label,
+// landmarks_by_hand, free_cavities, nose_root, face_model (tets, nodes, cell_mm, seconds), published (label,
 // published, source, plausible_low/high), advancements_mm, runs (advancement_mm, model, title,
 // seconds; error when it failed, else iterations, points: label, present, forward_mm, ratio,
 // plausible; gradient_p999, gradient_max, moved_edges; boundary_move_mm, the largest move within
-// 5 mm inside each region plane: below the orbits, under the chin, in front of the ears;
+// 5 mm inside each region plane where it cuts tissue: below the orbits, under the chin, in front
+// of the ears, and with nose_root above the orbits, under the forehead's cut, in front of the eyes;
 // fixed_nodes, prescribed_nodes), peak_memory_mb.
 Json run_face_realism_benchmark(const FaceRealismOptions& options);
 

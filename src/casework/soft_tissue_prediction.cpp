@@ -22,6 +22,11 @@ using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 constexpr double kBelowMentonMm = 15;
+// The nose's root and the glabella up to here: where the forehead's tissue lies on unmoved bone, so
+// that the move has died out (the cadaver head: under 0.01 mm at this cut for a 6 mm advancement).
+constexpr double kAboveNasionMm = 15;
+// Behind the nasion the frontal bone and the eyes begin; the brain lies more than this behind it.
+constexpr double kBehindNasionMm = 10;
 
 struct Solved {
   Eigen::MatrixX3d displacement;
@@ -91,15 +96,21 @@ void map_to_skin(SoftTissuePrediction& prediction, const TriangleMesh& skin, dou
 
 }  // namespace
 
-std::vector<softtissue::RegionPlane> default_face_region_planes(const LandmarkSet& landmarks) {
+softtissue::RegionShape default_face_region(const LandmarkSet& landmarks, bool nose_root) {
   const auto frame = anatomical_frame(landmarks);
   const auto orbitale = bilateral_mean(landmarks, "Or"), porion = bilateral_mean(landmarks, "Po");
   if (!orbitale || !porion)
     throw Error(ErrorCode::kBadValue, "face region", "needs the landmarks Or and Po (or their R/L)");
   const Eigen::Vector3d menton = require_landmark(landmarks, "Me", "face region");
-  return {{*orbitale, -frame.superior},                                // below the orbits
-          {menton - kBelowMentonMm * frame.superior, frame.superior},  // above a plane under the chin
-          {*porion, frame.anterior}};                                  // in front of the ears
+  const softtissue::RegionPlane below_orbits{*orbitale, -frame.superior},
+      above_chin{menton - kBelowMentonMm * frame.superior, frame.superior}, before_ears{*porion, frame.anterior};
+  softtissue::RegionShape shape(std::vector{below_orbits, above_chin, before_ears});
+  const auto nasion = find_landmark(landmarks, "N");
+  if (nose_root && nasion)
+    shape.pieces.push_back({{*orbitale, frame.superior},                                     // above the orbits
+                            {*nasion + kAboveNasionMm * frame.superior, -frame.superior},    // below the forehead's cut
+                            {*nasion - kBehindNasionMm * frame.anterior, frame.anterior}});  // in front of the eyes
+  return shape;
 }
 
 std::string face_model_key(const LabelVolume& tissues, const LandmarkSet& landmarks, const SoftTissueOptions& options) {
@@ -112,10 +123,13 @@ std::string face_model_key(const LabelVolume& tissues, const LandmarkSet& landma
   std::snprintf(text, sizeof text, "grid %d %d %d %.17g %.17g %.17g %.17g %.17g %.17g\n", g.size.x(), g.size.y(),
                 g.size.z(), g.spacing.x(), g.spacing.y(), g.spacing.z(), g.origin.x(), g.origin.y(), g.origin.z());
   hash.update(text);
-  for (const auto& plane : default_face_region_planes(landmarks)) {
-    std::snprintf(text, sizeof text, "plane %.17g %.17g %.17g %.17g %.17g %.17g\n", plane.point.x(), plane.point.y(),
-                  plane.point.z(), plane.normal.x(), plane.normal.y(), plane.normal.z());
-    hash.update(text);
+  for (const auto& piece : default_face_region(landmarks, options.nose_root).pieces) {
+    hash.update("piece\n");
+    for (const auto& plane : piece) {
+      std::snprintf(text, sizeof text, "plane %.17g %.17g %.17g %.17g %.17g %.17g\n", plane.point.x(), plane.point.y(),
+                    plane.point.z(), plane.normal.x(), plane.normal.y(), plane.normal.z());
+      hash.update(text);
+    }
   }
   for (uint8_t label : options.soft_labels) hash.update("label " + std::to_string(label) + "\n");
   const auto& m = options.meshing;
@@ -130,8 +144,8 @@ FaceModel build_face_model(const LabelVolume& tissues, const LandmarkSet& landma
   FaceModel model;
   model.key = face_model_key(tissues, landmarks, options);
   auto start = Clock::now();
-  model.planes = default_face_region_planes(landmarks);
-  const auto region = softtissue::face_region(tissues, options.soft_labels, model.planes);
+  model.region = default_face_region(landmarks, options.nose_root);
+  const auto region = softtissue::face_region(tissues, options.soft_labels, model.region);
   model.region_seconds = seconds_since(start);
 
   start = Clock::now();
@@ -160,7 +174,7 @@ SoftTissuePrediction predict_soft_tissue(const SoftTissueInput& input, const Sof
 
   auto start = Clock::now();
   auto attachment =
-      softtissue::attach_to_bone(prediction.mesh, *input.segments, input.moves, model.planes, options.attachment);
+      softtissue::attach_to_bone(prediction.mesh, *input.segments, input.moves, model.region, options.attachment);
   prediction.bc = std::move(attachment.bc);
   prediction.seconds.attachment = seconds_since(start);
   if (softtissue::count_nodes(prediction.bc, softtissue::NodeConstraint::kFixed) == 0)

@@ -2,7 +2,8 @@
 // Soft tissue prediction for a planned bone move (thesis ch. 6), from labelled volumes to the
 // predicted skin:
 //   1. the face region: soft tissue below the orbits, above a plane under the chin, in front of
-//      the ears (softtissue/face_region.h, planes from landmarks);
+//      the ears, optionally with the nose's root and the glabella above the orbits
+//      (softtissue/face_region.h, default_face_region below);
 //   2. a tet mesh of it (CGAL, tetmesh/labelled_tet_mesher.h) within the tet budget;
 //   3. join points from the bone segments and their planned moves, fixed nodes on the cuts
 //      (softtissue/bone_attachment.h);
@@ -37,6 +38,9 @@ struct SoftTissueOptions {
   softtissue::AttachmentOptions attachment;
   double skin_binding_mm = 4.0;         // skin farther from the model keeps its place
   std::vector<uint8_t> soft_labels{1};  // phantom and CT segmentation both use 1 for soft tissue
+  // The region's second piece, the nose's root and the glabella (default_face_region). Off by
+  // default: the non-linear FEM does not converge on the phantom with it (issue 34).
+  bool nose_root = false;
 };
 
 struct SoftTissueInput {
@@ -70,16 +74,19 @@ struct SoftTissuePrediction {
   records::SoftTissueTimings seconds;
 };
 
-// Region planes from landmarks: below the orbitales, 15 mm below menton and in front of the
-// porions (each needs the landmark; missing ones -> Error naming them).
-std::vector<softtissue::RegionPlane> default_face_region_planes(const LandmarkSet& landmarks);
+// The face region from landmarks: the face below the orbitales, above a plane 15 mm below menton,
+// in front of the porions; with `nose_root` and N, a second piece for the nose's root and the
+// glabella: above the orbitales, below a plane 15 mm above the nasion, in front of a plane 10 mm
+// behind it (the eyelids and the front of the eyes; the brain behind the forehead stays out), so
+// that no cut runs through the nose. Or, Po and Me are needed (missing ones -> Error naming them).
+softtissue::RegionShape default_face_region(const LandmarkSet& landmarks, bool nose_root = false);
 
 // Steps 1-2, which look at no move: the face region and its tet mesh. Built once for a case, one
 // model serves every move on the same tissues and landmarks (the planned move, the moves found after
 // surgery); `key` names what it was built from, and predict_soft_tissue refuses a model whose key
 // is not its input's.
 struct FaceModel {
-  std::vector<softtissue::RegionPlane> planes;
+  softtissue::RegionShape region;
   softtissue::TetMesh mesh;
   softtissue::MeshQuality quality;
   MeshingOutcome meshing;
@@ -87,7 +94,7 @@ struct FaceModel {
   std::string key;
 };
 FaceModel build_face_model(const LabelVolume& tissues, const LandmarkSet& landmarks, const SoftTissueOptions& options);
-// SHA-256 over the tissue labels, the region's planes, the soft labels and the meshing options.
+// SHA-256 over the tissue labels, the region's pieces and planes, the soft labels and the meshing options.
 std::string face_model_key(const LabelVolume& tissues, const LandmarkSet& landmarks, const SoftTissueOptions& options);
 
 // `model`: the case's face model when the caller has it (build_face_model with the same tissues,

@@ -95,12 +95,6 @@ void hold_floating_pieces(const TetMesh& mesh, const std::vector<uint8_t>& inner
   }
 }
 
-bool on_cut(const Eigen::Vector3d& p, const std::vector<RegionPlane>& planes, double tolerance) {
-  for (const auto& plane : planes)
-    if (std::abs(plane.side(p)) <= tolerance) return true;
-  return false;
-}
-
 }  // namespace
 
 bool inside_bone_cavity(const LabelVolume& segments, const Eigen::Vector3d& p, const AttachmentOptions& options) {
@@ -120,7 +114,7 @@ bool inside_bone_cavity(const LabelVolume& segments, const Eigen::Vector3d& p, c
 }
 
 Attachment attach_to_bone(const TetMesh& mesh, const LabelVolume& segments,
-                          const std::map<uint8_t, Eigen::Isometry3d>& moves, const std::vector<RegionPlane>& cut_planes,
+                          const std::map<uint8_t, Eigen::Isometry3d>& moves, const RegionShape& region,
                           const AttachmentOptions& options) {
   const int n = mesh.node_count();
   Attachment result;
@@ -143,7 +137,7 @@ Attachment attach_to_bone(const TetMesh& mesh, const LabelVolume& segments,
       } else {
         result.bc.constraint[size_t(i)] = NodeConstraint::kFixed;
       }
-    } else if (on_cut(p, cut_planes, options.cut_plane_tolerance_mm)) {
+    } else if (region.on_cut(p, options.cut_plane_tolerance_mm)) {
       result.bc.constraint[size_t(i)] = NodeConstraint::kFixed;
     }
   }

@@ -2,8 +2,8 @@
 // Boundary conditions of a face model from the bone it lies on (thesis ch. 6: join points).
 // A node touches bone when a voxel of a bone segment lies within touch_mm of it; it then
 // follows that segment's rigid move (prescribed) or, when the segment does not move, stays put
-// (fixed). Nodes on a cut plane of the region are fixed too: the tissue beyond is not
-// modelled and is taken as unmoved. Every other node is free.
+// (fixed). Nodes where the region's shape cuts through tissue are fixed too (RegionShape::on_cut):
+// the tissue beyond is not modelled and is taken as unmoved. Every other node is free.
 //
 // With outer_surface_only (off by default, see below), a moved segment carries only the tissue on
 // its outer surface (its periosteum): a node inside
@@ -48,7 +48,7 @@ bool inside_bone_cavity(const LabelVolume& segments, const Eigen::Vector3d& p, c
 // `segments` labels bone segments (0 = no bone); `moves` gives the rigid move of each moved
 // segment (pre-op -> planned, LPS mm); segments absent from `moves` stay where they are.
 Attachment attach_to_bone(const TetMesh& mesh, const LabelVolume& segments,
-                          const std::map<uint8_t, Eigen::Isometry3d>& moves, const std::vector<RegionPlane>& cut_planes,
+                          const std::map<uint8_t, Eigen::Isometry3d>& moves, const RegionShape& region,
                           const AttachmentOptions& options = {});
 
 }  // namespace maxillo::softtissue

@@ -15,9 +15,10 @@ namespace maxillo::softtissue {
 inline constexpr double kBoundaryBandMm = 5;   // how far inside a plane its nodes are looked at
 inline constexpr double kDecayedMoveMm = 0.1;  // a move this small at every plane: the region suffices
 
-// Per plane, the largest displacement (mm) of the nodes on its kept side within `band_mm` of it;
-// 0 for a plane with no node there.
+// Per plane of the shape (RegionShape::planes() order), the largest displacement (mm) of the
+// nodes on its kept side within `band_mm` of it where it cuts tissue (a step out through it
+// leaves the shape: not where two pieces meet); 0 for a plane with no such node.
 std::vector<double> largest_move_near_planes(const TetMesh& mesh, const Eigen::MatrixX3d& displacement,
-                                             const std::vector<RegionPlane>& planes, double band_mm = kBoundaryBandMm);
+                                             const RegionShape& shape, double band_mm = kBoundaryBandMm);
 
 }  // namespace maxillo::softtissue

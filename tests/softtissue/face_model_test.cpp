@@ -89,6 +89,41 @@ TEST(FaceRegion, KeepsSoftTissueOnTheKeptSideOfEveryPlane) {
   EXPECT_EQ(kept, 6 /* k = 1..6 */ * 10 * 7 /* i = 3..9 */);
 }
 
+// Two pieces stacked as the default face region's are: A below z = 10, B above it up to z = 20
+// but only where x < 5 (the nose's root above the orbits). Together one region; where they
+// meet no tissue is cut.
+RegionShape stacked_pieces() {
+  return RegionShape(
+      std::vector<std::vector<RegionPlane>>{{{Eigen::Vector3d(0, 0, 10), -Eigen::Vector3d::UnitZ()}},   // A: z < 10
+                                            {{Eigen::Vector3d(0, 0, 10), Eigen::Vector3d::UnitZ()},     // B: z > 10,
+                                             {Eigen::Vector3d(0, 0, 20), -Eigen::Vector3d::UnitZ()},    //    z < 20,
+                                             {Eigen::Vector3d(5, 0, 0), -Eigen::Vector3d::UnitX()}}});  //    x < 5
+}
+
+TEST(FaceRegion, TwoPiecesAreOneRegionCutOnlyWhereTissueGoesOn) {
+  const RegionShape shape = stacked_pieces();
+  EXPECT_TRUE(shape.contains({2, 0, 5}));
+  EXPECT_TRUE(shape.contains({2, 0, 15}));
+  EXPECT_FALSE(shape.contains({8, 0, 15})) << "above A, beside B";
+  EXPECT_FALSE(shape.contains({2, 0, 25}));
+  EXPECT_EQ(shape.planes().size(), 4u);
+
+  EXPECT_FALSE(shape.on_cut({2, 0, 10}, 1)) << "where A and B meet";
+  EXPECT_TRUE(shape.on_cut({8, 0, 10}, 1)) << "A's top beside B";
+  EXPECT_TRUE(shape.on_cut({2, 0, 19.5}, 1)) << "B's top";
+  EXPECT_TRUE(shape.on_cut({5, 0, 15}, 1)) << "B's side";
+  EXPECT_FALSE(shape.on_cut({5, 0, 5}, 1)) << "B's side plane runs on inside A";
+  EXPECT_FALSE(shape.on_cut({2, 0, 15}, 1));
+
+  // The voxel mask: a 10 x 1 x 30 grid of soft tissue, 1 mm voxels at x = 0..9, z = 0..29.
+  LabelVolume tissues;
+  tissues.geometry.size = {10, 1, 30};
+  tissues.labels.assign(300, 1);
+  int64_t kept = 0;
+  for (auto v : face_region(tissues, {1}, shape).labels) kept += v;
+  EXPECT_EQ(kept, 10 * 10 /* A: z = 0..9 */ + 5 * 9 /* B: x = 0..4, z = 11..19 */);
+}
+
 TEST(BoneAttachment, JoinsNodesToTheBoneTheyTouchAndFixesCutPlanes) {
   // Tet mesh: the cube [0, 20]^3. Bone: a slab of voxels at z = -1 (below the cube), split in
   // two segments at x = 10; segment 2 moves 3 mm along y, segment 1 stays. Cut plane: x = 20.
@@ -205,6 +240,23 @@ TEST(BoundaryMove, LargestMoveWithinTheBandInsideEachPlane) {
   EXPECT_NEAR(largest[1], 0.5, 1e-12);
   EXPECT_EQ(largest[2], 0.0);
   EXPECT_NEAR(largest_move_near_planes(mesh, u, planes, 2)[0], 2.0, 1e-12);  // x = 20 only
+}
+
+TEST(BoundaryMove, AFaceWherePiecesMeetIsNoBoundary) {
+  // The cube [0, 20]^3 (nodes 1 mm apart) in two pieces side by side, A at x < 10 and B at
+  // x > 10; u_y = 0.1 x.
+  const auto mesh = cube(20, 20);
+  Eigen::MatrixX3d u = Eigen::MatrixX3d::Zero(mesh.node_count(), 3);
+  u.col(1) = 0.1 * mesh.nodes.col(0);
+  const RegionShape shape(std::vector<std::vector<RegionPlane>>{
+      {{Eigen::Vector3d(10, 0, 0), -Eigen::Vector3d::UnitX()}, {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d::UnitX()}},
+      {{Eigen::Vector3d(10, 0, 0), Eigen::Vector3d::UnitX()}, {Eigen::Vector3d(20, 0, 0), -Eigen::Vector3d::UnitX()}}});
+  const auto largest = largest_move_near_planes(mesh, u, shape, 5);
+  ASSERT_EQ(largest.size(), 4u);
+  EXPECT_EQ(largest[0], 0.0) << "A's face at x = 10 lies against B";
+  EXPECT_NEAR(largest[1], 0.5, 1e-12);
+  EXPECT_EQ(largest[2], 0.0) << "B's face at x = 10 lies against A";
+  EXPECT_NEAR(largest[3], 2.0, 1e-12);
 }
 
 }  // namespace
