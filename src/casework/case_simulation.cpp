@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <tuple>
 
 #include "casework/automatic_landmarks.h"
 #include "ceph/landmark_frame.h"
@@ -18,6 +19,7 @@
 #include "records/plan_archive.h"
 #include "records/simulation_archive.h"
 #include "casework/planned_case.h"
+#include "casework/profile_response.h"
 #include "planning/osteotomy.h"
 #include "planning/plan_application.h"
 #include "softtissue/vtu_writer.h"
@@ -51,9 +53,35 @@ std::vector<records::SimulationSummary::LandmarkMove> landmark_moves(const SoftT
   return moves;
 }
 
+// The predicted profile's response to the maxilla's advancement, with the published bands it is
+// judged against; none when the plan does not bring the maxilla forward.
+std::optional<records::SimulationSummary::ProfileResponse> profile_response_record(const SimulationResult& result,
+                                                                                   const SegmentMoves& moves,
+                                                                                   const LandmarkSet& landmarks) {
+  const auto advancement = maxillary_advancement(moves, landmarks, result.frame);
+  if (!advancement) return std::nullopt;
+  const ProfileResponse response = profile_response(result.skin_before, result.prediction.skin_displacement,
+                                                    result.frame, landmarks, advancement->forward_mm);
+  records::SimulationSummary::ProfileResponse record;
+  record.advancement_mm = advancement->forward_mm;
+  record.reference = advancement->reference;
+  record.other_segments_moved = advancement->other_segments_moved;
+  const auto& published = published_le_fort_advancement_response();
+  for (size_t i = 0; i < response.points.size(); ++i) {
+    const auto& point = response.points[i];
+    record.points.push_back({point.label, point.present, point.forward_mm, point.ratio, published[i].published,
+                             published[i].source, published[i].plausible_low, published[i].plausible_high});
+  }
+  record.gradient_p999 = response.gradient_p999;
+  record.gradient_max = response.gradient_max;
+  if (auto nearest = nearest_landmark(landmarks, response.steepest_at))
+    std::tie(record.steepest_near, record.steepest_near_mm) = *nearest;
+  return record;
+}
+
 // What simulation.json holds, and the archive keeps, of a prediction.
 records::SimulationSummary summarise(const SimulationResult& result, const SimulationRequest& request,
-                                     const LandmarkSet& landmarks) {
+                                     const LandmarkSet& landmarks, const SegmentMoves& moves) {
   const auto& p = result.prediction;
   const SoftTissueOptions& options = request.options;
   records::SimulationSummary summary;
@@ -79,6 +107,7 @@ records::SimulationSummary summarise(const SimulationResult& result, const Simul
   if (result.uncertainty)
     summary.uncertainty = {result.uncertainty->runs, result.uncertainty->p95_mm, result.uncertainty->max_mm};
   summary.soft_landmarks = landmark_moves(p, result.frame, soft_landmarks_of(landmarks));
+  summary.profile_response = profile_response_record(result, moves, landmarks);
   return summary;
 }
 
@@ -216,7 +245,8 @@ SimulationResult simulate_case(Archive& archive, int64_t case_id, const Simulati
   const SurfaceRecipe recipe;
   result.skin_before =
       case_surfaces(archive, case_id, series, recipe, case_tissues.ct_labels_for(recipe.segmentation)).skin;
-  SoftTissueInput input{&tissues, &cut.segments, &result.skin_before, landmarks, moves_by_segment(moves)};
+  const SegmentMoves segment_moves = moves_by_segment(moves);
+  SoftTissueInput input{&tissues, &cut.segments, &result.skin_before, landmarks, segment_moves};
   result.prediction = predict_soft_tissue(input, request.options, request.face_model.get());
   if (request.uncertainty)
     result.uncertainty = prediction_uncertainty(result.prediction, result.skin_before, request.options);
@@ -227,7 +257,7 @@ SimulationResult simulate_case(Archive& archive, int64_t case_id, const Simulati
   if (result.uncertainty)
     result.uncertainty_views = render_uncertainty_views(result.prediction.skin_after, result.uncertainty->spread_mm,
                                                         result.frame, request.out);
-  result.summary = summarise(result, request, landmarks);
+  result.summary = summarise(result, request, landmarks, segment_moves);
   write_outputs(result, request.out);
   store_outputs(archive, case_id, series, result, request, landmarks);
   return result;

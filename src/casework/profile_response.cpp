@@ -1,7 +1,10 @@
 #include "casework/profile_response.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+
+#include "planning/osteotomy.h"
 
 namespace maxillo::casework {
 namespace {
@@ -36,17 +39,47 @@ void add_gradient(const TriangleMesh& skin, const Eigen::MatrixX3d& u, ProfileRe
   for (const auto& [a, b] : unique_edges(skin)) {
     if (u.row(a).norm() < kMovedMm && u.row(b).norm() < kMovedMm) continue;
     const double length = (skin.vertices.row(a) - skin.vertices.row(b)).norm();
-    if (length > 0) gradient.push_back((u.row(a) - u.row(b)).norm() / length);
+    if (length <= 0) continue;
+    gradient.push_back((u.row(a) - u.row(b)).norm() / length);
+    if (gradient.back() > response.gradient_max) {
+      response.gradient_max = gradient.back();
+      response.steepest_at = 0.5 * (skin.vertices.row(a) + skin.vertices.row(b)).transpose();
+    }
   }
   response.moved_edges = int(gradient.size());
   if (gradient.empty()) return;
   const size_t p999 = size_t(std::floor(0.999 * double(gradient.size() - 1)));
   std::nth_element(gradient.begin(), gradient.begin() + std::ptrdiff_t(p999), gradient.end());
   response.gradient_p999 = gradient[p999];
-  response.gradient_max = *std::max_element(gradient.begin() + std::ptrdiff_t(p999), gradient.end());
+}
+
+// A rigid move that moves no point of a head by a tenth of a millimetre (within 100 mm of the
+// origin): an identity stored for a segment the plan left in place.
+bool moves_anything(const Eigen::Isometry3d& move) {
+  constexpr double kReachMm = 100, kMovedMm = 0.1;
+  const double rotation = Eigen::AngleAxisd(move.linear()).angle();
+  return move.translation().norm() + rotation * kReachMm > kMovedMm;
 }
 
 }  // namespace
+
+std::optional<MaxillaryAdvancement> maxillary_advancement(const SegmentMoves& moves, const LandmarkSet& landmarks,
+                                                          const AnatomicalFrame& frame) {
+  const auto maxilla = moves.find(uint8_t(planning::Segment::kMaxilla));
+  if (maxilla == moves.end()) return std::nullopt;
+  for (const char* reference : {"A", "ANS", "U1"}) {
+    const auto point = find_landmark(landmarks, reference);
+    if (!point) continue;
+    MaxillaryAdvancement advancement{(maxilla->second * *point - *point).dot(frame.anterior), reference};
+    if (advancement.forward_mm < kSmallestAdvancementMm) return std::nullopt;
+    for (const auto& [segment, move] : moves)
+      if (segment != uint8_t(planning::Segment::kMaxilla) && segment != uint8_t(planning::Segment::kCranium) &&
+          moves_anything(move))
+        advancement.other_segments_moved = true;
+    return advancement;
+  }
+  return std::nullopt;
+}
 
 const std::vector<PublishedResponse>& published_le_fort_advancement_response() {
   static const std::vector<PublishedResponse> published{
@@ -60,6 +93,15 @@ const std::vector<PublishedResponse>& published_le_fort_advancement_response() {
       {"PogS", "about 0 (mandible not moved)", "", std::nullopt, std::nullopt},
   };
   return published;
+}
+
+std::optional<std::pair<std::string, double>> nearest_landmark(const LandmarkSet& landmarks,
+                                                               const Eigen::Vector3d& point) {
+  std::optional<std::pair<std::string, double>> nearest;
+  for (const auto& landmark : landmarks)
+    if (const double d = (landmark.position - point).norm(); !nearest || d < nearest->second)
+      nearest = std::pair{landmark.label, d};
+  return nearest;
 }
 
 bool plausible(const PublishedResponse& published, double ratio) {

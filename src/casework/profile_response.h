@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "casework/planned_case.h"
 #include "ceph/landmark.h"
 #include "core/triangle_mesh.h"
 #include "geometry/anatomical_frame.h"
@@ -39,6 +40,7 @@ struct ProfileResponse {
   std::vector<ProfilePointResponse> points;  // in published_le_fort_advancement_response()'s order
   double gradient_p999 = 0;                  // |du| / |dx| over the skin's edges that moved, mm per mm
   double gradient_max = 0;
+  Eigen::Vector3d steepest_at = Eigen::Vector3d::Zero();  // the midpoint of the edge with gradient_max
   int moved_edges = 0;  // edges with an end that moved >= 0.1 mm: what the gradient figures are over
 };
 
@@ -53,7 +55,24 @@ std::optional<Eigen::Index> profile_vertex_above(const TriangleMesh& skin, const
 ProfileResponse profile_response(const TriangleMesh& skin_before, const Eigen::MatrixX3d& displacement,
                                  const AnatomicalFrame& frame, const LandmarkSet& landmarks, double advancement_mm);
 
+// The landmark nearest to `point` and its distance; nullopt for an empty set.
+std::optional<std::pair<std::string, double>> nearest_landmark(const LandmarkSet& landmarks,
+                                                               const Eigen::Vector3d& point);
+
 // Whether `ratio` lies in the plausible band of `published` (true where it has no band).
 bool plausible(const PublishedResponse& published, double ratio);
+
+// How far a plan brings the maxilla forward: its segment's move at the A point (the published
+// ratios are soft tissue over the bone's move under it), or at ANS, then U1, when A is absent.
+struct MaxillaryAdvancement {
+  double forward_mm = 0;
+  std::string reference;              // the landmark it was read at
+  bool other_segments_moved = false;  // the mandible, a ramus or the chin moved as well
+};
+inline constexpr double kSmallestAdvancementMm = 1;  // below it the ratios are noise over a small move
+// nullopt when the maxilla moves forward by less than kSmallestAdvancementMm (or not at all), or
+// none of A, ANS and U1 is known.
+std::optional<MaxillaryAdvancement> maxillary_advancement(const SegmentMoves& moves, const LandmarkSet& landmarks,
+                                                          const AnatomicalFrame& frame);
 
 }  // namespace maxillo::casework

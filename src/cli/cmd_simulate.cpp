@@ -71,6 +71,22 @@ int run_simulate(const SimulateOptions& options, const GlobalOptions& global) {
                 << result.uncertainty->run_max_mm[r] << " mm, P95 " << result.uncertainty->run_p95_from_first_mm[r]
                 << " mm from the first run\n";
   }
+  if (const auto& profile = result.summary.profile_response) {
+    std::cout << "profile for the maxilla's " << profile->advancement_mm << " mm advancement (at " << profile->reference
+              << "), forward move as a fraction of it:\n";
+    for (const auto& point : profile->points) {
+      std::cout << "  " << point.label << ": ";
+      if (!point.present) {
+        std::cout << "not on the skin\n";
+        continue;
+      }
+      std::cout << point.ratio;
+      if (point.plausible_low || point.plausible_high)
+        std::cout << " (published " << point.published << ", plausible " << point.plausible_low.value_or(0) << "-"
+                  << point.plausible_high.value_or(1) << ")";
+      std::cout << "\n";
+    }
+  }
   for (const auto& file : result.files) std::cout << "wrote " << file.string() << "\n";
   return 0;
 }

@@ -52,6 +52,62 @@ void read_report_facts(JsonReader& r, SimulationSummary& s) {
     s.soft_landmarks.push_back(read_landmark_move(r.element(landmarks, "soft_landmarks", i)));
 }
 
+std::optional<double> optional_fraction(JsonReader& r, const std::string& key) {
+  if (r.at(key).is_null()) return std::nullopt;
+  return r.required_number(key);
+}
+
+SimulationSummary::ProfilePoint read_profile_point(JsonReader r) {
+  SimulationSummary::ProfilePoint point;
+  point.label = r.required_text("label");
+  point.present = r.required_bool("present");
+  point.forward_mm = r.required_number("forward_mm");
+  point.ratio = r.required_number("ratio");
+  point.published = r.required_text("published");
+  point.source = r.required_text("source");
+  point.plausible_low = optional_fraction(r, "plausible_low");
+  point.plausible_high = optional_fraction(r, "plausible_high");
+  return point;
+}
+
+SimulationSummary::ProfileResponse read_profile_response(JsonReader r) {
+  SimulationSummary::ProfileResponse response;
+  response.advancement_mm = r.required_number("advancement_mm");
+  response.reference = r.required_text("reference");
+  response.other_segments_moved = r.required_bool("other_segments_moved");
+  response.gradient_p999 = r.required_number("gradient_p999", 0);
+  response.gradient_max = r.required_number("gradient_max", 0);
+  response.steepest_near = r.required_text("steepest_near");
+  response.steepest_near_mm = r.required_number("steepest_near_mm", 0);
+  const Json& points = r.required_array("points");
+  for (size_t i = 0; i < points.size(); ++i)
+    response.points.push_back(read_profile_point(r.element(points, "points", i)));
+  return response;
+}
+
+Json optional_json(const std::optional<double>& value) { return value ? Json(*value) : Json(nullptr); }
+
+Json profile_response_json(const SimulationSummary::ProfileResponse& response) {
+  Json points = Json::array();
+  for (const auto& p : response.points)
+    points.push_back({{"label", p.label},
+                      {"present", p.present},
+                      {"forward_mm", p.forward_mm},
+                      {"ratio", p.ratio},
+                      {"published", p.published},
+                      {"source", p.source},
+                      {"plausible_low", optional_json(p.plausible_low)},
+                      {"plausible_high", optional_json(p.plausible_high)}});
+  return {{"advancement_mm", response.advancement_mm},
+          {"reference", response.reference},
+          {"other_segments_moved", response.other_segments_moved},
+          {"gradient_p999", response.gradient_p999},
+          {"gradient_max", response.gradient_max},
+          {"steepest_near", response.steepest_near},
+          {"steepest_near_mm", response.steepest_near_mm},
+          {"points", points}};
+}
+
 }  // namespace
 
 Json to_json(const SimulationSummary& s) {
@@ -91,6 +147,8 @@ Json to_json(const SimulationSummary& s) {
                            {"total_mm", m.total_mm}});
     json["soft_landmarks"] = landmarks;
   }
+  if (s.format_version >= 3)
+    json["profile_response"] = s.profile_response ? profile_response_json(*s.profile_response) : Json(nullptr);
   if (s.uncertainty)
     json["uncertainty"] = {
         {"runs", s.uncertainty->runs}, {"p95_mm", s.uncertainty->p95_mm}, {"max_mm", s.uncertainty->max_mm}};
@@ -123,6 +181,8 @@ SimulationSummary read_simulation_summary(const Json& json, const std::string& s
   s.seconds = read_seconds(r.object("seconds"));
   if (r.has("uncertainty")) s.uncertainty = read_band(r.object("uncertainty"));
   if (s.format_version >= 2) read_report_facts(r, s);
+  if (s.format_version >= 3 && !r.at("profile_response").is_null())
+    s.profile_response = read_profile_response(r.object("profile_response"));
   return s;
 }
 

@@ -15,7 +15,8 @@ namespace maxillo::records {
 struct SimulationSummary {
   // 2: the report's facts (plan_text, mean_aspect_ratio, meshing_attempts, soft_landmarks) added,
   // required from this version on; a version 1 summary has none of them.
-  static constexpr int kFormatVersion = 2;
+  // 3: profile_response (null when the plan does not advance the maxilla), required from 3 on.
+  static constexpr int kFormatVersion = 3;
 
   struct UncertaintyBand {
     std::vector<std::string> runs;  // "mtm nu=0.46", ...
@@ -25,6 +26,26 @@ struct SimulationSummary {
   struct LandmarkMove {
     std::string label;
     double forward_mm = 0, up_mm = 0, left_mm = 0, total_mm = 0;
+  };
+
+  // How the predicted profile follows a maxillary advancement, beside published series
+  // (casework/profile_response.h): stored with the published bands it was judged against.
+  struct ProfilePoint {
+    std::string label;      // Prn, dorsum, Sn, Ls, Li, PogS
+    bool present = false;   // the landmark (the dorsum: the profile) was there
+    double forward_mm = 0;  // the predicted skin's forward move there
+    double ratio = 0;       // forward_mm / advancement_mm
+    std::string published, source;
+    std::optional<double> plausible_low, plausible_high;  // the band, as a fraction of the advancement
+  };
+  struct ProfileResponse {
+    double advancement_mm = 0;          // the maxilla's forward move at `reference`
+    std::string reference;              // the landmark it was read at ("A")
+    bool other_segments_moved = false;  // the mandible or chin moved too: the series' bands are for the maxilla alone
+    std::vector<ProfilePoint> points;
+    double gradient_p999 = 0, gradient_max = 0;  // |du| / |dx| over the skin's edges that moved
+    std::string steepest_near;                   // the landmark nearest to the steepest edge
+    double steepest_near_mm = 0;                 // and its distance from it
   };
 
   int format_version = kFormatVersion;
@@ -43,7 +64,8 @@ struct SimulationSummary {
   double max_skin_displacement_mm = 0;
   SoftTissueTimings seconds;
   std::optional<UncertaintyBand> uncertainty;
-  std::vector<LandmarkMove> soft_landmarks;  // those of the case's landmarks that are soft tissue ones
+  std::vector<LandmarkMove> soft_landmarks;         // those of the case's landmarks that are soft tissue ones
+  std::optional<ProfileResponse> profile_response;  // version 3; none when the maxilla was not advanced
 };
 
 Json to_json(const SimulationSummary& summary);

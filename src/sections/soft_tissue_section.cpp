@@ -1,5 +1,7 @@
 #include "sections/soft_tissue_section.h"
 
+#include <algorithm>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -67,6 +69,82 @@ report::KeyValueBlock model_facts(const records::SimulationSummary& s, const std
   }};
 }
 
+// "pronasale (Prn)": the profile points as a surgeon reads them.
+std::string profile_point_name(const std::string& label) {
+  static const std::map<std::string, std::string> names{{"Prn", "nose tip, pronasale (Prn)"},
+                                                        {"dorsum", "nasal dorsum, 8 mm above the tip"},
+                                                        {"Sn", "subnasale (Sn)"},
+                                                        {"Ls", "upper lip, labrale superius (Ls)"},
+                                                        {"Li", "lower lip, labrale inferius (Li)"},
+                                                        {"PogS", "soft-tissue pogonion (Pog')"}};
+  const auto found = names.find(label);
+  return found == names.end() ? label : found->second;
+}
+
+std::string band_text(const records::SimulationSummary::ProfilePoint& p) {
+  if (!p.plausible_low && !p.plausible_high) return "none";
+  return fixed(p.plausible_low.value_or(0), 2) + "-" + (p.plausible_high ? fixed(*p.plausible_high, 2) : "");
+}
+
+std::string verdict(const records::SimulationSummary::ProfilePoint& p) {
+  if (!p.present) return "not on the skin";
+  if (!p.plausible_low && !p.plausible_high) return "no band";
+  const bool inside =
+      (!p.plausible_low || p.ratio >= *p.plausible_low) && (!p.plausible_high || p.ratio <= *p.plausible_high);
+  return inside ? "plausible" : "OUTSIDE";
+}
+
+report::Table profile_table(const records::SimulationSummary::ProfileResponse& response) {
+  report::Table table;
+  table.columns = {{"profile point", 0.31},
+                   {"forward (mm)", 0.13, report::Align::Right},
+                   {"of the advance", 0.13, report::Align::Right},
+                   {"published", 0.17},
+                   {"plausible", 0.12, report::Align::Right},
+                   {"", 0.14}};
+  for (const auto& p : response.points)
+    table.rows.push_back({profile_point_name(p.label), p.present ? fixed(p.forward_mm, 1) : "-",
+                          p.present ? fixed(p.ratio, 2) : "-", p.published, band_text(p), verdict(p)});
+  return table;
+}
+
+// The sources of the published figures, each once, in the table's order.
+std::string sources_text(const records::SimulationSummary::ProfileResponse& response) {
+  std::vector<std::string> sources;
+  for (const auto& p : response.points)
+    if (!p.source.empty() && std::find(sources.begin(), sources.end(), p.source) == sources.end())
+      sources.push_back(p.source);
+  std::string text;
+  for (const auto& source : sources) text += (text.empty() ? "" : "; ") + source;
+  return text;
+}
+
+// Whether the predicted profile moves as faces are measured to move after a Le Fort I
+// advancement (issue 34): a surgeon sees at once whether the prediction is plausible.
+void add_profile_response(const records::SimulationSummary::ProfileResponse& response, report::Section& section) {
+  int outside = 0;
+  for (const auto& p : response.points) outside += verdict(p) == "OUTSIDE";
+  section.blocks.push_back(
+      report::Paragraph{"Plausibility: how far the predicted profile moves forward for the maxilla's advancement of " +
+                        fixed(response.advancement_mm, 1) + " mm (read at " + response.reference +
+                        "), as a fraction of it, beside what published series of Le Fort I advancement measured. " +
+                        (outside ? std::to_string(outside) + " point" + (outside > 1 ? "s lie" : " lies") +
+                                       " outside the plausible band: read the predicted face there with care."
+                                 : "Every point with a published band lies inside it.")});
+  section.blocks.push_back(profile_table(response));
+  std::string note = "Sources: " + sources_text(response) +
+                     ". The bands are this program's, around the published means (docs/ARCHITECTURE.md). "
+                     "Largest change of the displacement over the skin: " +
+                     fixed(response.gradient_p999, 2) + " mm per mm (99.9th percentile of its edges), " +
+                     fixed(response.gradient_max, 1) + " at most" +
+                     (response.steepest_near.empty()
+                          ? std::string(".")
+                          : ", " + fixed(response.steepest_near_mm, 0) + " mm from " + response.steepest_near + ".");
+  if (response.other_segments_moved)
+    note += " The mandible or the chin moved as well; the series measured the maxilla moved alone.";
+  section.blocks.push_back(report::Note{note});
+}
+
 void add_uncertainty(const records::StoredSimulation& simulation, report::Section& section) {
   const auto& band = *simulation.summary.uncertainty;
   section.blocks.push_back(
@@ -109,6 +187,7 @@ report::Section soft_tissue_section(const records::StoredSimulation& simulation)
                           "(forward, up and to the patient's left in the anatomical frame):"});
     section.blocks.push_back(landmark_table(s.soft_landmarks));
   }
+  if (s.profile_response) add_profile_response(*s.profile_response, section);
   if (s.uncertainty) add_uncertainty(simulation, section);
   return section;
 }

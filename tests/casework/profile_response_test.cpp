@@ -3,9 +3,11 @@
 // linearly with height gives each point its height's share and the slope as the largest gradient.
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
 
 #include "casework/profile_response.h"
+#include "planning/osteotomy.h"
 
 namespace maxillo::casework {
 namespace {
@@ -70,6 +72,23 @@ TEST(ProfileResponse, MoveGrowingWithHeightGivesEachPointItsShareAndTheSlope) {
   EXPECT_LE(response.gradient_p999, slope + 1e-12);
 }
 
+// A face that tears along a line (the skin above z = 33 moves 5 mm forward, below it stays): the
+// steepest edges cross the tear (0.5 mm long, 5 mm apart in move), and the landmark nearest to
+// the steepest is the upper lip's, 0.75 mm above the tear.
+TEST(ProfileResponse, TheSteepestEdgeIsFoundAtATear) {
+  const auto skin = ridge_face();
+  Eigen::MatrixX3d u = Eigen::MatrixX3d::Zero(skin.vertices.rows(), 3);
+  for (Eigen::Index v = 0; v < u.rows(); ++v)
+    if (skin.vertices(v, 2) > 33) u(v, 1) = -5;
+  const auto response = profile_response(skin, u, patient_axes(), profile_landmarks(), 5);
+  EXPECT_NEAR(response.gradient_max, 5 / 0.5, 1e-9);  // across a vertical edge 0.5 mm long
+  EXPECT_NEAR(response.steepest_at.z(), 33.25, 1e-9);
+  const auto nearest = nearest_landmark(profile_landmarks(), response.steepest_at);
+  ASSERT_TRUE(nearest);
+  EXPECT_EQ(nearest->first, "Ls");
+  EXPECT_FALSE(nearest_landmark({}, response.steepest_at));
+}
+
 TEST(ProfileResponse, DorsumIsTheMostAnteriorMidlineVertexAboveTheTip) {
   const auto skin = ridge_face();
   const Eigen::Vector3d tip(0.3, -50, 40);
@@ -102,6 +121,49 @@ TEST(ProfileResponse, PlausibleBandsFollowThePublishedFigures) {
       EXPECT_TRUE(plausible(published, 0.3));  // no band
     }
   }
+}
+
+// The maxilla's advancement is its move read at A: a translation gives its forward part, a turn
+// about a transverse axis 40 mm above A gives 40 mm times the angle's sine.
+TEST(MaxillaryAdvancement, IsTheMaxillasForwardMoveAtA) {
+  const LandmarkSet landmarks{{"A", {0, -60, 20}}, {"ANS", {0, -62, 25}}};
+  const auto maxilla = uint8_t(planning::Segment::kMaxilla);
+  SegmentMoves moves{{maxilla, Eigen::Isometry3d(Eigen::Translation3d(1, -6, 2))}};
+  auto advancement = maxillary_advancement(moves, landmarks, patient_axes());
+  ASSERT_TRUE(advancement);
+  EXPECT_NEAR(advancement->forward_mm, 6, 1e-12);
+  EXPECT_EQ(advancement->reference, "A");
+  EXPECT_FALSE(advancement->other_segments_moved);
+
+  // Turned by 0.1 rad about the transverse axis 40 mm above A: A swings forward by 40 sin 0.1.
+  const Eigen::Vector3d pivot(0, -60, 60);
+  moves[maxilla] =
+      Eigen::Translation3d(pivot) * Eigen::AngleAxisd(-0.1, Eigen::Vector3d::UnitX()) * Eigen::Translation3d(-pivot);
+  advancement = maxillary_advancement(moves, landmarks, patient_axes());
+  ASSERT_TRUE(advancement);
+  EXPECT_NEAR(advancement->forward_mm, 40 * std::sin(0.1), 1e-12);
+
+  // Without A the move is read at ANS; a moved mandible is named; an identity stored for it is not.
+  moves[maxilla] = Eigen::Translation3d(0, -4, 0) * Eigen::Isometry3d::Identity();
+  moves[uint8_t(planning::Segment::kMandible)] = Eigen::Isometry3d::Identity();
+  advancement = maxillary_advancement(moves, {{"ANS", {0, -62, 25}}}, patient_axes());
+  ASSERT_TRUE(advancement);
+  EXPECT_EQ(advancement->reference, "ANS");
+  EXPECT_FALSE(advancement->other_segments_moved);
+  moves[uint8_t(planning::Segment::kMandible)] = Eigen::Translation3d(0, -3, 0) * Eigen::Isometry3d::Identity();
+  EXPECT_TRUE(maxillary_advancement(moves, landmarks, patient_axes())->other_segments_moved);
+}
+
+TEST(MaxillaryAdvancement, NoneWhenTheMaxillaDoesNotComeForward) {
+  const LandmarkSet landmarks{{"A", {0, -60, 20}}};
+  const auto maxilla = uint8_t(planning::Segment::kMaxilla);
+  EXPECT_FALSE(maxillary_advancement({}, landmarks, patient_axes()));  // the maxilla not moved
+  const SegmentMoves setback{{maxilla, Eigen::Isometry3d(Eigen::Translation3d(0, 3, 0))}};
+  EXPECT_FALSE(maxillary_advancement(setback, landmarks, patient_axes()));
+  const SegmentMoves small{{maxilla, Eigen::Isometry3d(Eigen::Translation3d(0, -0.5, 0))}};
+  EXPECT_FALSE(maxillary_advancement(small, landmarks, patient_axes()));
+  const SegmentMoves forward{{maxilla, Eigen::Isometry3d(Eigen::Translation3d(0, -5, 0))}};
+  EXPECT_FALSE(maxillary_advancement(forward, {{"Me", {0, -60, -40}}}, patient_axes()));  // no A, ANS, U1
 }
 
 }  // namespace

@@ -51,6 +51,16 @@ TEST(Simulate, SixMillimetreAdvancementOfThePhantomGivesAPlausibleFace) {
   EXPECT_LT(summary["max_skin_displacement_mm"].get<double>(), 7.0);
   EXPECT_EQ(summary["uncertainty"]["runs"].size(), 4u);            // fem 0.46, mtm 0.46, fem 0.45, fem 0.49
   EXPECT_LT(summary["uncertainty"]["p95_mm"].get<double>(), 1.0);  // plausible models agree
+  // Issue 34: the profile's response to the maxilla's advancement, read at A (moved rigidly by 6 mm).
+  const auto& profile = summary["profile_response"];
+  EXPECT_NEAR(profile["advancement_mm"].get<double>(), 6.0, 0.01);
+  EXPECT_EQ(profile["reference"], "A");
+  EXPECT_EQ(profile["points"].size(), 6u);
+  for (const auto& point : profile["points"]) {
+    if (point["label"] == "Ls") {
+      EXPECT_GT(point["ratio"].get<double>(), 0.5);  // the lip follows its bone
+    }
+  }
   // The predicted skin: closed like the input, and the VTP carries the displacement per vertex.
   EXPECT_TRUE(is_watertight(read_mesh(dir / "sim" / "predicted-skin.stl")));
   EXPECT_NE(text_of(dir / "sim" / "predicted-skin.vtp").find("Name=\"displacement\""), std::string::npos);
@@ -67,6 +77,9 @@ TEST(Simulate, SixMillimetreAdvancementOfThePhantomGivesAPlausibleFace) {
       << text;
   EXPECT_NE(text.find("linear FEM, Poisson ratio 0.46"), std::string::npos) << text;
   EXPECT_EQ(testing::count_of(text, "Uncertainty band, "), 2u) << text;  // the two pictures' captions
+  EXPECT_NE(text.find("Plausibility: how far the predicted profile moves forward"), std::string::npos) << text;
+  EXPECT_NE(text.find("(read at A)"), std::string::npos) << text;
+  EXPECT_NE(text.find("upper lip, labrale superius (Ls)"), std::string::npos) << text;
 
   // The non-linear model (neo-Hookean) converges on the same face and stays near the linear one.
   auto nonlinear = run_maxillo({archive, "--json", "simulate", "MAXILLO-PHANTOM-001", "--advance", "6", "--model",

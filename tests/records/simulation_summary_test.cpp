@@ -35,6 +35,16 @@ SimulationSummary example_summary() {
   s.seconds = {0.5, 6.0, 0.25, 0.125, 0.0625, 0.75};
   s.uncertainty = SimulationSummary::UncertaintyBand{{"mtm nu=0.46", "fem nu=0.46"}, 0.5, 1.25};
   s.soft_landmarks = {{"Sn", 4.5, 0.25, -0.125, 4.5087}, {"Ls", 5.0, 0.5, 0, 5.025}};
+  SimulationSummary::ProfileResponse profile;
+  profile.advancement_mm = 6;
+  profile.reference = "A";
+  profile.points = {{"Prn", true, 1.5, 0.25, "0.17", "a 3D series", 0.0, 0.4},
+                    {"Li", false, 0, 0, "not measured", "", std::nullopt, std::nullopt}};
+  profile.gradient_p999 = 0.5;
+  profile.gradient_max = 1.25;
+  profile.steepest_near = "Li";
+  profile.steepest_near_mm = 2.5;
+  s.profile_response = profile;
   return s;
 }
 
@@ -53,12 +63,31 @@ TEST(SimulationSummary, RoundTripsThroughItsText) {
   ASSERT_EQ(read.soft_landmarks.size(), 2u);
   EXPECT_EQ(read.soft_landmarks[1].label, "Ls");
   EXPECT_EQ(read.plan_text, written.plan_text);
+  ASSERT_TRUE(read.profile_response);
+  ASSERT_EQ(read.profile_response->points.size(), 2u);
+  EXPECT_EQ(read.profile_response->points[0].plausible_high, 0.4);
+  EXPECT_FALSE(read.profile_response->points[1].plausible_low);  // no band: null, not 0
+  SimulationSummary no_advancement = written;
+  no_advancement.profile_response.reset();
+  EXPECT_TRUE(to_json(no_advancement)["profile_response"].is_null());
+  EXPECT_FALSE(read_simulation_summary(to_json(no_advancement), "test").profile_response);
+}
+
+// Version 2 summaries (before the profile's response was added) still read, without it.
+TEST(SimulationSummary, AVersion2SummaryReadsWithoutTheProfileResponse) {
+  Json v2 = to_json(example_summary());
+  v2.erase("profile_response");
+  v2["format_version"] = 2;
+  const SimulationSummary read = read_simulation_summary(v2, "test");
+  EXPECT_FALSE(read.profile_response);
+  EXPECT_EQ(read.soft_landmarks.size(), 2u);
 }
 
 // Version 1 summaries (before the report's facts were added) still read, without those facts.
 TEST(SimulationSummary, AVersion1SummaryReadsWithoutTheReportFacts) {
   Json v1 = to_json(example_summary());
-  for (const char* key : {"plan_text", "meshing_attempts", "mean_aspect_ratio", "soft_landmarks"}) v1.erase(key);
+  for (const char* key : {"plan_text", "meshing_attempts", "mean_aspect_ratio", "soft_landmarks", "profile_response"})
+    v1.erase(key);
   v1["format_version"] = 1;
   const SimulationSummary read = read_simulation_summary(v1, "test");
   EXPECT_EQ(read.format_version, 1);
@@ -84,8 +113,11 @@ TEST(SimulationSummary, DamageIsAnErrorNamingTheKey) {
   EXPECT_EQ(failure([](Json& j) { j.erase("plan_text"); }), "sim/simulation.json: plan_text: missing");
   EXPECT_EQ(failure([](Json& j) { j["soft_landmarks"][0].erase("up_mm"); }),
             "sim/simulation.json: soft_landmarks[0].up_mm: missing");
-  EXPECT_EQ(failure([](Json& j) { j["format_version"] = 3; }),
-            "sim/simulation.json: format_version: is 3, newer than this program reads (2): update maxillo");
+  EXPECT_EQ(failure([](Json& j) { j.erase("profile_response"); }), "sim/simulation.json: profile_response: missing");
+  EXPECT_EQ(failure([](Json& j) { j["profile_response"]["points"][0]["plausible_high"] = "high"; }),
+            "sim/simulation.json: profile_response.points[0].plausible_high: must be a number");
+  EXPECT_EQ(failure([](Json& j) { j["format_version"] = 4; }),
+            "sim/simulation.json: format_version: is 4, newer than this program reads (3): update maxillo");
 }
 
 }  // namespace

@@ -73,5 +73,58 @@ TEST(SoftTissueSection, TheUncertaintyBandComesWithItsPictures) {
   EXPECT_NE(notes_of(section).find("across 2 runs"), std::string::npos) << notes_of(section);
 }
 
+records::SimulationSummary::ProfileResponse profile_response(double nose_tip_ratio, bool mandible_moved) {
+  records::SimulationSummary::ProfileResponse response;
+  response.advancement_mm = 6;
+  response.reference = "A";
+  response.other_segments_moved = mandible_moved;
+  response.points = {{"Prn", true, 6 * nose_tip_ratio, nose_tip_ratio, "0.17", "a 3D series", 0.0, 0.4},
+                     {"Sn", true, 3.6, 0.6, "0.51 +/- 0.13", "Rosen 1988", 0.4, 0.95},
+                     {"Li", true, 0.6, 0.1, "not measured", "", std::nullopt, std::nullopt},
+                     {"PogS", false, 0, 0, "about 0", "", std::nullopt, std::nullopt}};
+  response.gradient_p999 = 0.45;
+  response.gradient_max = 2.5;
+  response.steepest_near = "Li";
+  response.steepest_near_mm = 3.25;
+  return response;
+}
+
+TEST(SoftTissueSection, TheProfileIsJudgedAgainstThePublishedBands) {
+  records::StoredSimulation stored = stored_prediction(2, 2);
+  stored.summary.profile_response = profile_response(0.25, false);
+  report::Section section = soft_tissue_section(stored);
+  auto tables = blocks_of<report::Table>(section);
+  ASSERT_EQ(tables.size(), 2u);  // the landmarks' moves, then the profile
+  const auto& rows = tables[1]->rows;
+  ASSERT_EQ(rows.size(), 4u);
+  EXPECT_EQ(rows[0],
+            (std::vector<std::string>{"nose tip, pronasale (Prn)", "1.5", "0.25", "0.17", "0.00-0.40", "plausible"}));
+  EXPECT_EQ(rows[2].back(), "no band");
+  EXPECT_EQ(rows[3][1], "-");
+  EXPECT_EQ(rows[3].back(), "not on the skin");
+  EXPECT_NE(testing::paragraphs_of(section).find("Every point with a published band lies inside it"),
+            std::string::npos);
+  const std::string notes = notes_of(section);
+  EXPECT_NE(notes.find("Sources: a 3D series; Rosen 1988."), std::string::npos) << notes;
+  EXPECT_NE(notes.find("0.45 mm per mm (99.9th percentile of its edges), 2.5 at most, 3 mm from Li."),
+            std::string::npos)
+      << notes;
+  EXPECT_EQ(notes.find("mandible"), std::string::npos) << notes;
+
+  // A nose that rides on the maxilla is called out, and a moved mandible is named.
+  stored.summary.profile_response = profile_response(0.9, true);
+  section = soft_tissue_section(stored);
+  tables = blocks_of<report::Table>(section);
+  EXPECT_EQ(tables[1]->rows[0].back(), "OUTSIDE");
+  EXPECT_NE(testing::paragraphs_of(section).find("1 point lies outside the plausible band"), std::string::npos);
+  EXPECT_NE(notes_of(section).find("The mandible or the chin moved as well"), std::string::npos);
+}
+
+TEST(SoftTissueSection, NoProfileTableWithoutAnAdvancedMaxilla) {
+  const report::Section section = soft_tissue_section(stored_prediction(2, 2));
+  EXPECT_EQ(blocks_of<report::Table>(section).size(), 1u);
+  EXPECT_EQ(testing::paragraphs_of(section).find("Plausibility"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace maxillo::sections

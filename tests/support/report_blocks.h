@@ -23,4 +23,11 @@ inline std::string notes_of(const report::Section& section) {
   return text;
 }
 
+// The text of the section's paragraphs, one per line.
+inline std::string paragraphs_of(const report::Section& section) {
+  std::string text;
+  for (const auto* paragraph : blocks_of<report::Paragraph>(section)) text += paragraph->text + "\n";
+  return text;
+}
+
 }  // namespace maxillo::testing
