@@ -53,7 +53,7 @@ PreparedHead prepare_cadaver_head() {
   return head;
 }
 
-Json response_json(const casework::ProfileResponse& response) {
+Json response_json(const casework::ProfileResponse& response, const LandmarkSet& landmarks) {
   Json points = Json::array();
   const auto& published = casework::published_le_fort_advancement_response();
   for (size_t i = 0; i < response.points.size(); ++i) {
@@ -64,9 +64,12 @@ Json response_json(const casework::ProfileResponse& response) {
                       {"ratio", p.ratio},
                       {"plausible", p.present && casework::plausible(published[i], p.ratio)}});
   }
+  const auto nearest = casework::nearest_landmark(landmarks, response.steepest_at);
   return {{"points", points},
           {"gradient_p999", response.gradient_p999},
           {"gradient_max", response.gradient_max},
+          {"steepest_near", nearest ? nearest->first : ""},
+          {"steepest_near_mm", nearest ? nearest->second : 0.0},
           {"moved_edges", response.moved_edges}};
 }
 
@@ -100,8 +103,9 @@ Json run_model(const PreparedHead& head, const casework::FaceModel& face, double
     const auto prediction = casework::predict_soft_tissue(input, options, &face);
     run["seconds"] = seconds_since(start);
     run["iterations"] = prediction.iterations;
-    run.update(response_json(casework::profile_response(head.skin, prediction.skin_displacement, head.frame,
-                                                        head.landmarks, advancement_mm)));
+    run.update(response_json(
+        casework::profile_response(head.skin, prediction.skin_displacement, head.frame, head.landmarks, advancement_mm),
+        head.landmarks));
     // The default planes: below the orbits, under the chin, in front of the ears; then above the
     // orbits, the forehead's cut and in front of the eyes (0 where a plane cuts no tissue).
     run["boundary_move_mm"] =
@@ -171,7 +175,8 @@ std::string face_realism_text(const Json& figures) {
   text += formatted("%-6s %-5s", "adv mm", "model");
   for (const auto& p : figures["published"]) text += formatted(" %7s", p["label"].get<std::string>().c_str());
   text +=
-      "  gradient P99.9 / max (mm/mm)  seconds  boundary move (orbits, chin, ears; nose piece: orbits, forehead, eyes) "
+      "  gradient P99.9 / max (mm/mm), max near  seconds  boundary move (orbits, chin, ears; nose piece: orbits, "
+      "forehead, eyes) "
       "mm\n";
   for (const auto& run : figures["runs"]) {
     text += formatted("%6.1f %-5s", run["advancement_mm"].get<double>(), run["model"].get<std::string>().c_str());
@@ -183,8 +188,9 @@ std::string face_realism_text(const Json& figures) {
       text += p["present"].get<bool>()
                   ? formatted(" %6.2f%s", p["ratio"].get<double>(), p["plausible"].get<bool>() ? " " : "*")
                   : formatted(" %7s", "-");
-    text += formatted("  %6.2f / %6.2f  %13.1f ", run["gradient_p999"].get<double>(), run["gradient_max"].get<double>(),
-                      run["seconds"].get<double>());
+    text += formatted("  %6.2f / %6.2f, %4s %3.0f mm  %7.1f ", run["gradient_p999"].get<double>(),
+                      run["gradient_max"].get<double>(), run["steepest_near"].get<std::string>().c_str(),
+                      run["steepest_near_mm"].get<double>(), run["seconds"].get<double>());
     for (const auto& move : run["boundary_move_mm"]) text += formatted(" %5.2f", move.get<double>());
     text += "\n";
   }

@@ -3,7 +3,7 @@
 // series measured (issue 34): the forward move of the soft-tissue profile points (pronasale,
 // subnasale, labrale superius and inferius, soft-tissue pogonion, and the nasal dorsum 8 mm above
 // the tip) as a fraction of the advancement; and how sharply the displacement changes over the
-// skin, where a shear at the model's edge shows as a large gradient.
+// outer face (cavity linings left out), where a shear at the model's edge shows as a large gradient.
 #include <Eigen/Core>
 #include <optional>
 #include <string>
@@ -38,10 +38,10 @@ struct ProfilePointResponse {
 
 struct ProfileResponse {
   std::vector<ProfilePointResponse> points;  // in published_le_fort_advancement_response()'s order
-  double gradient_p999 = 0;                  // |du| / |dx| over the skin's edges that moved, mm per mm
+  double gradient_p999 = 0;                  // |du| / |dx| over the outer face's edges that moved, mm per mm
   double gradient_max = 0;
   Eigen::Vector3d steepest_at = Eigen::Vector3d::Zero();  // the midpoint of the edge with gradient_max
-  int moved_edges = 0;  // edges with an end that moved >= 0.1 mm: what the gradient figures are over
+  int moved_edges = 0;  // outer-face edges with an end that moved >= 0.1 mm: what the gradient figures are over
 };
 
 // The point on the skin's midline profile `above_mm` above `tip` (along the frame's superior

@@ -8,6 +8,7 @@
 
 #include "casework/profile_response.h"
 #include "planning/osteotomy.h"
+#include "support/test_meshes.h"
 
 namespace maxillo::casework {
 namespace {
@@ -87,6 +88,26 @@ TEST(ProfileResponse, TheSteepestEdgeIsFoundAtATear) {
   ASSERT_TRUE(nearest);
   EXPECT_EQ(nearest->first, "Ls");
   EXPECT_FALSE(nearest_landmark({}, response.steepest_at));
+}
+
+// Skin that lines a cavity (a CT's skin follows the air into the nose and the sinuses) rides on
+// the bone it lines and may tear where moved bone meets unmoved bone; the gradient figures are
+// the outer face's. A head as a box with a box-shaped cavity inside (its walls facing inwards):
+// a corner of the cavity moved is no gradient; a corner of the outer face moved is.
+TEST(ProfileResponse, CavityLiningsAreNotInTheGradient) {
+  TriangleMesh cavity = testing::make_box({-10, -10, -10}, {10, 10, 10});
+  cavity.faces.col(1).swap(cavity.faces.col(2));  // normals into the cavity, away from the tissue
+  const TriangleMesh head = testing::append(testing::make_box({-50, -50, -50}, {50, 50, 50}), cavity);
+  Eigen::MatrixX3d u = Eigen::MatrixX3d::Zero(head.vertices.rows(), 3);
+  u(8, 1) = -5;  // a corner of the cavity
+  auto response = profile_response(head, u, patient_axes(), profile_landmarks(), 5);
+  EXPECT_EQ(response.moved_edges, 0);
+  EXPECT_EQ(response.gradient_max, 0);
+  u(0, 1) = -5;  // a corner of the outer face, at (-50, -50, -50)
+  response = profile_response(head, u, patient_axes(), profile_landmarks(), 5);
+  EXPECT_GT(response.moved_edges, 0);
+  EXPECT_NEAR(response.gradient_max, 5 / 100.0, 1e-12);                // along the box's 100 mm edges
+  EXPECT_NEAR(response.steepest_at.cwiseAbs().maxCoeff(), 50, 1e-12);  // on the outer face
 }
 
 TEST(ProfileResponse, DorsumIsTheMostAnteriorMidlineVertexAboveTheTip) {
