@@ -88,6 +88,7 @@ SoftTissueOptions model_options(const FaceRealismOptions& variant, SoftTissueMod
   options.model = model;
   options.attachment.outer_surface_only = variant.free_cavities;
   options.nose_root = variant.nose_root;
+  options.part_lips = variant.part_lips;
   return options;
 }
 
@@ -103,9 +104,10 @@ Json run_model(const PreparedHead& head, const casework::FaceModel& face, double
     const auto prediction = casework::predict_soft_tissue(input, options, &face);
     run["seconds"] = seconds_since(start);
     run["iterations"] = prediction.iterations;
-    run.update(response_json(
-        casework::profile_response(head.skin, prediction.skin_displacement, head.frame, head.landmarks, advancement_mm),
-        head.landmarks));
+    run.update(
+        response_json(casework::profile_response(head.skin, prediction.skin_displacement, head.frame, head.landmarks,
+                                                 advancement_mm, prediction.skin_on_bone, prediction.skin_lip_side),
+                      head.landmarks));
     // The default planes: below the orbits, under the chin, in front of the ears; then above the
     // orbits, the forehead's cut and in front of the eyes (0 where a plane cuts no tissue).
     run["boundary_move_mm"] =
@@ -143,6 +145,8 @@ Json run_face_realism_benchmark(const FaceRealismOptions& options) {
                   {"landmarks_by_hand", head.by_hand},
                   {"free_cavities", options.free_cavities},
                   {"nose_root", options.nose_root},
+                  {"part_lips", options.part_lips},
+                  {"lips_parted_faces", face.lips_parted.faces},
                   {"face_model",
                    {{"tets", face.mesh.tet_count()},
                     {"nodes", face.mesh.node_count()},
@@ -171,6 +175,8 @@ std::string face_realism_text(const Json& figures) {
       face["tets"].get<int>(), face["nodes"].get<int>(), face["cell_mm"].get<double>(), face["seconds"].get<double>());
   if (figures["free_cavities"].get<bool>()) text += "moved bone carries only the tissue on its outer surface\n";
   if (figures["nose_root"].get<bool>()) text += "the region goes on above the orbits in front of the eyes\n";
+  if (figures["part_lips"].get<bool>())
+    text += formatted("the model parted between the lips: %d faces\n", figures["lips_parted_faces"].get<int>());
   text += "forward move / advancement at the profile points; * outside the plausible band\n";
   text += formatted("%-6s %-5s", "adv mm", "model");
   for (const auto& p : figures["published"]) text += formatted(" %7s", p["label"].get<std::string>().c_str());

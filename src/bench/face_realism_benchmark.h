@@ -16,10 +16,11 @@ struct FaceRealismOptions {
   std::vector<double> advancements_mm{3, 6, 9};
   bool free_cavities = false;  // moved bone carries only the tissue on its outer surface (AttachmentOptions)
   bool nose_root = false;      // the region's second piece above the orbits (SoftTissueOptions::nose_root)
+  bool part_lips = false;      // the model parted between the lips (SoftTissueOptions::part_lips)
 };
 
 // Error(kFileNotFound) when the cadaver head is absent. Figures: preparation_seconds,
-// landmarks_by_hand, free_cavities, nose_root, face_model (tets, nodes, cell_mm, seconds), published (label,
+// landmarks_by_hand, free_cavities, nose_root, part_lips, lips_parted_faces, face_model (tets, nodes, cell_mm, seconds), published (label,
 // published, source, plausible_low/high), advancements_mm, runs (advancement_mm, model, title,
 // seconds; error when it failed, else iterations, points: label, present, forward_mm, ratio,
 // plausible; gradient_p999, gradient_max, moved_edges; boundary_move_mm, the largest move within

@@ -60,8 +60,9 @@ std::optional<records::SimulationSummary::ProfileResponse> profile_response_reco
                                                                                    const LandmarkSet& landmarks) {
   const auto advancement = maxillary_advancement(moves, landmarks, result.frame);
   if (!advancement) return std::nullopt;
-  const ProfileResponse response = profile_response(result.skin_before, result.prediction.skin_displacement,
-                                                    result.frame, landmarks, advancement->forward_mm);
+  const auto& p = result.prediction;
+  const ProfileResponse response = profile_response(result.skin_before, p.skin_displacement, result.frame, landmarks,
+                                                    advancement->forward_mm, p.skin_on_bone, p.skin_lip_side);
   records::SimulationSummary::ProfileResponse record;
   record.advancement_mm = advancement->forward_mm;
   record.reference = advancement->reference;

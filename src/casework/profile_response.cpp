@@ -38,7 +38,8 @@ std::vector<std::pair<int, int>> unique_edges(const TriangleMesh& skin) {
 // that moved. Skin lining a cavity is left out: a CT's skin follows the air through the nostrils
 // into the nasal cavity and the sinuses, whose linings ride on the bone they line and tear where
 // a moved bone meets an unmoved one (on the phantom, 6 mm over one edge in the maxillary sinus).
-void add_gradient(const TriangleMesh& skin, const Eigen::MatrixX3d& u, ProfileResponse& response) {
+void add_gradient(const TriangleMesh& skin, const Eigen::MatrixX3d& u, const std::vector<uint8_t>& on_bone,
+                  const std::vector<int8_t>& lip_side, ProfileResponse& response) {
   std::vector<bool> moved(size_t(skin.vertices.rows()));
   for (Eigen::Index v = 0; v < skin.vertices.rows(); ++v) moved[size_t(v)] = u.row(v).norm() >= kMovedMm;
   const std::vector<bool> lining = validation::cavity_vertices(skin, moved);
@@ -46,6 +47,8 @@ void add_gradient(const TriangleMesh& skin, const Eigen::MatrixX3d& u, ProfileRe
   for (const auto& [a, b] : unique_edges(skin)) {
     if (!moved[size_t(a)] && !moved[size_t(b)]) continue;
     if (lining[size_t(a)] || lining[size_t(b)]) continue;
+    if (!on_bone.empty() && (on_bone[size_t(a)] || on_bone[size_t(b)])) continue;
+    if (!lip_side.empty() && lip_side[size_t(a)] * lip_side[size_t(b)] < 0) continue;
     const double length = (skin.vertices.row(a) - skin.vertices.row(b)).norm();
     if (length <= 0) continue;
     gradient.push_back((u.row(a) - u.row(b)).norm() / length);
@@ -134,7 +137,8 @@ std::optional<Eigen::Index> profile_vertex_above(const TriangleMesh& skin, const
 }
 
 ProfileResponse profile_response(const TriangleMesh& skin_before, const Eigen::MatrixX3d& displacement,
-                                 const AnatomicalFrame& frame, const LandmarkSet& landmarks, double advancement_mm) {
+                                 const AnatomicalFrame& frame, const LandmarkSet& landmarks, double advancement_mm,
+                                 const std::vector<uint8_t>& on_bone, const std::vector<int8_t>& lip_side) {
   ProfileResponse response;
   const auto tip = find_landmark(landmarks, "Prn");
   for (const auto& published : published_le_fort_advancement_response()) {
@@ -152,7 +156,7 @@ ProfileResponse profile_response(const TriangleMesh& skin_before, const Eigen::M
     }
     response.points.push_back(point);
   }
-  add_gradient(skin_before, displacement, response);
+  add_gradient(skin_before, displacement, on_bone, lip_side, response);
   return response;
 }
 

@@ -51,9 +51,14 @@ std::optional<Eigen::Index> profile_vertex_above(const TriangleMesh& skin, const
                                                  const Eigen::Vector3d& tip, double above_mm);
 
 // `displacement`: per vertex of `skin_before`. `landmarks`: the case's (the soft-tissue profile
-// points among them are read; each is taken at its nearest skin vertex).
+// points among them are read; each is taken at its nearest skin vertex). `on_bone`: per vertex,
+// non-zero where the surface runs over exposed teeth or bone (casework/exposed_bone.h); their edges
+// are no skin and stay out of the gradient (upper and lower crowns in contact slide apart), as do
+// the edges from a vertex of the upper lip to one of the lower (`lip_side` +1 and -1, as the model
+// parted between the lips carries them: they slide on each other there, a slip, not a shear).
 ProfileResponse profile_response(const TriangleMesh& skin_before, const Eigen::MatrixX3d& displacement,
-                                 const AnatomicalFrame& frame, const LandmarkSet& landmarks, double advancement_mm);
+                                 const AnatomicalFrame& frame, const LandmarkSet& landmarks, double advancement_mm,
+                                 const std::vector<uint8_t>& on_bone = {}, const std::vector<int8_t>& lip_side = {});
 
 // The landmark nearest to `point` and its distance; nullopt for an empty set.
 std::optional<std::pair<std::string, double>> nearest_landmark(const LandmarkSet& landmarks,

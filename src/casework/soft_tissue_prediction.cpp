@@ -4,8 +4,10 @@
 #include <chrono>
 #include <cstdio>
 
+#include "casework/exposed_bone.h"
 #include "ceph/landmark_frame.h"
 #include "core/error.h"
+#include "core/log.h"
 #include "core/sha256.h"
 #include "render/anatomical_views.h"
 #include "softtissue/linear_static_solve.h"
@@ -84,10 +86,26 @@ Solved solve(const softtissue::TetMesh& mesh, const softtissue::BoundaryConditio
   return {result.displacement, result.iterations};
 }
 
+// Per skin vertex, the lip whose tet it is bound to: +1 upper, -1 lower, 0 elsewhere.
+std::vector<int8_t> lip_sides(const softtissue::TetMesh& mesh, const softtissue::ShapeFunctionMapping& mapping,
+                              const LipParting& lips) {
+  std::vector<int8_t> side(mapping.tet.size(), 0);
+  for (size_t v = 0; v < mapping.tet.size(); ++v) {
+    if (mapping.tet[v] < 0) continue;
+    const Eigen::Vector3d centroid = softtissue::tet_corners(mesh, mapping.tet[v]).colwise().mean().transpose();
+    side[v] = int8_t(lips.side(centroid));
+  }
+  return side;
+}
+
+// The model's move onto the skin; skin on exposed teeth or bone moves with its segment.
 void map_to_skin(SoftTissuePrediction& prediction, const TriangleMesh& skin, double binding_mm) {
   auto start = Clock::now();
   const auto mapping = softtissue::init_shape_function_mapping(prediction.mesh, skin.vertices, binding_mm);
+  if (prediction.lips) prediction.skin_lip_side = lip_sides(prediction.mesh, mapping, *prediction.lips);
   prediction.skin_displacement = softtissue::map_displacement(prediction.mesh, mapping, prediction.node_displacement);
+  if (!prediction.skin_on_bone.empty())
+    move_exposed_bone(skin, prediction.skin_on_bone, prediction.bone_moves, prediction.skin_displacement);
   prediction.skin_vertices_bound = mapping.bound_count();
   prediction.skin_after = skin;
   prediction.skin_after.vertices += prediction.skin_displacement;
@@ -132,6 +150,7 @@ std::string face_model_key(const LabelVolume& tissues, const LandmarkSet& landma
     }
   }
   for (uint8_t label : options.soft_labels) hash.update("label " + std::to_string(label) + "\n");
+  if (options.part_lips) hash.update("lips parted\n");  // where: from the labels and landmarks hashed above
   const auto& m = options.meshing;
   std::snprintf(text, sizeof text, "meshing %.17g %.17g %.17g %.17g %d %.17g %.17g %d\n", m.cell_size_mm,
                 m.facet_distance_mm, m.facet_angle_deg, m.radius_edge_ratio, m.max_tets, m.optimise_seconds,
@@ -151,6 +170,12 @@ FaceModel build_face_model(const LabelVolume& tissues, const LandmarkSet& landma
   start = Clock::now();
   auto meshed = tetmesh::mesh_label(region, 1, options.meshing);
   model.mesh = std::move(meshed.mesh);
+  if (options.part_lips)
+    if ((model.lips = lip_parting(tissues, options.soft_labels, landmarks))) {
+      model.lips_parted = softtissue::part_mesh(model.mesh, model.lips->side);
+      log::debug("lips parted at the stomion (", model.lips->stomion.transpose(), "): ", model.lips_parted.faces,
+                 " faces, ", model.lips_parted.added_nodes, " nodes added");
+    }
   model.meshing = {meshed.cell_size_mm, meshed.attempts, meshed.tet_budget};
   model.quality = softtissue::mesh_quality(model.mesh);
   model.meshing_seconds = seconds_since(start);
@@ -166,6 +191,8 @@ SoftTissuePrediction predict_soft_tissue(const SoftTissueInput& input, const Sof
   const FaceModel& model = given ? *given : built;
   SoftTissuePrediction prediction;
   prediction.mesh = model.mesh;
+  prediction.lips = model.lips;
+  prediction.lips_parted = model.lips_parted;
   prediction.meshing = model.meshing;
   prediction.face_model_key = model.key;
   prediction.quality = model.quality;
@@ -187,6 +214,8 @@ SoftTissuePrediction predict_soft_tissue(const SoftTissueInput& input, const Sof
   prediction.iterations = solved.iterations;
   prediction.seconds.solve = seconds_since(start) - prediction.seconds.assembly;
 
+  prediction.skin_on_bone = exposed_bone_segments(*input.skin, *input.segments);
+  prediction.bone_moves = input.moves;
   map_to_skin(prediction, *input.skin, options.skin_binding_mm);
   return prediction;
 }
@@ -199,6 +228,10 @@ SoftTissuePrediction resolve_soft_tissue(const SoftTissuePrediction& base, const
   prediction.bc = base.bc;
   prediction.meshing = base.meshing;
   prediction.face_model_key = base.face_model_key;
+  prediction.skin_on_bone = base.skin_on_bone;
+  prediction.bone_moves = base.bone_moves;
+  prediction.lips = base.lips;
+  prediction.lips_parted = base.lips_parted;
   auto start = Clock::now();
   auto solved = solve(prediction.mesh, prediction.bc, options, prediction.seconds.assembly);
   prediction.node_displacement = std::move(solved.displacement);

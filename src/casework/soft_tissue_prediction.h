@@ -4,7 +4,8 @@
 //   1. the face region: soft tissue below the orbits, above a plane under the chin, in front of
 //      the ears, optionally with the nose's root and the glabella above the orbits
 //      (softtissue/face_region.h, default_face_region below);
-//   2. a tet mesh of it (CGAL, tetmesh/labelled_tet_mesher.h) within the tet budget;
+//   2. a tet mesh of it (CGAL, tetmesh/labelled_tet_mesher.h) within the tet budget, parted
+//      between the lips (casework/lip_parting.h);
 //   3. join points from the bone segments and their planned moves, fixed nodes on the cuts
 //      (softtissue/bone_attachment.h);
 //   4. the static solve with the chosen model (mass tensor, linear FEM or mass-spring);
@@ -16,6 +17,7 @@
 #include <string_view>
 #include <vector>
 
+#include "casework/lip_parting.h"
 #include "ceph/landmark.h"
 #include "core/triangle_mesh.h"
 #include "core/volume.h"
@@ -24,6 +26,7 @@
 #include "softtissue/soft_tissue_model.h"
 #include "softtissue/element_quality.h"
 #include "softtissue/face_region.h"
+#include "softtissue/mesh_parting.h"
 #include "tetmesh/labelled_tet_mesher.h"
 
 namespace maxillo::casework {
@@ -41,6 +44,11 @@ struct SoftTissueOptions {
   // The region's second piece, the nose's root and the glabella (default_face_region). Off by
   // default: the non-linear FEM does not converge on the phantom with it (issue 34).
   bool nose_root = false;
+  // The model parted between the lips at their cleft (casework/lip_parting.h), so that they slide
+  // on each other instead of being tied node to node. Off by default: the parting follows the
+  // tets' faces, up to half a cell from the cleft, and on the phantom meshed at 5 mm it gave the
+  // lower lip more of the advancement, not less (issue 34, docs/ARCHITECTURE.md).
+  bool part_lips = false;
 };
 
 struct SoftTissueInput {
@@ -69,6 +77,12 @@ struct SoftTissuePrediction {
   TriangleMesh skin_after;             // the skin's vertices moved, same faces
   Eigen::MatrixX3d skin_displacement;  // per skin vertex, mm
   int skin_vertices_bound = 0;
+  std::vector<uint8_t> skin_on_bone;                // per skin vertex, the segment of the exposed bone under it, else 0
+  std::map<uint8_t, Eigen::Isometry3d> bone_moves;  // the segments' moves it was solved for
+  std::optional<LipParting> lips;                   // the face model's parting between the lips
+  softtissue::Parting lips_parted;
+  std::vector<int8_t>
+      skin_lip_side;  // per skin vertex: +1 upper lip, -1 lower lip (bound to a tet parted there), else 0
   MeshingOutcome meshing;
   std::string face_model_key;  // FaceModel::key of the model it was solved on
   records::SoftTissueTimings seconds;
@@ -88,6 +102,8 @@ softtissue::RegionShape default_face_region(const LandmarkSet& landmarks, bool n
 struct FaceModel {
   softtissue::RegionShape region;
   softtissue::TetMesh mesh;
+  std::optional<LipParting> lips;   // where the mesh was parted between the lips (none: not asked for, or no stomion)
+  softtissue::Parting lips_parted;  // the faces parted there
   softtissue::MeshQuality quality;
   MeshingOutcome meshing;
   double region_seconds = 0, meshing_seconds = 0;

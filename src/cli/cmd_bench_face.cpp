@@ -36,6 +36,8 @@ void attach_bench_face(CLI::App& bench, CommandContext& ctx) {
                  "with --real: moved bone carries only the tissue on its outer surface (off by default)");
   face->add_flag("--nose-root", realism->nose_root,
                  "with --real: the face region goes on above the orbits in front of the eyes (off by default)");
+  face->add_flag("--part-lips", realism->part_lips,
+                 "with --real: the model parted between the lips at their cleft (off by default)");
   face->callback([args, real, realism, &ctx] {
     if (*real) {
       const Json figures = bench::run_face_realism_benchmark(*realism);

@@ -36,12 +36,13 @@ const Case& phantom_case() {
   return c;
 }
 
-SoftTissuePrediction predict(softtissue::SoftTissueModel model, double advancement_mm) {
+SoftTissuePrediction predict(softtissue::SoftTissueModel model, double advancement_mm, bool part_lips = false) {
   const auto& c = phantom_case();
   SoftTissueInput input{&c.phantom.labels, &c.cut.segments, &c.skin, c.phantom.landmarks, {}};
   input.moves[uint8_t(planning::Segment::kMaxilla)] = Eigen::Translation3d(0, -advancement_mm, 0);  // anterior = -y
   SoftTissueOptions options;
   options.model = model;
+  options.part_lips = part_lips;
   options.meshing.cell_size_mm = 5;
   options.meshing.max_tets = 40000;
   return predict_soft_tissue(input, options);
@@ -67,6 +68,27 @@ TEST(PhantomPrediction, AdvancementMovesLipAndNoseBaseButNotForeheadOrChin) {
   EXPECT_LT(std::abs(forward_at(p, "NS")), 0.3);  // soft nasion lies above the region
   EXPECT_LT(std::abs(forward_at(p, "PogS")), 1.5);
   EXPECT_GT(p.skin_vertices_bound, 1000);
+}
+
+// The phantom's lips are closed: meshed as one block they are tied node to node. Parted at their
+// cleft (between Ls and Li), the model gains the copies of the nodes parted, the upper lip follows
+// the maxilla as before, and the skin of the two lips is told apart for the gradient.
+TEST(PhantomPrediction, TheLipsArePartedAtTheirCleft) {
+  const auto parted = predict(softtissue::SoftTissueModel::kLinearFem, 6, true);
+  const auto tied = predict(softtissue::SoftTissueModel::kLinearFem, 6);
+  ASSERT_TRUE(parted.lips);
+  EXPECT_FALSE(tied.lips);
+  EXPECT_GT(parted.lips_parted.faces, 20);
+  EXPECT_EQ(parted.mesh.node_count(), tied.mesh.node_count() + parted.lips_parted.added_nodes);
+  const auto& landmarks = phantom_case().phantom.landmarks;
+  const double stomion = parted.lips->stomion.z();
+  EXPECT_LT(stomion, find_landmark(landmarks, "Ls")->z());
+  EXPECT_GT(stomion, find_landmark(landmarks, "Li")->z());
+  EXPECT_NEAR(forward_at(parted, "Ls"), forward_at(tied, "Ls"), 1.0);
+  int upper = 0, lower = 0;
+  for (int8_t side : parted.skin_lip_side) (side > 0 ? upper : lower) += side != 0;
+  EXPECT_GT(upper, 20);
+  EXPECT_GT(lower, 20);
 }
 
 TEST(PhantomPrediction, ConvergedMassTensorMatchesLinearFem) {
