@@ -20,7 +20,6 @@
 #include "planning/distractor_checks.h"
 #include "planning/osteotomy.h"
 #include "planning/plan_application.h"
-#include "softtissue/boundary_move.h"
 
 namespace maxillo::bench {
 namespace {
@@ -110,8 +109,7 @@ Json run_model(const PreparedHead& head, const casework::FaceModel& face, double
                       head.landmarks));
     // The default planes: below the orbits, under the chin, in front of the ears; then above the
     // orbits, the forehead's cut and in front of the eyes (0 where a plane cuts no tissue).
-    run["boundary_move_mm"] =
-        softtissue::largest_move_near_planes(prediction.mesh, prediction.node_displacement, face.region);
+    run["boundary_move_mm"] = prediction.boundary_move_mm;
     run["fixed_nodes"] = softtissue::count_nodes(prediction.bc, softtissue::NodeConstraint::kFixed);
     run["prescribed_nodes"] = softtissue::count_nodes(prediction.bc, softtissue::NodeConstraint::kPrescribed);
   } catch (const Error& error) {

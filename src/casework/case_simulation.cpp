@@ -109,6 +109,9 @@ records::SimulationSummary summarise(const SimulationResult& result, const Simul
     summary.uncertainty = {result.uncertainty->runs, result.uncertainty->p95_mm, result.uncertainty->max_mm};
   summary.soft_landmarks = landmark_moves(p, result.frame, soft_landmarks_of(landmarks));
   summary.profile_response = profile_response_record(result, moves, landmarks);
+  const auto names = face_region_plane_names(p.region);
+  for (size_t i = 0; i < p.boundary_move_mm.size() && i < names.size(); ++i)
+    summary.boundary_moves.push_back({names[i], p.boundary_move_mm[i]});
   return summary;
 }
 

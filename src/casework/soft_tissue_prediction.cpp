@@ -6,6 +6,7 @@
 
 #include "casework/exposed_bone.h"
 #include "ceph/landmark_frame.h"
+#include "softtissue/boundary_move.h"
 #include "core/error.h"
 #include "core/log.h"
 #include "core/sha256.h"
@@ -131,6 +132,16 @@ softtissue::RegionShape default_face_region(const LandmarkSet& landmarks, bool n
   return shape;
 }
 
+std::vector<std::string> face_region_plane_names(const softtissue::RegionShape& region) {
+  static const std::vector<std::string> names{"below the orbits",     "under the chin",
+                                              "in front of the ears", "above the orbits (nose root)",
+                                              "the forehead's cut",   "in front of the eyes"};
+  std::vector<std::string> named;
+  for (size_t i = 0; i < region.planes().size(); ++i)
+    named.push_back(i < names.size() ? names[i] : "plane " + std::to_string(i + 1));
+  return named;
+}
+
 std::string face_model_key(const LabelVolume& tissues, const LandmarkSet& landmarks, const SoftTissueOptions& options) {
   // Every field of the meshing options is in the key: a new field must be added here too.
   static_assert(sizeof(tetmesh::TetMeshingOptions) == 64, "update face_model_key for the new meshing option");
@@ -213,6 +224,9 @@ SoftTissuePrediction predict_soft_tissue(const SoftTissueInput& input, const Sof
   prediction.node_displacement = std::move(solved.displacement);
   prediction.iterations = solved.iterations;
   prediction.seconds.solve = seconds_since(start) - prediction.seconds.assembly;
+  prediction.region = model.region;
+  prediction.boundary_move_mm =
+      softtissue::largest_move_near_planes(prediction.mesh, prediction.node_displacement, model.region);
 
   prediction.skin_on_bone = exposed_bone_segments(*input.skin, *input.segments);
   prediction.bone_moves = input.moves;
@@ -232,11 +246,14 @@ SoftTissuePrediction resolve_soft_tissue(const SoftTissuePrediction& base, const
   prediction.bone_moves = base.bone_moves;
   prediction.lips = base.lips;
   prediction.lips_parted = base.lips_parted;
+  prediction.region = base.region;
   auto start = Clock::now();
   auto solved = solve(prediction.mesh, prediction.bc, options, prediction.seconds.assembly);
   prediction.node_displacement = std::move(solved.displacement);
   prediction.iterations = solved.iterations;
   prediction.seconds.solve = seconds_since(start) - prediction.seconds.assembly;
+  prediction.boundary_move_mm =
+      softtissue::largest_move_near_planes(prediction.mesh, prediction.node_displacement, prediction.region);
   map_to_skin(prediction, skin, options.skin_binding_mm);
   return prediction;
 }

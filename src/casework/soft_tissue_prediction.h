@@ -81,8 +81,12 @@ struct SoftTissuePrediction {
   std::map<uint8_t, Eigen::Isometry3d> bone_moves;  // the segments' moves it was solved for
   std::optional<LipParting> lips;                   // the face model's parting between the lips
   softtissue::Parting lips_parted;
-  std::vector<int8_t>
-      skin_lip_side;  // per skin vertex: +1 upper lip, -1 lower lip (bound to a tet parted there), else 0
+  // Per skin vertex: +1 upper lip, -1 lower lip (bound to a tet parted there), else 0.
+  std::vector<int8_t> skin_lip_side;
+  // Per plane of the face region (RegionShape::planes() order, named by face_region_plane_names),
+  // the largest move within 5 mm inside it where it cuts tissue (softtissue/boundary_move.h).
+  std::vector<double> boundary_move_mm;
+  softtissue::RegionShape region;  // the face model's
   MeshingOutcome meshing;
   std::string face_model_key;  // FaceModel::key of the model it was solved on
   records::SoftTissueTimings seconds;
@@ -94,6 +98,8 @@ struct SoftTissuePrediction {
 // behind it (the eyelids and the front of the eyes; the brain behind the forehead stays out), so
 // that no cut runs through the nose. Or, Po and Me are needed (missing ones -> Error naming them).
 softtissue::RegionShape default_face_region(const LandmarkSet& landmarks, bool nose_root = false);
+// Where each of default_face_region's planes lies, in its planes() order: "below the orbits", ...
+std::vector<std::string> face_region_plane_names(const softtissue::RegionShape& region);
 
 // Steps 1-2, which look at no move: the face region and its tet mesh. Built once for a case, one
 // model serves every move on the same tissues and landmarks (the planned move, the moves found after

@@ -147,8 +147,13 @@ Json to_json(const SimulationSummary& s) {
                            {"total_mm", m.total_mm}});
     json["soft_landmarks"] = landmarks;
   }
-  if (s.format_version >= 3)
+  if (s.format_version >= 3) {
     json["profile_response"] = s.profile_response ? profile_response_json(*s.profile_response) : Json(nullptr);
+    Json boundary = Json::array();
+    for (const auto& b : s.boundary_moves)
+      boundary.push_back({{"where", b.where}, {"largest_move_mm", b.largest_move_mm}});
+    json["boundary_moves"] = boundary;
+  }
   if (s.uncertainty)
     json["uncertainty"] = {
         {"runs", s.uncertainty->runs}, {"p95_mm", s.uncertainty->p95_mm}, {"max_mm", s.uncertainty->max_mm}};
@@ -181,8 +186,14 @@ SimulationSummary read_simulation_summary(const Json& json, const std::string& s
   s.seconds = read_seconds(r.object("seconds"));
   if (r.has("uncertainty")) s.uncertainty = read_band(r.object("uncertainty"));
   if (s.format_version >= 2) read_report_facts(r, s);
-  if (s.format_version >= 3 && !r.at("profile_response").is_null())
-    s.profile_response = read_profile_response(r.object("profile_response"));
+  if (s.format_version >= 3) {
+    if (!r.at("profile_response").is_null()) s.profile_response = read_profile_response(r.object("profile_response"));
+    const Json& boundary = r.required_array("boundary_moves");
+    for (size_t i = 0; i < boundary.size(); ++i) {
+      JsonReader b = r.element(boundary, "boundary_moves", i);
+      s.boundary_moves.push_back({b.required_text("where"), b.required_number("largest_move_mm", 0)});
+    }
+  }
   return s;
 }
 

@@ -15,7 +15,8 @@ namespace maxillo::records {
 struct SimulationSummary {
   // 2: the report's facts (plan_text, mean_aspect_ratio, meshing_attempts, soft_landmarks) added,
   // required from this version on; a version 1 summary has none of them.
-  // 3: profile_response (null when the plan does not advance the maxilla), required from 3 on.
+  // 3: profile_response (null when the plan does not advance the maxilla) and boundary_moves,
+  // required from 3 on.
   static constexpr int kFormatVersion = 3;
 
   struct UncertaintyBand {
@@ -48,6 +49,12 @@ struct SimulationSummary {
     double steepest_near_mm = 0;                 // and its distance from it
   };
 
+  // Where the model's region cuts tissue, and how far the tissue still moves just inside the cut.
+  struct BoundaryMove {
+    std::string where;           // "below the orbits", ...
+    double largest_move_mm = 0;  // within 5 mm inside the cut (softtissue/boundary_move.h)
+  };
+
   int format_version = kFormatVersion;
   std::string plan_text;  // the plan in one line, e.g. "maxilla 6.0 mm advancement"
   std::string model;      // model_name: "mtm", "fem", "msm", "nfem"
@@ -66,6 +73,7 @@ struct SimulationSummary {
   std::optional<UncertaintyBand> uncertainty;
   std::vector<LandmarkMove> soft_landmarks;         // those of the case's landmarks that are soft tissue ones
   std::optional<ProfileResponse> profile_response;  // version 3; none when the maxilla was not advanced
+  std::vector<BoundaryMove> boundary_moves;         // version 3
 };
 
 Json to_json(const SimulationSummary& summary);

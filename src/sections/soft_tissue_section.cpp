@@ -13,6 +13,8 @@
 namespace maxillo::sections {
 namespace {
 
+constexpr double kDecayedMoveMm = 0.1;  // softtissue/boundary_move.h's: a move this small has died out
+
 using report::fixed;
 
 std::string count_text(const records::SimulationSummary& s) {
@@ -145,6 +147,32 @@ void add_profile_response(const records::SimulationSummary::ProfileResponse& res
   section.blocks.push_back(report::Note{note});
 }
 
+// Where the model's region cuts tissue, and whether the move has died out there: a plane
+// through tissue that still moves holds the face above or beside it in place (issue 34).
+void add_boundary(const std::vector<records::SimulationSummary::BoundaryMove>& moves, report::Section& section) {
+  std::string where;
+  std::vector<std::string> still_moving;
+  for (const auto& m : moves) {
+    where += (where.empty() ? "" : ", ") + m.where + " " + fixed(m.largest_move_mm, 2) + " mm";
+    if (m.largest_move_mm >= kDecayedMoveMm) still_moving.push_back(m.where);
+  }
+  std::string text =
+      "The model's edges, where its region cuts the tissue and holds it in place; the largest move "
+      "within 5 mm inside each: " +
+      where + ".";
+  if (still_moving.empty()) {
+    text += " The move has died out at every edge (below " + fixed(kDecayedMoveMm, 1) + " mm).";
+  } else {
+    std::string list;
+    for (size_t i = 0; i < still_moving.size(); ++i)
+      list += (i == 0 ? "" : i + 1 == still_moving.size() ? " and " : ", ") + still_moving[i];
+    text += " The tissue still moves at the edge" + std::string(still_moving.size() > 1 ? "s " : " ") + list +
+            ": the prediction holds the face beyond " + (still_moving.size() > 1 ? "them" : "it") +
+            " in place, which the real face may not do.";
+  }
+  section.blocks.push_back(report::Note{text});
+}
+
 void add_uncertainty(const records::StoredSimulation& simulation, report::Section& section) {
   const auto& band = *simulation.summary.uncertainty;
   section.blocks.push_back(
@@ -188,6 +216,7 @@ report::Section soft_tissue_section(const records::StoredSimulation& simulation)
     section.blocks.push_back(landmark_table(s.soft_landmarks));
   }
   if (s.profile_response) add_profile_response(*s.profile_response, section);
+  if (!s.boundary_moves.empty()) add_boundary(s.boundary_moves, section);
   if (s.uncertainty) add_uncertainty(simulation, section);
   return section;
 }

@@ -56,6 +56,8 @@ TEST(Simulate, SixMillimetreAdvancementOfThePhantomGivesAPlausibleFace) {
   EXPECT_NEAR(profile["advancement_mm"].get<double>(), 6.0, 0.01);
   EXPECT_EQ(profile["reference"], "A");
   EXPECT_EQ(profile["points"].size(), 6u);
+  ASSERT_EQ(summary["boundary_moves"].size(), 3u);  // below the orbits, under the chin, in front of the ears
+  EXPECT_EQ(summary["boundary_moves"][0]["where"], "below the orbits");
   for (const auto& point : profile["points"]) {
     if (point["label"] == "Ls") {
       EXPECT_GT(point["ratio"].get<double>(), 0.5);  // the lip follows its bone
@@ -79,6 +81,7 @@ TEST(Simulate, SixMillimetreAdvancementOfThePhantomGivesAPlausibleFace) {
   EXPECT_EQ(testing::count_of(text, "Uncertainty band, "), 2u) << text;  // the two pictures' captions
   EXPECT_NE(text.find("Plausibility: how far the predicted profile moves forward"), std::string::npos) << text;
   EXPECT_NE(text.find("(read at A)"), std::string::npos) << text;
+  EXPECT_NE(text.find("The model's edges, where its region cuts the tissue"), std::string::npos) << text;
   EXPECT_NE(text.find("upper lip, labrale superius (Ls)"), std::string::npos) << text;
 
   // The non-linear model (neo-Hookean) converges on the same face and stays near the linear one.

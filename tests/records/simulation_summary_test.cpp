@@ -45,6 +45,7 @@ SimulationSummary example_summary() {
   profile.steepest_near = "Li";
   profile.steepest_near_mm = 2.5;
   s.profile_response = profile;
+  s.boundary_moves = {{"below the orbits", 1.375}, {"under the chin", 0.0}};
   return s;
 }
 
@@ -71,12 +72,16 @@ TEST(SimulationSummary, RoundTripsThroughItsText) {
   no_advancement.profile_response.reset();
   EXPECT_TRUE(to_json(no_advancement)["profile_response"].is_null());
   EXPECT_FALSE(read_simulation_summary(to_json(no_advancement), "test").profile_response);
+  ASSERT_EQ(read.boundary_moves.size(), 2u);
+  EXPECT_EQ(read.boundary_moves[0].where, "below the orbits");
+  EXPECT_EQ(read.boundary_moves[0].largest_move_mm, 1.375);
 }
 
 // Version 2 summaries (before the profile's response was added) still read, without it.
 TEST(SimulationSummary, AVersion2SummaryReadsWithoutTheProfileResponse) {
   Json v2 = to_json(example_summary());
   v2.erase("profile_response");
+  v2.erase("boundary_moves");
   v2["format_version"] = 2;
   const SimulationSummary read = read_simulation_summary(v2, "test");
   EXPECT_FALSE(read.profile_response);
@@ -86,7 +91,8 @@ TEST(SimulationSummary, AVersion2SummaryReadsWithoutTheProfileResponse) {
 // Version 1 summaries (before the report's facts were added) still read, without those facts.
 TEST(SimulationSummary, AVersion1SummaryReadsWithoutTheReportFacts) {
   Json v1 = to_json(example_summary());
-  for (const char* key : {"plan_text", "meshing_attempts", "mean_aspect_ratio", "soft_landmarks", "profile_response"})
+  for (const char* key :
+       {"plan_text", "meshing_attempts", "mean_aspect_ratio", "soft_landmarks", "profile_response", "boundary_moves"})
     v1.erase(key);
   v1["format_version"] = 1;
   const SimulationSummary read = read_simulation_summary(v1, "test");
@@ -114,6 +120,8 @@ TEST(SimulationSummary, DamageIsAnErrorNamingTheKey) {
   EXPECT_EQ(failure([](Json& j) { j["soft_landmarks"][0].erase("up_mm"); }),
             "sim/simulation.json: soft_landmarks[0].up_mm: missing");
   EXPECT_EQ(failure([](Json& j) { j.erase("profile_response"); }), "sim/simulation.json: profile_response: missing");
+  EXPECT_EQ(failure([](Json& j) { j["boundary_moves"][1].erase("where"); }),
+            "sim/simulation.json: boundary_moves[1].where: missing");
   EXPECT_EQ(failure([](Json& j) { j["profile_response"]["points"][0]["plausible_high"] = "high"; }),
             "sim/simulation.json: profile_response.points[0].plausible_high: must be a number");
   EXPECT_EQ(failure([](Json& j) { j["format_version"] = 4; }),

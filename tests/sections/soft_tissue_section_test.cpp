@@ -120,6 +120,30 @@ TEST(SoftTissueSection, TheProfileIsJudgedAgainstThePublishedBands) {
   EXPECT_NE(notes_of(section).find("The mandible or the chin moved as well"), std::string::npos);
 }
 
+// Where the model's region cuts tissue, and whether the move has died out there.
+TEST(SoftTissueSection, TheModelsEdgesAreNamedWithTheMoveThere) {
+  records::StoredSimulation stored = stored_prediction(2, 2);
+  stored.summary.boundary_moves = {{"below the orbits", 0.04}, {"under the chin", 0.0}};
+  std::string notes = notes_of(soft_tissue_section(stored));
+  EXPECT_NE(notes.find("within 5 mm inside each: below the orbits 0.04 mm, under the chin 0.00 mm. The move has "
+                       "died out at every edge"),
+            std::string::npos)
+      << notes;
+  stored.summary.boundary_moves[0].largest_move_mm = 1.38;
+  notes = notes_of(soft_tissue_section(stored));
+  EXPECT_NE(notes.find("The tissue still moves at the edge below the orbits: the prediction holds the face beyond"),
+            std::string::npos)
+      << notes;
+  stored.summary.boundary_moves[1].largest_move_mm = 0.5;
+  stored.summary.boundary_moves.push_back({"in front of the ears", 0.25});
+  notes = notes_of(soft_tissue_section(stored));
+  EXPECT_NE(notes.find("at the edges below the orbits, under the chin and in front of the ears: the prediction holds "
+                       "the face beyond them"),
+            std::string::npos)
+      << notes;
+  EXPECT_EQ(notes_of(soft_tissue_section(stored_prediction(2, 2))).find("edges"), std::string::npos);
+}
+
 TEST(SoftTissueSection, NoProfileTableWithoutAnAdvancedMaxilla) {
   const report::Section section = soft_tissue_section(stored_prediction(2, 2));
   EXPECT_EQ(blocks_of<report::Table>(section).size(), 1u);
