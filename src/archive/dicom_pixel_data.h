@@ -7,6 +7,8 @@
 #include <dcmtk/dcmdata/dcpixel.h>
 
 #include <cstddef>
+#include <optional>
+#include <string>
 
 namespace maxillo {
 
@@ -18,6 +20,13 @@ bool pixels_are_encapsulated(DcmDataset& dataset);
 // getLength() answers for the native representation, which encapsulated data does not have
 // yet, so it said 0 for every compressed file (issue 29, fault 3).
 size_t stored_pixel_bytes(DcmDataset& dataset, DcmPixelData& pixel_data);
+
+// For RLE Lossless pixels (PS3.5 annex G), what is wrong with a fragment's header, if anything:
+// a fragment shorter than the 64-byte header, a segment count outside 1-15, a first segment not
+// at byte 64, or a segment offset that does not rise or lies beyond the fragment. DCMTK's decoder
+// trusts the offsets and reads past the fragment (a fuzzing finding: SEGV in
+// DcmRLEDecoder::decompress). nullopt for valid headers and for every other transfer syntax.
+std::optional<std::string> rle_header_fault(DcmDataset& dataset, DcmPixelData& pixel_data);
 
 // The Pixel Data element of the data set, or null when there is none (or it is not encoded as
 // pixel data).

@@ -3,6 +3,9 @@
 // that is not a UID, each naming the file and the reason; nothing of them is archived.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstring>
+
 #include <dcmtk/config/osconfig.h>
 #include <dcmtk/dcmdata/dcdeftag.h>
 #include <dcmtk/dcmdata/dcfilefo.h>
@@ -50,6 +53,37 @@ TEST(CompressedSlices, EveryLosslessSyntaxReadsBackTheNativePixels) {
       EXPECT_EQ(header.transfer_syntax_uid, codec.transfer_syntax);
       EXPECT_EQ(decode_dicom_slice(read_file(compressed), compressed).hu, read_dicom_slice(native).hu);
     }
+  }
+}
+
+// An RLE fragment whose header sends a segment beyond the fragment (a fuzzing finding: DCMTK's
+// decoder read past it, SEGV) is refused naming the segment; dcmcrle's own files read (above).
+TEST(CompressedSlices, AnRleSegmentOffsetBeyondItsFragmentIsRefused) {
+  if (!testing::tool_available("dcmcrle")) GTEST_SKIP() << "dcmcrle is not installed (the dcmtk package)";
+  TemporaryFolder folder;
+  const auto native = testing::write_series(folder / "native", 1, "P1").files.front();
+  const auto compressed = folder / "rle.dcm";
+  auto run = testing::run_command("dcmcrle " + testing::quote(native) + " " + testing::quote(compressed) + " 2>&1");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  auto bytes = read_file(compressed);
+  // The pixel data's items: the Basic Offset Table, then the frame's fragment with its header.
+  const std::vector<std::byte> item{std::byte(0xfe), std::byte(0xff), std::byte(0x00), std::byte(0xe0)};
+  auto at = std::search(bytes.begin(), bytes.end(), item.begin(), item.end());
+  ASSERT_NE(at, bytes.end());
+  uint32_t table_length = 0;
+  std::memcpy(&table_length, &*(at + 4), 4);
+  const auto header = at + 8 + table_length + 8;  // past the table and the fragment's item tag and length
+  uint32_t segments = 0;
+  std::memcpy(&segments, &*header, 4);
+  ASSERT_EQ(segments, 2u);  // 16-bit pixels: a segment per byte
+  const uint32_t far_away = 50333056;
+  std::memcpy(&*(header + 8), &far_away, 4);
+  try {
+    decode_dicom_slice(bytes, compressed);
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("fragment 1 has RLE segment 2 at byte 50333056"), std::string::npos)
+        << e.what();
   }
 }
 
