@@ -52,7 +52,7 @@ PreparedHead prepare_cadaver_head() {
   return head;
 }
 
-Json response_json(const casework::ProfileResponse& response, const LandmarkSet& landmarks) {
+Json response_json(const casework::ProfileResponse& response) {
   Json points = Json::array();
   const auto& published = casework::published_le_fort_advancement_response();
   for (size_t i = 0; i < response.points.size(); ++i) {
@@ -63,12 +63,11 @@ Json response_json(const casework::ProfileResponse& response, const LandmarkSet&
                       {"ratio", p.ratio},
                       {"plausible", p.present && casework::plausible(published[i], p.ratio)}});
   }
-  const auto nearest = casework::nearest_landmark(landmarks, response.steepest_at);
   return {{"points", points},
           {"gradient_p999", response.gradient_p999},
           {"gradient_max", response.gradient_max},
-          {"steepest_near", nearest ? nearest->first : ""},
-          {"steepest_near_mm", nearest ? nearest->second : 0.0},
+          {"steepest_near", response.steepest_near},
+          {"steepest_near_mm", response.steepest_near_mm},
           {"moved_edges", response.moved_edges}};
 }
 
@@ -105,8 +104,7 @@ Json run_model(const PreparedHead& head, const casework::FaceModel& face, double
     run["iterations"] = prediction.iterations;
     run.update(
         response_json(casework::profile_response(head.skin, prediction.skin_displacement, head.frame, head.landmarks,
-                                                 advancement_mm, prediction.skin_on_bone, prediction.skin_lip_side),
-                      head.landmarks));
+                                                 advancement_mm, prediction.skin_on_bone, prediction.skin_lip_side)));
     // The default planes: below the orbits, under the chin, in front of the ears; then above the
     // orbits, the forehead's cut and in front of the eyes (0 where a plane cuts no tissue).
     run["boundary_move_mm"] = prediction.boundary_move_mm;

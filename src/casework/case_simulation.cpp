@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <tuple>
 
 #include "casework/automatic_landmarks.h"
 #include "ceph/landmark_frame.h"
@@ -75,8 +74,8 @@ std::optional<records::SimulationSummary::ProfileResponse> profile_response_reco
   }
   record.gradient_p999 = response.gradient_p999;
   record.gradient_max = response.gradient_max;
-  if (auto nearest = nearest_landmark(landmarks, response.steepest_at))
-    std::tie(record.steepest_near, record.steepest_near_mm) = *nearest;
+  record.steepest_near = response.steepest_near;
+  record.steepest_near_mm = response.steepest_near_mm;
   return record;
 }
 

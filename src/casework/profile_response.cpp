@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "planning/osteotomy.h"
 #include "validation/skin_cavities.h"
@@ -157,6 +158,8 @@ ProfileResponse profile_response(const TriangleMesh& skin_before, const Eigen::M
     response.points.push_back(point);
   }
   add_gradient(skin_before, displacement, on_bone, lip_side, response);
+  if (auto nearest = nearest_landmark(landmarks, response.steepest_at))
+    std::tie(response.steepest_near, response.steepest_near_mm) = *nearest;
   return response;
 }
 

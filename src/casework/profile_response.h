@@ -41,6 +41,8 @@ struct ProfileResponse {
   double gradient_p999 = 0;                  // |du| / |dx| over the outer face's edges that moved, mm per mm
   double gradient_max = 0;
   Eigen::Vector3d steepest_at = Eigen::Vector3d::Zero();  // the midpoint of the edge with gradient_max
+  std::string steepest_near;                              // the landmark nearest to it ("" without landmarks)
+  double steepest_near_mm = 0;                            // and its distance
   int moved_edges = 0;  // outer-face edges with an end that moved >= 0.1 mm: what the gradient figures are over
 };
 

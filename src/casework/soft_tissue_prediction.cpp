@@ -136,9 +136,9 @@ std::vector<std::string> face_region_plane_names(const softtissue::RegionShape& 
   static const std::vector<std::string> names{"below the orbits",     "under the chin",
                                               "in front of the ears", "above the orbits (nose root)",
                                               "the forehead's cut",   "in front of the eyes"};
+  const size_t planes = region.planes().size();
   std::vector<std::string> named;
-  for (size_t i = 0; i < region.planes().size(); ++i)
-    named.push_back(i < names.size() ? names[i] : "plane " + std::to_string(i + 1));
+  for (size_t i = 0; i < planes; ++i) named.push_back(i < names.size() ? names[i] : "plane " + std::to_string(i + 1));
   return named;
 }
 

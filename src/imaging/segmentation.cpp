@@ -66,7 +66,7 @@ MaskGrid voxel_ball_grid(const MaskGrid& grid, double radius_mm) {
 // streaks in front of the teeth +258 and +365, the nose +7, the ears -60 and -65).
 void restore_thin_soft_tissue(Mask& body, const Mask& whole, const MaskGrid& grid, const Volume& volume,
                               double max_piece_mm3) {
-  Mask cut_off = whole;
+  Mask cut_off(whole.size(), 0);
   for (size_t n = 0; n < cut_off.size(); ++n) cut_off[n] = whole[n] && !body[n];
   const ComponentLabels pieces = label_components(cut_off, grid);
   std::vector<double> hu_sum(pieces.voxels.size(), 0.0);
@@ -96,7 +96,7 @@ Mask body_without_support(const Mask& tissue, const MaskGrid& grid, const Volume
   Mask body = refined(dilated(core, ball, 1.0), coarse, factor, grid);
   intersect(body, tissue);
   body = largest_component(body, grid);
-  restore_thin_soft_tissue(body, largest_component(tissue, grid), grid, volume, max_piece_mm3);
+  if (max_piece_mm3 > 0) restore_thin_soft_tissue(body, largest_component(tissue, grid), grid, volume, max_piece_mm3);
   return body;
 }
 

@@ -6,14 +6,14 @@
 #include <utility>
 #include <vector>
 
+#include "casework/profile_response.h"
 #include "core/error.h"
 #include "report/number_text.h"
+#include "softtissue/boundary_move.h"
 #include "softtissue/soft_tissue_model.h"
 
 namespace maxillo::sections {
 namespace {
-
-constexpr double kDecayedMoveMm = 0.1;  // softtissue/boundary_move.h's: a move this small has died out
 
 using report::fixed;
 
@@ -91,9 +91,8 @@ std::string band_text(const records::SimulationSummary::ProfilePoint& p) {
 std::string verdict(const records::SimulationSummary::ProfilePoint& p) {
   if (!p.present) return "not on the skin";
   if (!p.plausible_low && !p.plausible_high) return "no band";
-  const bool inside =
-      (!p.plausible_low || p.ratio >= *p.plausible_low) && (!p.plausible_high || p.ratio <= *p.plausible_high);
-  return inside ? "plausible" : "OUTSIDE";
+  const casework::PublishedResponse band{p.label, p.published, p.source, p.plausible_low, p.plausible_high};
+  return casework::plausible(band, p.ratio) ? "plausible" : "OUTSIDE";
 }
 
 report::Table profile_table(const records::SimulationSummary::ProfileResponse& response) {
@@ -154,14 +153,14 @@ void add_boundary(const std::vector<records::SimulationSummary::BoundaryMove>& m
   std::vector<std::string> still_moving;
   for (const auto& m : moves) {
     where += (where.empty() ? "" : ", ") + m.where + " " + fixed(m.largest_move_mm, 2) + " mm";
-    if (m.largest_move_mm >= kDecayedMoveMm) still_moving.push_back(m.where);
+    if (m.largest_move_mm >= softtissue::kDecayedMoveMm) still_moving.push_back(m.where);
   }
   std::string text =
       "The model's edges, where its region cuts the tissue and holds it in place; the largest move "
       "within 5 mm inside each: " +
       where + ".";
   if (still_moving.empty()) {
-    text += " The move has died out at every edge (below " + fixed(kDecayedMoveMm, 1) + " mm).";
+    text += " The move has died out at every edge (below " + fixed(softtissue::kDecayedMoveMm, 1) + " mm).";
   } else {
     std::string list;
     for (size_t i = 0; i < still_moving.size(); ++i)
