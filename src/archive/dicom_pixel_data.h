@@ -28,6 +28,13 @@ size_t stored_pixel_bytes(DcmDataset& dataset, DcmPixelData& pixel_data);
 // DcmRLEDecoder::decompress). nullopt for valid headers and for every other transfer syntax.
 std::optional<std::string> rle_header_fault(DcmDataset& dataset, DcmPixelData& pixel_data);
 
+// For the JPEG transfer syntaxes DCMTK's IJG decoder reads (PS3.5 processes 1-29 and 14 SV1), what
+// is wrong with a fragment's markers before its first start of frame, if anything: a TEM marker
+// (FF01) there. DCMTK's scan for the bit depth does not step over a TEM and spins on it for ever
+// (a fuzzing finding: a hang in DJCodecDecoder::scanJpegDataForBitDepth). nullopt otherwise, and
+// for every other transfer syntax; a stream that is not JPEG at all is the decoder's to refuse.
+std::optional<std::string> jpeg_header_fault(DcmDataset& dataset, DcmPixelData& pixel_data);
+
 // The Pixel Data element of the data set, or null when there is none (or it is not encoded as
 // pixel data).
 DcmPixelData* pixel_data_of(DcmDataset& dataset);

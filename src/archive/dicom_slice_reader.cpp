@@ -152,6 +152,7 @@ void read_pixels(const Reading& r, DicomSlice& slice, const std::string& photome
   const size_t count = size_t(slice.rows) * slice.columns;
   check_frame_size(r, *pixel_data, count * (layout.bits_allocated / 8));
   if (auto fault = rle_header_fault(r.dataset, *pixel_data)) r.fail(ErrorCode::kBadValue, "Pixel Data: " + *fault);
+  if (auto fault = jpeg_header_fault(r.dataset, *pixel_data)) r.fail(ErrorCode::kBadValue, "Pixel Data: " + *fault);
   std::vector<uint8_t> frame(count * (layout.bits_allocated / 8) + 1);  // even size for DCMTK
   Uint32 start_fragment = 0;
   OFString colour_model;

@@ -56,35 +56,68 @@ TEST(CompressedSlices, EveryLosslessSyntaxReadsBackTheNativePixels) {
   }
 }
 
+// `native` compressed by `tool` into `target`: the file's bytes.
+std::vector<std::byte> compressed_with(const std::string& tool, const std::filesystem::path& native,
+                                       const std::filesystem::path& target) {
+  auto run = testing::run_command(tool + " " + testing::quote(native) + " " + testing::quote(target) + " 2>&1");
+  EXPECT_EQ(run.exit_code, 0) << run.output;
+  return read_file(target);
+}
+
+// Where the first fragment's bytes begin in an encapsulated file: past the Basic Offset Table's
+// item and the fragment's item tag and length.
+std::vector<std::byte>::iterator first_fragment(std::vector<std::byte>& bytes) {
+  const std::vector<std::byte> item{std::byte(0xfe), std::byte(0xff), std::byte(0x00), std::byte(0xe0)};
+  auto at = std::search(bytes.begin(), bytes.end(), item.begin(), item.end());
+  if (at == bytes.end()) return at;
+  uint32_t table_length = 0;
+  std::memcpy(&table_length, &*(at + 4), 4);
+  return at + 8 + table_length + 8;
+}
+
+// `bytes` decoded as a slice must fail with a message containing `expected`.
+void expect_refused(const std::vector<std::byte>& bytes, const std::filesystem::path& file,
+                    const std::string& expected) {
+  try {
+    decode_dicom_slice(bytes, file);
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+  }
+}
+
 // An RLE fragment whose header sends a segment beyond the fragment (a fuzzing finding: DCMTK's
 // decoder read past it, SEGV) is refused naming the segment; dcmcrle's own files read (above).
 TEST(CompressedSlices, AnRleSegmentOffsetBeyondItsFragmentIsRefused) {
   if (!testing::tool_available("dcmcrle")) GTEST_SKIP() << "dcmcrle is not installed (the dcmtk package)";
   TemporaryFolder folder;
   const auto native = testing::write_series(folder / "native", 1, "P1").files.front();
-  const auto compressed = folder / "rle.dcm";
-  auto run = testing::run_command("dcmcrle " + testing::quote(native) + " " + testing::quote(compressed) + " 2>&1");
-  ASSERT_EQ(run.exit_code, 0) << run.output;
-  auto bytes = read_file(compressed);
-  // The pixel data's items: the Basic Offset Table, then the frame's fragment with its header.
-  const std::vector<std::byte> item{std::byte(0xfe), std::byte(0xff), std::byte(0x00), std::byte(0xe0)};
-  auto at = std::search(bytes.begin(), bytes.end(), item.begin(), item.end());
-  ASSERT_NE(at, bytes.end());
-  uint32_t table_length = 0;
-  std::memcpy(&table_length, &*(at + 4), 4);
-  const auto header = at + 8 + table_length + 8;  // past the table and the fragment's item tag and length
+  auto bytes = compressed_with("dcmcrle", native, folder / "rle.dcm");
+  const auto header = first_fragment(bytes);
+  ASSERT_NE(header, bytes.end());
   uint32_t segments = 0;
   std::memcpy(&segments, &*header, 4);
   ASSERT_EQ(segments, 2u);  // 16-bit pixels: a segment per byte
   const uint32_t far_away = 50333056;
   std::memcpy(&*(header + 8), &far_away, 4);
-  try {
-    decode_dicom_slice(bytes, compressed);
-    ADD_FAILURE() << "no error";
-  } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("fragment 1 has RLE segment 2 at byte 50333056"), std::string::npos)
-        << e.what();
-  }
+  expect_refused(bytes, folder / "rle.dcm", "fragment 1 has RLE segment 2 at byte 50333056");
+}
+
+// A JPEG stream with a TEM marker before its start of frame (a fuzzing finding: DCMTK's scan for
+// the bit depth spun on it for ever) is refused naming the marker's place; dcmcjpeg's own files
+// read (above).
+TEST(CompressedSlices, AJpegTemMarkerBeforeTheStartOfFrameIsRefused) {
+  if (!testing::tool_available("dcmcjpeg")) GTEST_SKIP() << "dcmcjpeg is not installed (the dcmtk package)";
+  TemporaryFolder folder;
+  const auto native = testing::write_series(folder / "native", 1, "P1").files.front();
+  auto bytes = compressed_with("dcmcjpeg +e1", native, folder / "jpeg.dcm");
+  const auto stream = first_fragment(bytes);
+  ASSERT_NE(stream, bytes.end());
+  ASSERT_EQ(stream[0], std::byte(0xff));  // the stream opens with its start of image, FFD8
+  ASSERT_EQ(stream[1], std::byte(0xd8));
+  stream[2] = std::byte(0xff);  // the marker after it becomes a TEM
+  stream[3] = std::byte(0x01);
+  expect_refused(bytes, folder / "jpeg.dcm", "fragment 1 has a TEM marker (FF01) at byte 2 before its start of frame");
 }
 
 // A copy of `source` changed by `edit`, saved in the source's transfer syntax.
