@@ -12,6 +12,10 @@ LameParameters lame_parameters(const Material& material) {
   return {nu * e / ((1 + nu) * (1 - 2 * nu)), e / (2 * (1 + nu))};
 }
 
+Material scaled(const Material& material, double stiffness) {
+  return {material.young_modulus_mpa * stiffness, material.poisson_ratio};
+}
+
 Eigen::Matrix<double, 4, 3> shape_gradients(const Eigen::Matrix<double, 4, 3>& corners) {
   Eigen::Matrix3d edges;  // columns: x1 - x0, x2 - x0, x3 - x0
   for (int a = 0; a < 3; ++a) edges.col(a) = (corners.row(a + 1) - corners.row(0)).transpose();

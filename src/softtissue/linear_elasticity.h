@@ -16,6 +16,8 @@ struct LameParameters {
   double mu = 0;      // MPa, eq. 7 (shear modulus)
 };
 LameParameters lame_parameters(const Material& material);
+// The material with its Young's modulus multiplied by `stiffness` (a tet's TetMesh::stiffness_of).
+Material scaled(const Material& material, double stiffness);
 
 // Gradients of the 4 linear shape functions of a tet (rows, 1/mm), from its corners (rows, mm).
 Eigen::Matrix<double, 4, 3> shape_gradients(const Eigen::Matrix<double, 4, 3>& corners);

@@ -38,7 +38,7 @@ MassSpringModel make_van_gelder_model(const TetMesh& mesh, double young_modulus_
   const NodeGraph graph = build_node_graph(mesh);
   std::vector<double> volume_sum(graph.neighbours.size(), 0.0);
   for (int t = 0; t < mesh.tet_count(); ++t) {
-    double volume = signed_volume(mesh, t);
+    double volume = signed_volume(mesh, t) * mesh.stiffness_of(t);  // E_t V_t, in units of E
     for (int a = 0; a < 4; ++a)
       for (int b = 0; b < 4; ++b)
         if (a != b) volume_sum[size_t(graph.find(mesh.tets(t, a), mesh.tets(t, b)))] += volume;

@@ -1,7 +1,8 @@
 #pragma once
 // Tetrahedral mass-spring model (thesis ch. 6, sec. 2.2): a mass point per node and a linear
 // spring per mesh edge, force k (L - L0) along the spring (eqs. 3-4), with Van Gelder's spring
-// constants k_e = E * (sum of the volumes of the tets sharing edge e) / L0_e^2 (eq. 5).
+// constants k_e = E * (sum of the volumes of the tets sharing edge e) / L0_e^2 (eq. 5); where
+// the tets' stiffness differs (TetMesh::stiffness), the sum weighs each volume by its tet's factor.
 // The static rest position is found point by point, as for the mass tensor model: each free
 // point takes a local Newton step towards zero force given its neighbours' positions, with
 // the same dynamic cut-out (only points whose neighbours moved are evaluated again).

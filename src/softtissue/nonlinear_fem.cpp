@@ -15,12 +15,14 @@ namespace {
 
 using Matrix43 = Eigen::Matrix<double, 4, 3>;
 
-// Reference geometry of every tet, computed once: shape gradients, volumes, and where each of
+// Reference geometry of every tet, computed once: shape gradients, weights, and where each of
 // the tet's 16 node-pair blocks lives in the node graph (so assembling the tangent at every
-// Newton step needs no graph search).
+// Newton step needs no graph search). Both Lame parameters are proportional to Young's
+// modulus, so a tet's stress, forces and tangent scale with its stiffness factor: the weight
+// is the tet's volume times that factor, and the Lame parameters are the material's.
 struct Reference {
   std::vector<Matrix43> gradients;
-  std::vector<double> volumes;
+  std::vector<double> weights;  // volume x stiffness factor, mm^3
   NodeGraph graph;
   std::vector<std::array<int, 16>> block_entries;  // entry of block (a, b) at 4 a + b
 };
@@ -28,10 +30,10 @@ struct Reference {
 Reference reference_of(const TetMesh& mesh) {
   Reference r;
   r.gradients.reserve(size_t(mesh.tet_count()));
-  r.volumes.reserve(size_t(mesh.tet_count()));
+  r.weights.reserve(size_t(mesh.tet_count()));
   for (int t = 0; t < mesh.tet_count(); ++t) {
     r.gradients.push_back(shape_gradients(tet_corners(mesh, t)));
-    r.volumes.push_back(signed_volume(mesh, t));
+    r.weights.push_back(signed_volume(mesh, t) * mesh.stiffness_of(t));
   }
   return r;
 }
@@ -76,7 +78,7 @@ Eigen::MatrixX3d forces(const TetMesh& mesh, const Reference& ref, const LamePar
     const Eigen::Matrix3d F = deformation_gradient(mesh, t, g, u);
     const Eigen::Matrix3d P = first_piola(F, lame, law);
     for (int a = 0; a < 4; ++a)
-      f.row(mesh.tets(t, a)) += ref.volumes[size_t(t)] * (P * g.row(a).transpose()).transpose();
+      f.row(mesh.tets(t, a)) += ref.weights[size_t(t)] * (P * g.row(a).transpose()).transpose();
   }
   return f;
 }
@@ -105,7 +107,7 @@ void assemble_tangent(const TetMesh& mesh, const Reference& ref, const LameParam
   std::fill(k.blocks.begin(), k.blocks.end(), Eigen::Matrix3d::Zero());
   for (int t = 0; t < mesh.tet_count(); ++t) {
     const auto& g = ref.gradients[size_t(t)];
-    const double v = ref.volumes[size_t(t)];
+    const double v = ref.weights[size_t(t)];
     const Eigen::Matrix3d F = deformation_gradient(mesh, t, g, u);
     if (law == HyperelasticLaw::kNeoHookean) {
       add_neo_hookean_blocks(g, v, F, lame, ref.block_entries[size_t(t)], k);

@@ -41,7 +41,8 @@ struct NonlinearSolution {
   double relative_residual = 0;  // at the end
 };
 
-// Internal nodal forces (n x 3, N) of the SVK material at displacement u.
+// Internal nodal forces (n x 3, N) at displacement u, each tet's material scaled by its
+// TetMesh::stiffness_of (as in the tangent and the solve).
 Eigen::MatrixX3d internal_forces(const TetMesh& mesh, const Material& material, const Eigen::MatrixX3d& u,
                                  HyperelasticLaw law = HyperelasticLaw::kNeoHookean);
 

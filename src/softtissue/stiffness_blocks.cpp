@@ -7,7 +7,8 @@ StiffnessBlocks assemble_stiffness_blocks(const TetMesh& mesh, const Material& m
   stiffness.graph = build_node_graph(mesh);
   stiffness.blocks.assign(stiffness.graph.neighbours.size(), Eigen::Matrix3d::Zero());
   for (int t = 0; t < mesh.tet_count(); ++t) {
-    const Eigen::Matrix<double, 12, 12> k = element_stiffness(tet_corners(mesh, t), material);
+    const Eigen::Matrix<double, 12, 12> k =
+        element_stiffness(tet_corners(mesh, t), scaled(material, mesh.stiffness_of(t)));
     for (int a = 0; a < 4; ++a)
       for (int b = 0; b < 4; ++b) {
         int entry = stiffness.graph.find(mesh.tets(t, a), mesh.tets(t, b));

@@ -2,7 +2,8 @@
 // The global linear FEM stiffness of a tet mesh stored per node pair as 3 x 3 blocks on the
 // node graph: block(i, j) = sum over tets containing i and j of the element blocks (N/mm).
 // These are exactly the mass tensor model's K_jj (diagonal) and K_jk (thesis eq. 10); the
-// force on node i is f_i = sum_j block(i, j) u_j (the elastic force is -f).
+// force on node i is f_i = sum_j block(i, j) u_j (the elastic force is -f). Each tet's material
+// is scaled by its TetMesh::stiffness_of.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 

@@ -11,8 +11,12 @@ namespace maxillo::softtissue {
 struct TetMesh {
   Eigen::MatrixX3d nodes;  // n x 3, mm
   Eigen::MatrixX4i tets;   // m x 4, node indices, positively oriented
+  // Per tet, its tissue's Young's modulus as a multiple of the model's material (Poisson's ratio
+  // is the material's everywhere). Empty: homogeneous tissue, every factor 1.
+  std::vector<double> stiffness;
   int node_count() const { return int(nodes.rows()); }
   int tet_count() const { return int(tets.rows()); }
+  double stiffness_of(int t) const { return stiffness.empty() ? 1.0 : stiffness[size_t(t)]; }
 };
 
 // Corners of tet t as rows (4 x 3, mm).
