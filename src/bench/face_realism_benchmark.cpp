@@ -87,6 +87,7 @@ SoftTissueOptions model_options(const FaceRealismOptions& variant, SoftTissueMod
   options.attachment.outer_surface_only = variant.free_cavities;
   options.nose_root = variant.nose_root;
   options.part_lips = variant.part_lips;
+  options.nose_stiffness = variant.nose_stiffness;
   return options;
 }
 
@@ -143,6 +144,8 @@ Json run_face_realism_benchmark(const FaceRealismOptions& options) {
                   {"nose_root", options.nose_root},
                   {"part_lips", options.part_lips},
                   {"lips_parted_faces", face.lips_parted.faces},
+                  {"nose_stiffness", options.nose_stiffness},
+                  {"nose_tets", face.nose_tets},
                   {"face_model",
                    {{"tets", face.mesh.tet_count()},
                     {"nodes", face.mesh.node_count()},
@@ -173,6 +176,8 @@ std::string face_realism_text(const Json& figures) {
   if (figures["nose_root"].get<bool>()) text += "the region goes on above the orbits in front of the eyes\n";
   if (figures["part_lips"].get<bool>())
     text += formatted("the model parted between the lips: %d faces\n", figures["lips_parted_faces"].get<int>());
+  text += formatted("the cartilaginous nose: %d tets, %.0f times the soft tissue's stiffness\n",
+                    figures["nose_tets"].get<int>(), figures["nose_stiffness"].get<double>());
   text += "forward move / advancement at the profile points; * outside the plausible band\n";
   text += formatted("%-6s %-5s", "adv mm", "model");
   for (const auto& p : figures["published"]) text += formatted(" %7s", p["label"].get<std::string>().c_str());

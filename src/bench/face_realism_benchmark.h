@@ -8,6 +8,7 @@
 // (casework/profile_response.h).
 #include <vector>
 
+#include "casework/nasal_cartilage.h"
 #include "core/json.h"
 
 namespace maxillo::bench {
@@ -17,10 +18,11 @@ struct FaceRealismOptions {
   bool free_cavities = false;  // moved bone carries only the tissue on its outer surface (AttachmentOptions)
   bool nose_root = false;      // the region's second piece above the orbits (SoftTissueOptions::nose_root)
   bool part_lips = false;      // the model parted between the lips (SoftTissueOptions::part_lips)
+  double nose_stiffness = casework::kNasalCartilageStiffness;  // SoftTissueOptions::nose_stiffness
 };
 
 // Error(kFileNotFound) when the cadaver head is absent. Figures: preparation_seconds,
-// landmarks_by_hand, free_cavities, nose_root, part_lips, lips_parted_faces, face_model (tets, nodes, cell_mm, seconds), published (label,
+// landmarks_by_hand, free_cavities, nose_root, part_lips, lips_parted_faces, nose_stiffness, nose_tets, face_model (tets, nodes, cell_mm, seconds), published (label,
 // published, source, plausible_low/high), advancements_mm, runs (advancement_mm, model, title,
 // seconds; error when it failed, else iterations, points: label, present, forward_mm, ratio,
 // plausible; gradient_p999, gradient_max, moved_edges; boundary_move_mm, the largest move within

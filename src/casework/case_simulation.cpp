@@ -102,6 +102,8 @@ records::SimulationSummary summarise(const SimulationResult& result, const Simul
   summary.fixed_nodes = softtissue::count_nodes(p.bc, softtissue::NodeConstraint::kFixed);
   summary.free_nodes = softtissue::count_nodes(p.bc, softtissue::NodeConstraint::kFree);
   summary.iterations = p.iterations;
+  summary.nose_tets = p.nose_tets;
+  summary.nose_stiffness = p.nose_stiffness;
   summary.max_skin_displacement_mm = p.skin_displacement.rows() ? p.skin_displacement.rowwise().norm().maxCoeff() : 0;
   summary.seconds = p.seconds;
   if (result.uncertainty)

@@ -5,7 +5,8 @@
 //      the ears, optionally with the nose's root and the glabella above the orbits
 //      (softtissue/face_region.h, default_face_region below);
 //   2. a tet mesh of it (CGAL, tetmesh/labelled_tet_mesher.h) within the tet budget, parted
-//      between the lips (casework/lip_parting.h);
+//      between the lips (casework/lip_parting.h), its cartilaginous nose stiffer than the rest
+//      (casework/nasal_cartilage.h);
 //   3. join points from the bone segments and their planned moves, fixed nodes on the cuts
 //      (softtissue/bone_attachment.h);
 //   4. the static solve with the chosen model (mass tensor, linear FEM or mass-spring);
@@ -18,6 +19,7 @@
 #include <vector>
 
 #include "casework/lip_parting.h"
+#include "casework/nasal_cartilage.h"
 #include "ceph/landmark.h"
 #include "core/triangle_mesh.h"
 #include "core/volume.h"
@@ -49,6 +51,9 @@ struct SoftTissueOptions {
   // tets' faces, up to half a cell from the cleft, and on the phantom meshed at 5 mm it gave the
   // lower lip more of the advancement, not less (issue 34, docs/ARCHITECTURE.md).
   bool part_lips = false;
+  // Young's modulus of the cartilaginous nose over the soft tissue's (casework/nasal_cartilage.h);
+  // 1 makes the face one homogeneous tissue, as the thesis' models were.
+  double nose_stiffness = kNasalCartilageStiffness;
 };
 
 struct SoftTissueInput {
@@ -81,6 +86,8 @@ struct SoftTissuePrediction {
   std::map<uint8_t, Eigen::Isometry3d> bone_moves;  // the segments' moves it was solved for
   std::optional<LipParting> lips;                   // the face model's parting between the lips
   softtissue::Parting lips_parted;
+  int nose_tets = 0;          // the face model's tets of the cartilaginous nose
+  double nose_stiffness = 1;  // their Young's modulus over the soft tissue's
   // Per skin vertex: +1 upper lip, -1 lower lip (bound to a tet parted there), else 0.
   std::vector<int8_t> skin_lip_side;
   // Per plane of the face region (RegionShape::planes() order, named by face_region_plane_names),
@@ -110,6 +117,7 @@ struct FaceModel {
   softtissue::TetMesh mesh;
   std::optional<LipParting> lips;   // where the mesh was parted between the lips (none: not asked for, or no stomion)
   softtissue::Parting lips_parted;  // the faces parted there
+  int nose_tets = 0;                // tets given the nose's stiffness (0: none asked for, or no nose region)
   softtissue::MeshQuality quality;
   MeshingOutcome meshing;
   double region_seconds = 0, meshing_seconds = 0;

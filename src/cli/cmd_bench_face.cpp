@@ -38,6 +38,10 @@ void attach_bench_face(CLI::App& bench, CommandContext& ctx) {
                  "with --real: the face region goes on above the orbits in front of the eyes (off by default)");
   face->add_flag("--part-lips", realism->part_lips,
                  "with --real: the model parted between the lips at their cleft (off by default)");
+  face->add_option("--nose-stiffness", realism->nose_stiffness,
+                   "with --real: Young's modulus of the cartilaginous nose over the soft tissue's (1: homogeneous)")
+      ->check(CLI::Range(1.0, 1000.0))
+      ->capture_default_str();
   face->callback([args, real, realism, &ctx] {
     if (*real) {
       const Json figures = bench::run_face_realism_benchmark(*realism);

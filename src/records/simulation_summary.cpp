@@ -154,6 +154,10 @@ Json to_json(const SimulationSummary& s) {
       boundary.push_back({{"where", b.where}, {"largest_move_mm", b.largest_move_mm}});
     json["boundary_moves"] = boundary;
   }
+  if (s.format_version >= 4) {
+    json["nose_tets"] = s.nose_tets;
+    json["nose_stiffness"] = s.nose_stiffness;
+  }
   if (s.uncertainty)
     json["uncertainty"] = {
         {"runs", s.uncertainty->runs}, {"p95_mm", s.uncertainty->p95_mm}, {"max_mm", s.uncertainty->max_mm}};
@@ -193,6 +197,10 @@ SimulationSummary read_simulation_summary(const Json& json, const std::string& s
       JsonReader b = r.element(boundary, "boundary_moves", i);
       s.boundary_moves.push_back({b.required_text("where"), b.required_number("largest_move_mm", 0)});
     }
+  }
+  if (s.format_version >= 4) {
+    s.nose_tets = count(r, "nose_tets");
+    s.nose_stiffness = r.required_number("nose_stiffness", 1);
   }
   return s;
 }

@@ -17,7 +17,9 @@ struct SimulationSummary {
   // required from this version on; a version 1 summary has none of them.
   // 3: profile_response (null when the plan does not advance the maxilla) and boundary_moves,
   // required from 3 on.
-  static constexpr int kFormatVersion = 3;
+  // 4: nose_tets and nose_stiffness (the cartilaginous nose, casework/nasal_cartilage.h),
+  // required from 4 on; before it every model was one homogeneous tissue.
+  static constexpr int kFormatVersion = 4;
 
   struct UncertaintyBand {
     std::vector<std::string> runs;  // "mtm nu=0.46", ...
@@ -74,6 +76,8 @@ struct SimulationSummary {
   std::vector<LandmarkMove> soft_landmarks;         // those of the case's landmarks that are soft tissue ones
   std::optional<ProfileResponse> profile_response;  // version 3; none when the maxilla was not advanced
   std::vector<BoundaryMove> boundary_moves;         // version 3
+  int nose_tets = 0;                                // version 4: tets of the cartilaginous nose (0: none)
+  double nose_stiffness = 1;                        // version 4: their Young's modulus over the soft tissue's
 };
 
 Json to_json(const SimulationSummary& summary);

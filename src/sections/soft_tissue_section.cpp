@@ -56,9 +56,17 @@ report::ImageGrid picture_row(const records::StoredSimulation& simulation, const
 const std::vector<std::pair<std::string, std::string>> kThreeViews{
     {"frontal", "frontal"}, {"lateral", "right lateral"}, {"oblique", "oblique"}};
 
+// The tissues the model tells apart (summaries before format 4: one homogeneous tissue).
+std::string tissues_text(const records::SimulationSummary& s) {
+  if (s.nose_tets == 0) return "one homogeneous soft tissue";
+  return "soft tissue, and the cartilaginous nose (" + std::to_string(s.nose_tets) + " tetrahedra) " +
+         fixed(s.nose_stiffness, 0) + " times stiffer";
+}
+
 report::KeyValueBlock model_facts(const records::SimulationSummary& s, const std::string& title) {
   return {{
       {"Model", title + ", Poisson ratio " + fixed(s.poisson_ratio, 2)},
+      {"Tissues", tissues_text(s)},
       {"Tetrahedral mesh", std::to_string(s.tetrahedra) + " tetrahedra, " + std::to_string(s.nodes) +
                                " nodes (cell size " + fixed(s.cell_size_mm, 1) + " mm)"},
       {"Element quality", "smallest dihedral angle " + fixed(s.min_dihedral_deg, 1) + "°, aspect ratio mean " +

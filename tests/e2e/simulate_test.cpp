@@ -56,6 +56,9 @@ TEST(Simulate, SixMillimetreAdvancementOfThePhantomGivesAPlausibleFace) {
   EXPECT_NEAR(profile["advancement_mm"].get<double>(), 6.0, 0.01);
   EXPECT_EQ(profile["reference"], "A");
   EXPECT_EQ(profile["points"].size(), 6u);
+  // The cartilaginous nose is a stiffer tissue (casework/nasal_cartilage.h).
+  EXPECT_GT(summary["nose_tets"].get<int>(), 50);
+  EXPECT_NEAR(summary["nose_stiffness"].get<double>(), 67.6, 0.1);
   ASSERT_EQ(summary["boundary_moves"].size(), 3u);  // below the orbits, under the chin, in front of the ears
   EXPECT_EQ(summary["boundary_moves"][0]["where"], "below the orbits");
   for (const auto& point : profile["points"]) {
@@ -78,6 +81,7 @@ TEST(Simulate, SixMillimetreAdvancementOfThePhantomGivesAPlausibleFace) {
             std::string::npos)
       << text;
   EXPECT_NE(text.find("linear FEM, Poisson ratio 0.46"), std::string::npos) << text;
+  EXPECT_NE(text.find("soft tissue, and the cartilaginous nose ("), std::string::npos) << text;
   EXPECT_EQ(testing::count_of(text, "Uncertainty band, "), 2u) << text;  // the two pictures' captions
   EXPECT_NE(text.find("Plausibility: how far the predicted profile moves forward"), std::string::npos) << text;
   EXPECT_NE(text.find("(read at A)"), std::string::npos) << text;

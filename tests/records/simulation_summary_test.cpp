@@ -46,6 +46,8 @@ SimulationSummary example_summary() {
   profile.steepest_near_mm = 2.5;
   s.profile_response = profile;
   s.boundary_moves = {{"below the orbits", 1.375}, {"under the chin", 0.0}};
+  s.nose_tets = 812;
+  s.nose_stiffness = 30;
   return s;
 }
 
@@ -75,6 +77,20 @@ TEST(SimulationSummary, RoundTripsThroughItsText) {
   ASSERT_EQ(read.boundary_moves.size(), 2u);
   EXPECT_EQ(read.boundary_moves[0].where, "below the orbits");
   EXPECT_EQ(read.boundary_moves[0].largest_move_mm, 1.375);
+  EXPECT_EQ(read.nose_tets, 812);
+  EXPECT_EQ(read.nose_stiffness, 30);
+}
+
+// Version 3 summaries (every model one homogeneous tissue) still read: no stiffer nose.
+TEST(SimulationSummary, AVersion3SummaryReadsAsOneHomogeneousTissue) {
+  Json v3 = to_json(example_summary());
+  v3.erase("nose_tets");
+  v3.erase("nose_stiffness");
+  v3["format_version"] = 3;
+  const SimulationSummary read = read_simulation_summary(v3, "test");
+  EXPECT_EQ(read.nose_tets, 0);
+  EXPECT_EQ(read.nose_stiffness, 1);
+  EXPECT_EQ(read.boundary_moves.size(), 2u);
 }
 
 // Version 2 summaries (before the profile's response was added) still read, without it.
@@ -82,6 +98,8 @@ TEST(SimulationSummary, AVersion2SummaryReadsWithoutTheProfileResponse) {
   Json v2 = to_json(example_summary());
   v2.erase("profile_response");
   v2.erase("boundary_moves");
+  v2.erase("nose_tets");
+  v2.erase("nose_stiffness");
   v2["format_version"] = 2;
   const SimulationSummary read = read_simulation_summary(v2, "test");
   EXPECT_FALSE(read.profile_response);
@@ -91,8 +109,8 @@ TEST(SimulationSummary, AVersion2SummaryReadsWithoutTheProfileResponse) {
 // Version 1 summaries (before the report's facts were added) still read, without those facts.
 TEST(SimulationSummary, AVersion1SummaryReadsWithoutTheReportFacts) {
   Json v1 = to_json(example_summary());
-  for (const char* key :
-       {"plan_text", "meshing_attempts", "mean_aspect_ratio", "soft_landmarks", "profile_response", "boundary_moves"})
+  for (const char* key : {"plan_text", "meshing_attempts", "mean_aspect_ratio", "soft_landmarks", "profile_response",
+                          "boundary_moves", "nose_tets", "nose_stiffness"})
     v1.erase(key);
   v1["format_version"] = 1;
   const SimulationSummary read = read_simulation_summary(v1, "test");
@@ -124,8 +142,11 @@ TEST(SimulationSummary, DamageIsAnErrorNamingTheKey) {
             "sim/simulation.json: boundary_moves[1].where: missing");
   EXPECT_EQ(failure([](Json& j) { j["profile_response"]["points"][0]["plausible_high"] = "high"; }),
             "sim/simulation.json: profile_response.points[0].plausible_high: must be a number");
-  EXPECT_EQ(failure([](Json& j) { j["format_version"] = 4; }),
-            "sim/simulation.json: format_version: is 4, newer than this program reads (3): update maxillo");
+  EXPECT_EQ(failure([](Json& j) { j.erase("nose_tets"); }), "sim/simulation.json: nose_tets: missing");
+  EXPECT_NE(failure([](Json& j) { j["nose_stiffness"] = 0.5; }).find("sim/simulation.json: nose_stiffness: must"),
+            std::string::npos);
+  EXPECT_EQ(failure([](Json& j) { j["format_version"] = 5; }),
+            "sim/simulation.json: format_version: is 5, newer than this program reads (4): update maxillo");
 }
 
 }  // namespace

@@ -49,6 +49,23 @@ TEST(SoftTissueSection, AMeshOverItsBudgetIsReportedWithTheNumbers) {
   EXPECT_EQ(within.find("budget"), std::string::npos) << within;
 }
 
+// The value of the model facts' row `key`, "" when there is none.
+std::string fact(const report::Section& section, const std::string& key) {
+  for (const auto* block : blocks_of<report::KeyValueBlock>(section))
+    for (const auto& [k, v] : block->pairs)
+      if (k == key) return v;
+  return "";
+}
+
+TEST(SoftTissueSection, SaysWhichTissuesTheModelTellsApart) {
+  auto stored = stored_prediction(2, 2);
+  EXPECT_EQ(fact(soft_tissue_section(stored), "Tissues"), "one homogeneous soft tissue");
+  stored.summary.nose_tets = 812;
+  stored.summary.nose_stiffness = 30;
+  EXPECT_EQ(fact(soft_tissue_section(stored), "Tissues"),
+            "soft tissue, and the cartilaginous nose (812 tetrahedra) 30 times stiffer");
+}
+
 TEST(SoftTissueSection, ShowsTheStoredPicturesAndLandmarkMoves) {
   const report::Section section = soft_tissue_section(stored_prediction(2, 2));
   const auto grids = blocks_of<report::ImageGrid>(section);
