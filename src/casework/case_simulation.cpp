@@ -86,7 +86,8 @@ records::SimulationSummary summarise(const SimulationResult& result, const Simul
   const SoftTissueOptions& options = request.options;
   records::SimulationSummary summary;
   summary.plan_text = request.plan_text.empty() ? request.plan.description : request.plan_text;
-  summary.model = std::string(model_name(options.model));
+  summary.model = std::string(model_name(p.model));
+  summary.model_fallback = result.fallback;
   summary.poisson_ratio = options.poisson_ratio;
   summary.plan_application_stored = result.reused_plan_application;
   summary.tetrahedra = p.mesh.tet_count();
@@ -142,7 +143,7 @@ void store_outputs(Archive& archive, int64_t case_id, int64_t series, const Simu
   const std::string plan_key =
       records::plan_application_key(sha256_hex(planning::serialise_plan(request.plan)), landmarks);
   const Json settings{{"face_model", result.prediction.face_model_key},
-                      {"model", result.summary.model},
+                      {"model", std::string(model_name(request.options.model))},  // asked for
                       {"poisson_ratio", request.options.poisson_ratio},
                       {"gradient_threshold_mm", request.options.gradient_threshold_mm},
                       {"skin_binding_mm", request.options.skin_binding_mm},
@@ -224,6 +225,23 @@ Uncertainty prediction_uncertainty(const SoftTissuePrediction& base, const Trian
   return band;
 }
 
+SoftTissuePrediction predict_face(const SoftTissueInput& input, const SoftTissueOptions& options,
+                                  const FaceModel* model,
+                                  std::optional<records::SimulationSummary::ModelFallback>& fallback) {
+  try {
+    return predict_soft_tissue(input, options, model);
+  } catch (const Error& e) {
+    const bool nonlinear_failed = options.model == softtissue::SoftTissueModel::kNonlinearFem &&
+                                  e.code() == ErrorCode::kProcessing && e.subject() == "non-linear FEM";
+    if (!nonlinear_failed) throw;
+    log::warning("the non-linear FEM did not converge (", e.reason(), "): the linear FEM predicts the face instead");
+    fallback = records::SimulationSummary::ModelFallback{std::string(model_name(options.model)), e.reason()};
+    SoftTissueOptions linear = options;
+    linear.model = softtissue::SoftTissueModel::kLinearFem;
+    return predict_soft_tissue(input, linear, model);
+  }
+}
+
 SimulationResult simulate_case(Archive& archive, int64_t case_id, const SimulationRequest& request,
                                const CaseTissues* given) {
   auto contents = archive.case_contents(case_id);
@@ -252,9 +270,10 @@ SimulationResult simulate_case(Archive& archive, int64_t case_id, const Simulati
       case_surfaces(archive, case_id, series, recipe, case_tissues.ct_labels_for(recipe.segmentation)).skin;
   const SegmentMoves segment_moves = moves_by_segment(moves);
   SoftTissueInput input{&tissues, &cut.segments, &result.skin_before, landmarks, segment_moves};
-  result.prediction = predict_soft_tissue(input, request.options, request.face_model.get());
-  if (request.uncertainty)
-    result.uncertainty = prediction_uncertainty(result.prediction, result.skin_before, request.options);
+  result.prediction = predict_face(input, request.options, request.face_model.get(), result.fallback);
+  SoftTissueOptions ran = request.options;
+  ran.model = result.prediction.model;
+  if (request.uncertainty) result.uncertainty = prediction_uncertainty(result.prediction, result.skin_before, ran);
 
   std::filesystem::create_directories(request.out);
   result.frame = anatomical_frame(landmarks);

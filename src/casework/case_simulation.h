@@ -51,7 +51,18 @@ struct SimulationResult {
   std::vector<std::filesystem::path> files;              // predicted skin (vtp, stl, ply), model (vtu), json
   records::SimulationSummary summary;                    // what simulation.json holds, and the archive keeps
   bool reused_plan_application = false;                  // the plan's moves came from `plan apply`'s stored result
+  // Set when the model asked for did not run and another one solved the face (predict_face).
+  std::optional<records::SimulationSummary::ModelFallback> fallback;
 };
+
+// The face predicted with the model asked for. The non-linear FEM can fail to converge on a real
+// head (a sliver turned inside out by the bone's move; docs/ARCHITECTURE.md); the linear FEM,
+// which solves the same equations for small strains, then predicts the face on the same model,
+// and `fallback` says which model was asked for and why it did not run. Every other failure is
+// thrown.
+SoftTissuePrediction predict_face(const SoftTissueInput& input, const SoftTissueOptions& options,
+                                  const FaceModel* model,
+                                  std::optional<records::SimulationSummary::ModelFallback>& fallback);
 
 // The uncertainty band: the same model re-solved with every other model and with Poisson
 // ratios 0.45 and 0.49 (the spread of plausible answers, not an error bound).

@@ -221,6 +221,7 @@ SoftTissuePrediction predict_soft_tissue(const SoftTissueInput& input, const Sof
                 "the face model given was built from other tissues, landmarks or meshing options");
   const FaceModel& model = given ? *given : built;
   SoftTissuePrediction prediction;
+  prediction.model = options.model;
   prediction.mesh = model.mesh;
   prediction.lips = model.lips;
   prediction.lips_parted = model.lips_parted;
@@ -259,6 +260,7 @@ SoftTissuePrediction predict_soft_tissue(const SoftTissueInput& input, const Sof
 SoftTissuePrediction resolve_soft_tissue(const SoftTissuePrediction& base, const TriangleMesh& skin,
                                          const SoftTissueOptions& options) {
   SoftTissuePrediction prediction;
+  prediction.model = options.model;
   prediction.mesh = base.mesh;
   prediction.quality = base.quality;
   prediction.bc = base.bc;

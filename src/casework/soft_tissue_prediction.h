@@ -74,6 +74,7 @@ struct MeshingOutcome {
 };
 
 struct SoftTissuePrediction {
+  softtissue::SoftTissueModel model = softtissue::SoftTissueModel::kMassTensor;  // the model that solved it
   softtissue::TetMesh mesh;
   softtissue::MeshQuality quality;
   softtissue::BoundaryConditions bc;

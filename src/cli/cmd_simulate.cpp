@@ -58,7 +58,10 @@ int run_simulate(const SimulateOptions& options, const GlobalOptions& global) {
     std::cout << records::to_json(result.summary).dump(2) << "\n";
     return 0;
   }
-  std::cout << "model: " << softtissue::model_title(request.options.model) << ", " << p.mesh.tet_count()
+  if (result.fallback)
+    std::cout << "the " << softtissue::model_title(request.options.model) << " did not converge ("
+              << result.fallback->reason << "): the face is the " << softtissue::model_title(p.model) << "'s\n";
+  std::cout << "model: " << softtissue::model_title(p.model) << ", " << p.mesh.tet_count()
             << " tetrahedra (smallest dihedral angle " << p.quality.min_dihedral_deg << " deg)\n"
             << "solve: " << p.seconds.solve << " s, " << p.iterations << " iterations; mesh " << p.seconds.meshing
             << " s; mapping " << p.seconds.mapping << " s\n"

@@ -157,6 +157,9 @@ Json to_json(const SimulationSummary& s) {
   if (s.format_version >= 4) {
     json["nose_tets"] = s.nose_tets;
     json["nose_stiffness"] = s.nose_stiffness;
+    json["model_fallback"] =
+        s.model_fallback ? Json{{"requested", s.model_fallback->requested}, {"reason", s.model_fallback->reason}}
+                         : Json(nullptr);
   }
   if (s.uncertainty)
     json["uncertainty"] = {
@@ -201,6 +204,12 @@ SimulationSummary read_simulation_summary(const Json& json, const std::string& s
   if (s.format_version >= 4) {
     s.nose_tets = count(r, "nose_tets");
     s.nose_stiffness = r.required_number("nose_stiffness", 1);
+    if (!r.at("model_fallback").is_null()) {
+      JsonReader fallback = r.object("model_fallback");
+      s.model_fallback = {fallback.required_text("requested"), fallback.required_text("reason")};
+      if (!softtissue::parse_model(s.model_fallback->requested))
+        fallback.fail(fallback.field("requested"), "unknown model \"" + s.model_fallback->requested + "\"");
+    }
   }
   return s;
 }

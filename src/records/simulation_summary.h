@@ -17,8 +17,9 @@ struct SimulationSummary {
   // required from this version on; a version 1 summary has none of them.
   // 3: profile_response (null when the plan does not advance the maxilla) and boundary_moves,
   // required from 3 on.
-  // 4: nose_tets and nose_stiffness (the cartilaginous nose, casework/nasal_cartilage.h),
-  // required from 4 on; before it every model was one homogeneous tissue.
+  // 4: nose_tets and nose_stiffness (the cartilaginous nose, casework/nasal_cartilage.h) and
+  // model_fallback (null when the model asked for ran), required from 4 on; before it every
+  // model was one homogeneous tissue.
   static constexpr int kFormatVersion = 4;
 
   struct UncertaintyBand {
@@ -51,6 +52,12 @@ struct SimulationSummary {
     double steepest_near_mm = 0;                 // and its distance from it
   };
 
+  // The model asked for when another one ran instead, and why (casework/case_simulation.h).
+  struct ModelFallback {
+    std::string requested;  // model_name: "nfem"
+    std::string reason;     // its error
+  };
+
   // Where the model's region cuts tissue, and how far the tissue still moves just inside the cut.
   struct BoundaryMove {
     std::string where;           // "below the orbits", ...
@@ -59,7 +66,7 @@ struct SimulationSummary {
 
   int format_version = kFormatVersion;
   std::string plan_text;  // the plan in one line, e.g. "maxilla 6.0 mm advancement"
-  std::string model;      // model_name: "mtm", "fem", "msm", "nfem"
+  std::string model;      // model_name of the model that ran: "mtm", "fem", "msm", "nfem"
   double poisson_ratio = 0;
   bool plan_application_stored = false;  // the moves came from `plan apply`'s stored result
   int tetrahedra = 0, nodes = 0;
@@ -78,6 +85,7 @@ struct SimulationSummary {
   std::vector<BoundaryMove> boundary_moves;         // version 3
   int nose_tets = 0;                                // version 4: tets of the cartilaginous nose (0: none)
   double nose_stiffness = 1;                        // version 4: their Young's modulus over the soft tissue's
+  std::optional<ModelFallback> model_fallback;      // version 4: none when the model asked for ran
 };
 
 Json to_json(const SimulationSummary& summary);

@@ -207,6 +207,13 @@ report::Section soft_tissue_section(const records::StoredSimulation& simulation)
       "Tissue touching a moved bone segment follows it; tissue on unmoved bone and on the model's cut planes "
       "(below the orbits, under the chin, in front of the ears) stays in place."});
   section.blocks.push_back(model_facts(s, title));
+  if (s.model_fallback) {
+    const auto requested = softtissue::parse_model(s.model_fallback->requested);  // the reader has checked it
+    section.blocks.push_back(report::Note{
+        "The " + std::string(requested ? softtissue::model_title(*requested) : s.model_fallback->requested) +
+        " was asked for and did not converge on this face (" + s.model_fallback->reason +
+        "); the prediction shown is the " + title + "'s, which solves the same equations for small strains."});
+  }
   if (s.over_tet_budget)
     section.blocks.push_back(report::Note{"The tetrahedral mesh is over its budget: " + std::to_string(s.tetrahedra) +
                                           " tetrahedra against at most " + std::to_string(s.tet_budget) +

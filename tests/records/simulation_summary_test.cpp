@@ -48,6 +48,8 @@ SimulationSummary example_summary() {
   s.boundary_moves = {{"below the orbits", 1.375}, {"under the chin", 0.0}};
   s.nose_tets = 812;
   s.nose_stiffness = 30;
+  s.model = "fem";
+  s.model_fallback = SimulationSummary::ModelFallback{"nfem", "Newton's method did not converge"};
   return s;
 }
 
@@ -79,6 +81,12 @@ TEST(SimulationSummary, RoundTripsThroughItsText) {
   EXPECT_EQ(read.boundary_moves[0].largest_move_mm, 1.375);
   EXPECT_EQ(read.nose_tets, 812);
   EXPECT_EQ(read.nose_stiffness, 30);
+  ASSERT_TRUE(read.model_fallback);
+  EXPECT_EQ(read.model_fallback->requested, "nfem");
+  SimulationSummary ran_as_asked = written;
+  ran_as_asked.model_fallback.reset();
+  EXPECT_TRUE(to_json(ran_as_asked)["model_fallback"].is_null());
+  EXPECT_FALSE(read_simulation_summary(to_json(ran_as_asked), "test").model_fallback);
 }
 
 // Version 3 summaries (every model one homogeneous tissue) still read: no stiffer nose.
@@ -86,10 +94,12 @@ TEST(SimulationSummary, AVersion3SummaryReadsAsOneHomogeneousTissue) {
   Json v3 = to_json(example_summary());
   v3.erase("nose_tets");
   v3.erase("nose_stiffness");
+  v3.erase("model_fallback");
   v3["format_version"] = 3;
   const SimulationSummary read = read_simulation_summary(v3, "test");
   EXPECT_EQ(read.nose_tets, 0);
   EXPECT_EQ(read.nose_stiffness, 1);
+  EXPECT_FALSE(read.model_fallback);
   EXPECT_EQ(read.boundary_moves.size(), 2u);
 }
 
@@ -100,6 +110,7 @@ TEST(SimulationSummary, AVersion2SummaryReadsWithoutTheProfileResponse) {
   v2.erase("boundary_moves");
   v2.erase("nose_tets");
   v2.erase("nose_stiffness");
+  v2.erase("model_fallback");
   v2["format_version"] = 2;
   const SimulationSummary read = read_simulation_summary(v2, "test");
   EXPECT_FALSE(read.profile_response);
@@ -110,7 +121,7 @@ TEST(SimulationSummary, AVersion2SummaryReadsWithoutTheProfileResponse) {
 TEST(SimulationSummary, AVersion1SummaryReadsWithoutTheReportFacts) {
   Json v1 = to_json(example_summary());
   for (const char* key : {"plan_text", "meshing_attempts", "mean_aspect_ratio", "soft_landmarks", "profile_response",
-                          "boundary_moves", "nose_tets", "nose_stiffness"})
+                          "boundary_moves", "nose_tets", "nose_stiffness", "model_fallback"})
     v1.erase(key);
   v1["format_version"] = 1;
   const SimulationSummary read = read_simulation_summary(v1, "test");
@@ -143,6 +154,9 @@ TEST(SimulationSummary, DamageIsAnErrorNamingTheKey) {
   EXPECT_EQ(failure([](Json& j) { j["profile_response"]["points"][0]["plausible_high"] = "high"; }),
             "sim/simulation.json: profile_response.points[0].plausible_high: must be a number");
   EXPECT_EQ(failure([](Json& j) { j.erase("nose_tets"); }), "sim/simulation.json: nose_tets: missing");
+  EXPECT_EQ(failure([](Json& j) { j.erase("model_fallback"); }), "sim/simulation.json: model_fallback: missing");
+  EXPECT_EQ(failure([](Json& j) { j["model_fallback"]["requested"] = "springs"; }),
+            "sim/simulation.json: model_fallback.requested: unknown model \"springs\"");
   EXPECT_NE(failure([](Json& j) { j["nose_stiffness"] = 0.5; }).find("sim/simulation.json: nose_stiffness: must"),
             std::string::npos);
   EXPECT_EQ(failure([](Json& j) { j["format_version"] = 5; }),

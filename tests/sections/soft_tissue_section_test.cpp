@@ -66,6 +66,18 @@ TEST(SoftTissueSection, SaysWhichTissuesTheModelTellsApart) {
             "soft tissue, and the cartilaginous nose (812 tetrahedra) 30 times stiffer");
 }
 
+TEST(SoftTissueSection, AModelThatDidNotRunIsNamedWithWhy) {
+  auto stored = stored_prediction(2, 2);
+  EXPECT_EQ(notes_of(soft_tissue_section(stored)).find("was asked for"), std::string::npos);
+  stored.summary.model = "fem";
+  stored.summary.model_fallback = records::SimulationSummary::ModelFallback{"nfem", "Newton's method did not converge"};
+  const std::string notes = notes_of(soft_tissue_section(stored));
+  EXPECT_NE(notes.find("The non-linear FEM (neo-Hookean) was asked for and did not converge on this face (Newton's "
+                       "method did not converge); the prediction shown is the linear FEM's"),
+            std::string::npos)
+      << notes;
+}
+
 TEST(SoftTissueSection, ShowsTheStoredPicturesAndLandmarkMoves) {
   const report::Section section = soft_tissue_section(stored_prediction(2, 2));
   const auto grids = blocks_of<report::ImageGrid>(section);
