@@ -76,11 +76,8 @@ void print_table(const landmarking::LandmarkDetection& d, double seconds) {
     else
       std::printf("%-5s %9s %9s %9s  %4s  %-8s %s\n", l.label.c_str(), "", "", "", "", "absent", remark.c_str());
   }
-  const std::string cupping = d.cupping > 0 ? " (after a cone-beam cupping of " +
-                                                  std::to_string(int(std::lround(100 * d.cupping))) + " % was undone)"
-                                            : "";
-  std::printf("head frame: %s; midsagittal asymmetry %.2f mm; grey values: %s%s; %.1f s\n", d.frame_source.c_str(),
-              d.asymmetry_mm, d.grey.describe().c_str(), cupping.c_str(), seconds);
+  std::printf("head frame: %s; midsagittal asymmetry %.2f mm; grey values: %s; %.1f s\n", d.frame_source.c_str(),
+              d.asymmetry_mm, d.reading.describe().c_str(), seconds);
 }
 
 // Stores the detected set with the case (beside a set given by hand, which keeps precedence),

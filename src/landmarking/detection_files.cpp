@@ -82,8 +82,8 @@ Json detection_json(const LandmarkDetection& d) {
           {"midsagittal_plane", {{"normal", {n.x(), n.y(), n.z()}}, {"offset_mm", d.midsagittal.offset}}},
           {"asymmetry_mm", d.asymmetry_mm},
           {"scale", d.scale},
-          {"grey_values", d.grey.describe()},
-          {"cone_beam_cupping_undone", d.cupping},
+          {"grey_values", d.reading.grey.describe()},
+          {"cone_beam_cupping_undone", d.reading.cupping_depth},
           {"landmarks", landmarks}};
 }
 

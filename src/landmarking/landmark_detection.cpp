@@ -241,17 +241,16 @@ LandmarkDetection detect_landmarks(const Volume& scan, const std::string& subjec
   // A cone-beam scan's values lose more towards its axis: undone first, or the thresholds that
   // hold at the rim do not hold in the middle (imaging/hounsfield_reading.h). A CT is read as it is.
   Volume uncupped;
-  const GreyReading reading = read_grey_values(scan, &uncupped);
-  result.grey = reading.grey;
-  result.cupping = reading.cupping_depth;
+  result.reading = read_grey_values(scan, &uncupped);
+  const GreyCalibration& grey = result.reading.grey;
   const Volume& ct = uncupped.hu.empty() ? scan : uncupped;
-  const Frames frames = sagittal_frame(ct, result.grey, subject);
+  const Frames frames = sagittal_frame(ct, grey, subject);
   result.midsagittal = frames.midsagittal;
   result.asymmetry_mm = frames.asymmetry;
-  Eigen::Isometry3d frame = provisional_frame(ct, result.grey, frames.sagittal, subject, result);
+  Eigen::Isometry3d frame = provisional_frame(ct, grey, frames.sagittal, subject, result);
   // Frankfort from porion and orbitale, found in the provisional frame.
   {
-    const HeadVolume coarse(ct, result.grey, frame, head_box(result.scale), kCoarseSpacingMm);
+    const HeadVolume coarse(ct, grey, frame, head_box(result.scale), kCoarseSpacingMm);
     Eigen::Vector3d po = Eigen::Vector3d::Zero(), orb = Eigen::Vector3d::Zero();
     int po_count = 0, or_count = 0;
     for (int side : {-1, 1}) {
@@ -273,7 +272,7 @@ LandmarkDetection detect_landmarks(const Volume& scan, const std::string& subjec
   }
   result.head_frame = frame;
   // Every landmark, read in the head volume at the fine spacing.
-  const HeadVolume head(ct, result.grey, frame, head_box(result.scale), options.fine_spacing_mm);
+  const HeadVolume head(ct, grey, frame, head_box(result.scale), options.fine_spacing_mm);
   Findings found;
   if (auto s = find_sella(head, {{0, -14, -14}, {0, 14, 14}}))
     found["S"] = RuleFinding::found(s->centre, evidence_between(1.5 - s->fit_rms_mm, 0, 1));

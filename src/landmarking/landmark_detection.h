@@ -21,7 +21,7 @@
 
 #include "ceph/landmark.h"
 #include "core/volume.h"
-#include "imaging/grey_calibration.h"
+#include "imaging/hounsfield_reading.h"
 #include "landmarking/landmark_checks.h"
 #include "landmarking/symmetry_plane.h"
 
@@ -47,9 +47,8 @@ struct LandmarkDetection {
   double asymmetry_mm = 0;                                       // mean distance of the mirrored bone surface
   Eigen::Isometry3d head_frame = Eigen::Isometry3d::Identity();  // head frame -> LPS
   std::string frame_source;                                      // "Frankfort (porion, orbitale)" or "S-N + 7 degrees"
-  GreyCalibration grey;
-  double cupping = 0;  // the share of soft tissue's level lost on a cone-beam scan's axis, undone first
-  double scale = 1;    // S-N / 70 mm
+  GreyReading reading;  // how the scan's grey values were read as HU (a cone-beam scan's cupping undone first)
+  double scale = 1;     // S-N / 70 mm
 
   // The landmarks present, as a set for the cephalometry (absent ones left out).
   LandmarkSet present() const;

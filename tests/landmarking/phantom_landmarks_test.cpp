@@ -143,7 +143,7 @@ TEST(PhantomLandmarks, AConeBeamFieldCutBelowTheSellaGetsItsFrameFromTheEarsAndO
   ASSERT_FALSE(find_landmark(phantom.landmarks, "N"));
   const LandmarkDetection found = detect_landmarks(phantom.ct, "cbct");
   EXPECT_NE(found.frame_source.find("found without sella and nasion"), std::string::npos) << found.frame_source;
-  EXPECT_FALSE(found.grey.is_hounsfield());
+  EXPECT_FALSE(found.reading.grey.is_hounsfield());
   for (const char* label : {"S", "N"}) {
     ASSERT_FALSE(found.find(label)->position) << label;
     EXPECT_NE(found.find(label)->note.find("outside the scanned field"), std::string::npos) << found.find(label)->note;
@@ -162,7 +162,7 @@ TEST(PhantomLandmarks, AConeBeamFieldCutBelowTheSellaGetsItsFrameFromTheEarsAndO
   // Every confident landmark below the field's edge near its truth: the midline of the maxilla
   // too, once the cupping is undone (before, the lifted soft tissue of the nose passed for the
   // nasal spine, 26 mm off). Measured 2026-11-28 (1 mm): mean 0.77 mm over 18, Ls (1.6) the farthest.
-  EXPECT_GT(found.cupping, 0.5 * spec.cone_beam->cupping);
+  EXPECT_GT(found.reading.cupping_depth, 0.5 * spec.cone_beam->cupping);
   const auto errors = errors_against(found, phantom.landmarks);
   for (const auto& [label, e] : errors) std::cout << "cut cone-beam: " << label << " " << e << " mm\n";
   EXPECT_LT(mean_of(errors), 1.0);
