@@ -189,10 +189,10 @@ Json bench_nfem(const CubeProblem& cube, const CubeBenchOptions& options, Eigen:
 
 Json bench_model(const CubeProblem& cube, const CubeBenchOptions& options, Eigen::MatrixX3d& displacement) {
   switch (options.model) {
-    case CubeModel::kFem: return bench_fem(cube, options, displacement);
-    case CubeModel::kMtm: return bench_mtm(cube, options, displacement);
-    case CubeModel::kMsm: return bench_msm(cube, options, displacement);
-    case CubeModel::kNfem: return bench_nfem(cube, options, displacement);
+    case SoftTissueModel::kLinearFem: return bench_fem(cube, options, displacement);
+    case SoftTissueModel::kMassTensor: return bench_mtm(cube, options, displacement);
+    case SoftTissueModel::kMassSpring: return bench_msm(cube, options, displacement);
+    case SoftTissueModel::kNonlinearFem: return bench_nfem(cube, options, displacement);
   }
   throw Error(ErrorCode::kBadValue, "bench cube", "unknown model");
 }
@@ -216,10 +216,8 @@ Json run_cube_benchmark(const CubeBenchOptions& options) {
   const MeshQuality quality = mesh_quality(cube.mesh);
   Eigen::MatrixX3d displacement;
   Json result = bench_model(cube, options, displacement);
-  static const std::map<CubeModel, std::string> names{
-      {CubeModel::kFem, "fem"}, {CubeModel::kMtm, "mtm"}, {CubeModel::kMsm, "msm"}, {CubeModel::kNfem, "nfem"}};
   if (!options.out.empty()) write_vtu(options.out, cube.mesh, displacement, cube.bc);
-  return {{"model", names.at(options.model)},
+  return {{"model", std::string(model_name(options.model))},
           {"tets", cube.mesh.tet_count()},
           {"nodes", cube.mesh.node_count()},
           {"divisions", cube.spec.divisions},

@@ -13,15 +13,13 @@
 #include "softtissue/factorised_elasticity.h"
 #include "softtissue/linear_static_solve.h"
 #include "softtissue/local_iteration.h"
+#include "softtissue/soft_tissue_model.h"
 
 namespace maxillo::bench {
 
-// linear FEM, mass tensor model, mass-spring model, non-linear FEM
-enum class CubeModel { kFem, kMtm, kMsm, kNfem };
-
 struct CubeBenchOptions {
   int tets = 105000;  // approximate number of tetrahedra
-  CubeModel model = CubeModel::kFem;
+  softtissue::SoftTissueModel model = softtissue::SoftTissueModel::kLinearFem;
   softtissue::HexSplit split = softtissue::HexSplit::kSixTets;
   // fem: the conjugate gradient's preconditioner and relative residual, and the factorisation
   // of the re-solve after a plan change

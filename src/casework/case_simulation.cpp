@@ -192,11 +192,9 @@ Uncertainty prediction_uncertainty(const SoftTissuePrediction& base, const Trian
     std::snprintf(label, sizeof label, "%s nu=%.2f", std::string(model_name(model)).c_str(), poisson);
     band.runs.push_back(label);
   };
-  // The mass-spring model is left out: on the face models its answer lies ~6 mm (P95) from the
-  // mass tensor and FEM answers, which agree to 0.1 mm; until that is understood it would
-  // dominate the band (docs/ARCHITECTURE.md, open questions).
-  for (auto model : {softtissue::SoftTissueModel::kMassTensor, softtissue::SoftTissueModel::kLinearFem})
-    if (model != options.model) add(model, options.poisson_ratio);
+  // The other models the table puts in the band (softtissue/soft_tissue_model.h says which, and why).
+  for (const auto& other : softtissue::soft_tissue_models())
+    if (other.in_uncertainty_band && other.model != options.model) add(other.model, options.poisson_ratio);
   // The Poisson ratios with linear FEM: near incompressibility (0.49) the point-wise iterations
   // of the mass tensor and mass-spring models converge so slowly that their stop criterion
   // would end them far from rest, and the band would show the solver, not the tissue.

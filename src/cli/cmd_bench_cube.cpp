@@ -10,12 +10,11 @@
 namespace maxillo::cli {
 
 void attach_bench_cube(CLI::App& bench, CommandContext& ctx) {
-  using bench::CubeModel;
   using namespace maxillo::softtissue;
   CLI::App* cube = bench.add_subcommand("cube", "soft tissue cube test: border fixed, centre lifted 6 mm");
   auto args = std::make_shared<bench::CubeBenchOptions>();
-  std::map<std::string, CubeModel> models{
-      {"fem", CubeModel::kFem}, {"mtm", CubeModel::kMtm}, {"msm", CubeModel::kMsm}, {"nfem", CubeModel::kNfem}};
+  std::map<std::string, SoftTissueModel> models;
+  for (const auto& m : soft_tissue_models()) models.emplace(std::string(m.name), m.model);
   std::map<std::string, HexSplit> splits{{"5", HexSplit::kFiveTets}, {"6", HexSplit::kSixTets}};
   std::map<std::string, Preconditioner> preconditioners{{"block-jacobi", Preconditioner::kBlockJacobi},
                                                         {"jacobi", Preconditioner::kJacobi},
@@ -23,8 +22,7 @@ void attach_bench_cube(CLI::App& bench, CommandContext& ctx) {
   std::map<std::string, CholeskyBackend> backends{{"eigen", CholeskyBackend::kEigenSimplicial},
                                                   {"cholmod", CholeskyBackend::kCholmodSupernodal}};
   cube->add_option("--tets", args->tets, "approximate number of tetrahedra")->check(CLI::Range(6, 5000000));
-  cube->add_option("--model", args->model,
-                   "fem (linear FEM), mtm (mass tensor), msm (mass-spring), nfem (non-linear FEM)")
+  cube->add_option("--model", args->model, model_choices())
       ->required()
       ->transform(CLI::CheckedTransformer(models, CLI::ignore_case));
   cube->add_option("--split", args->split, "tets per hexahedron: 5 or 6")->transform(CLI::CheckedTransformer(splits));

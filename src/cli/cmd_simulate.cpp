@@ -102,9 +102,8 @@ void attach_simulate(CLI::App& app, CommandContext& ctx) {
   app.add_option("--plan", options->plan_file, "plan JSON (maxillo plan); its osteotomies and segment moves are used");
   app.add_option("--advance", options->advance_mm, "instead of a plan: Le Fort I advancement of the maxilla, mm")
       ->check(kAdvancementMm);
-  app.add_option("--model", options->model,
-                 "mtm (mass tensor), fem (linear FEM), msm (mass-spring) or nfem (non-linear FEM)")
-      ->check(CLI::IsMember({"mtm", "fem", "msm", "nfem"}))
+  app.add_option("--model", options->model, softtissue::model_choices())
+      ->check(CLI::IsMember(softtissue::model_names()))
       ->capture_default_str();
   app.add_option("--poisson", options->poisson, "Poisson ratio of the soft tissue")
       ->check(CLI::Range(0.3, 0.499))

@@ -79,8 +79,8 @@ void attach_validate(CLI::App& app, CommandContext& ctx) {
   app.add_option("CASE", o->case_text, "case id, or a Patient ID (its default case)")->required();
   app.add_option("--out", o->out, "output folder: error maps, profile, skins with distances, validation.json")
       ->capture_default_str();
-  app.add_option("--model", o->model, "soft tissue model of the prediction: mtm, fem, msm or nfem")
-      ->check(CLI::IsMember({"mtm", "fem", "msm", "nfem"}))
+  app.add_option("--model", o->model, "soft tissue model of the prediction: " + softtissue::model_choices())
+      ->check(CLI::IsMember(softtissue::model_names()))
       ->capture_default_str();
   app.add_flag("--no-correspondence", o->no_correspondence,
                "skip the corresponding-point distance (non-rigid registration)");

@@ -106,7 +106,7 @@ TEST(IndexBenchmark, TimesEveryQueryAndGivesTheNightlyScanItsFolder) {
 
 TEST(CubeBenchmark, MassTensorFiguresAndItsThresholdTable) {
   CubeBenchOptions options;
-  options.tets = 400, options.model = CubeModel::kMtm, options.runs = 1;
+  options.tets = 400, options.model = softtissue::SoftTissueModel::kMassTensor, options.runs = 1;
   const Json figures = run_cube_benchmark(options);
   EXPECT_EQ(figures["model"], "mtm");
   EXPECT_EQ(figures["model_result"]["threshold_table"].size(), 5u);
