@@ -206,8 +206,9 @@ ConsultationResult write_consultation_report(Archive& archive, int64_t case_id, 
   model.sections.push_back(
       summary_section(contents, series, surfaces, landmark_summary(stored_landmarks, detection_failure), orientation));
   model.sections.push_back(views_section(views));
-  if (auto landmarks_page = sections::landmark_section(
-          stored_landmarks, records::newest_automatic_landmarks(archive, case_id), landmark_pictures))
+  if (auto landmarks_page =
+          sections::landmark_section(stored_landmarks, records::newest_automatic_landmarks(archive, case_id),
+                                     landmark_pictures, records::newest_reference_landmarks(archive, case_id)))
     model.sections.push_back(std::move(*landmarks_page));
   model.sections.push_back(sections::case_cephalometry_section(archive, case_id, sex_for_norms(contents.patient.sex)));
   if (auto plan_result = records::latest_plan_result(archive, case_id))

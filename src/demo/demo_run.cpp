@@ -106,8 +106,9 @@ Json run_demo(const DemoOptions& options) {
   const auto archive_dir = options.archive_dir.empty() ? options.out / "archive" : options.archive_dir;
   net::StorageServerCounts received;
   casework::OcclusionRun occlusion;
-  // Beside them too, the landmarks found on the CT without hands (issue 28), to be stored beside
-  // the phantom's known ones and compared with them in the report.
+  // Beside them too, the landmarks found on the CT without hands (issue 28): the case works with
+  // them as with a patient's, and the phantom's known ones are kept beside them as the truth the
+  // report measures them against.
   std::optional<landmarking::LandmarkDetection> detected;
   run_concurrently({[&] { received = push_over_dicom(files_in(sample.ct_folder), "DEMO-CT", "MAXILLO", archive_dir); },
                     [&] { occlusion = compute_phantom_occlusion(options.skeletal_class); },
@@ -119,14 +120,16 @@ Json run_demo(const DemoOptions& options) {
   clock.mark("receive over DICOM, occlusion and landmark detection beside it");
 
   auto case_id = archive.resolve_case(casework::kPhantomPatientId);
-  // Dated follow-up (the sample cohort's first patient) for the follow-up table and Wits chart;
-  // attached first so the phantom's own set stays the newest (it frames the views).
+  // Dated follow-up (the sample cohort's first patient) for the follow-up table and Wits chart.
+  // Those are phantoms' known landmarks, stored as references like the phantom's own: the case
+  // works with the detected set, as a patient's would (records::preferred_landmarks).
   records::CohortImportReport follow_up;
-  records::attach_cohort_time_points(archive, case_id,
-                                     followup::sample_patient_follow_up(followup::sample_cohort_patients()[0], 2001),
-                                     {}, "sample cohort P01 (phantoms)", follow_up);
+  records::attach_cohort_time_points(
+      archive, case_id, followup::sample_patient_follow_up(followup::sample_cohort_patients()[0], 2001), {},
+      "sample cohort P01 (phantoms)", follow_up, records::LandmarkOrigin::kReference);
   records::attach_automatic_landmarks(archive, case_id, detected->present(), casework::automatic_facts(*detected));
-  records::attach_landmarks(archive, case_id, sample.landmarks, "phantom (analytic)");
+  records::attach_landmarks(archive, case_id, sample.landmarks, "phantom (analytic)", {}, {},
+                            records::LandmarkOrigin::kReference);
   archive_phantom_occlusion(archive, case_id, std::move(occlusion), sample.landmarks, options.out / "occlusion");
   clock.mark("occlusion written and archived");
   // The issue #4 must-show plan: two trans-sinusal distractors, 10 mm advancement, 6 mm widening.

@@ -59,6 +59,7 @@ StoredLandmarks read_landmark_record(const ArtefactRecord& record) {
       r.fail("date", "must be YYYY-MM-DD or empty");
   }
   stored.created_at = record.created_at;
+  stored.reference = r.has("reference") && r.at("reference") == Json(true);
   if (r.has("automatic")) {
     JsonReader a = r.object("automatic");
     AutomaticFacts facts;
@@ -74,14 +75,16 @@ StoredLandmarks read_landmark_record(const ArtefactRecord& record) {
   return stored;
 }
 
-// The newest landmark artefact given by hand, else the newest automatic one.
+// The newest landmark artefact given by hand, else the newest automatic one; never a reference.
 const ArtefactRecord* preferred_record(const std::vector<ArtefactRecord>& artefacts) {
   const ArtefactRecord* by_hand = nullptr;
   const ArtefactRecord* automatic = nullptr;
   for (const auto& record : artefacts) {
     if (record.kind != kLandmarksKind) continue;
     const Json parameters = Json::parse(record.parameters_json, nullptr, /*allow_exceptions=*/false);
-    const bool detected = parameters.is_object() && parameters.contains("automatic");
+    const bool is_object = parameters.is_object();
+    if (is_object && parameters.value("reference", false)) continue;
+    const bool detected = is_object && parameters.contains("automatic");
     const ArtefactRecord*& newest = detected ? automatic : by_hand;
     if (!newest || record.id > newest->id) newest = &record;
   }
@@ -108,19 +111,26 @@ void attach_landmarks(Archive& archive, int64_t case_id, const LandmarkSet& land
 }
 
 void attach_landmarks(Archive& archive, int64_t case_id, const LandmarkSet& landmarks, const std::string& source,
-                      const TimePoint& time_point, const LandmarkFrame& frame) {
+                      const TimePoint& time_point, const LandmarkFrame& frame, LandmarkOrigin origin) {
   if (!time_point.date.empty() && !is_iso_date(time_point.date))
     throw Error(ErrorCode::kBadValue, time_point.date, "date must be YYYY-MM-DD");
   auto text = format_landmarks(landmarks, LandmarkFormat::kSlicerMarkupsJson);
   auto sha = archive.store_object(text);
   Json parameters{{"source", source}, {"count", landmarks.size()}, {"frame", frame_json(frame)}};
+  if (origin == LandmarkOrigin::kReference) parameters["reference"] = true;
+  // The derivation key: the points, and the time point and the origin when they say more (a
+  // reference set is not the same artefact as a given one with the same points).
   std::string inputs = sha;
-  if (!time_point.label.empty() || !time_point.date.empty()) {
-    parameters["time_point"] = time_point.label;
-    parameters["date"] = time_point.date;
+  const bool for_a_time_point = !time_point.label.empty() || !time_point.date.empty();
+  if (for_a_time_point || origin == LandmarkOrigin::kReference) {
     Sha256 hash;
     hash.update(sha);
-    hash.update("\n" + time_point.label + "\n" + time_point.date);
+    if (for_a_time_point) {
+      parameters["time_point"] = time_point.label;
+      parameters["date"] = time_point.date;
+      hash.update("\n" + time_point.label + "\n" + time_point.date);
+    }
+    if (origin == LandmarkOrigin::kReference) hash.update("\nreference");
     inputs = hash.hex_digest();
   }
   archive.add_artefact(NewArtefact{case_id, kLandmarksKind, sha, "application/json", inputs, parameters.dump()});
@@ -149,6 +159,14 @@ std::optional<StoredLandmarks> newest_automatic_landmarks(const Archive& archive
   std::optional<StoredLandmarks> newest;
   for (auto& stored : landmark_history(archive, case_id))
     if (stored.automatic) newest = std::move(stored);
+  return newest;
+}
+
+std::optional<StoredLandmarks> newest_reference_landmarks(const Archive& archive, int64_t case_id) {
+  std::optional<StoredLandmarks> newest;
+  for (auto& stored : landmark_history(archive, case_id))
+    if (stored.reference && stored.time_point.label.empty() && stored.time_point.date.empty())
+      newest = std::move(stored);
   return newest;
 }
 

@@ -31,14 +31,20 @@ struct LandmarkFrame {
   CephalogramAxes axes;  // used when geometry is kCephalogram
 };
 
+// Where a stored set's points come from, besides the automatic detection: given (a file, `ceph
+// add`: a person's reading) or a reference (a truth known by construction, such as a phantom's
+// design, kept to measure a detection against and never worked with).
+enum class LandmarkOrigin { kGiven, kReference };
+
 // Stores the set and records it as a "landmarks" artefact of the case; `source` says where the
 // points came from (a file name, "phantom (analytic)", ...).
 void attach_landmarks(Archive& archive, int64_t case_id, const LandmarkSet& landmarks, const std::string& source);
 // The same for a time point. Error(kBadValue, date) when the date is not "YYYY-MM-DD" or empty.
 void attach_landmarks(Archive& archive, int64_t case_id, const LandmarkSet& landmarks, const std::string& source,
-                      const TimePoint& time_point, const LandmarkFrame& frame = {});
+                      const TimePoint& time_point, const LandmarkFrame& frame = {},
+                      LandmarkOrigin origin = LandmarkOrigin::kGiven);
 
-// The landmarks of preferred_landmarks (by hand before automatic); empty when there are none.
+// The landmarks of preferred_landmarks; empty when there are none.
 LandmarkSet latest_landmarks(const Archive& archive, int64_t case_id);
 // The same, among the case's artefacts already read (archive.artefacts(case_id)).
 LandmarkSet latest_landmarks(const Archive& archive, const std::vector<ArtefactRecord>& artefacts);
@@ -62,6 +68,7 @@ struct StoredLandmarks {
   int version = 1;  // 1 = first set stored for this time point, 2 = its first revision, ...
   LandmarkSet landmarks;
   std::optional<AutomaticFacts> automatic;  // set for a detected set, empty for one given by hand
+  bool reference = false;                   // a known truth kept to measure against (never worked with)
 };
 
 // Stores a detected set (its present landmarks) with the facts of its detection; its source is
@@ -70,8 +77,13 @@ void attach_automatic_landmarks(Archive& archive, int64_t case_id, const Landmar
                                 const AutomaticFacts& facts);
 
 // The set a case works with: the newest set given by hand (a file, `ceph add`), which always
-// takes precedence, else the newest automatic set; nullopt when the case has none.
+// takes precedence, else the newest automatic set; reference sets are never chosen. nullopt when
+// the case has none.
 std::optional<StoredLandmarks> preferred_landmarks(const Archive& archive, int64_t case_id);
+
+// The newest reference set of the case's CT (LandmarkOrigin::kReference, no time point), nullopt
+// when it has none.
+std::optional<StoredLandmarks> newest_reference_landmarks(const Archive& archive, int64_t case_id);
 
 // The newest automatic set of the case (whether or not a set given by hand takes precedence).
 std::optional<StoredLandmarks> newest_automatic_landmarks(const Archive& archive, int64_t case_id);

@@ -73,7 +73,8 @@ CohortImportReport import_cohort(Archive& archive, const std::vector<ceph::Cohor
 }
 
 void attach_cohort_time_points(Archive& archive, int64_t case_id, const ceph::CohortCase& cohort_case,
-                               const LandmarkFrame& frame, const std::string& source, CohortImportReport& report) {
+                               const LandmarkFrame& frame, const std::string& source, CohortImportReport& report,
+                               LandmarkOrigin origin) {
   const auto stored = landmark_time_points(archive, case_id);
   for (const auto& tp : cohort_case.time_points) {
     const LandmarkFrame set_frame = resolved(frame, tp.landmarks);
@@ -81,7 +82,7 @@ void attach_cohort_time_points(Archive& archive, int64_t case_id, const ceph::Co
       ++report.sets_unchanged;
       continue;
     }
-    attach_landmarks(archive, case_id, tp.landmarks, source, {tp.label, tp.date}, set_frame);
+    attach_landmarks(archive, case_id, tp.landmarks, source, {tp.label, tp.date}, set_frame, origin);
     ++report.sets_stored;
   }
   ++report.cases;

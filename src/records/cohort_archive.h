@@ -29,9 +29,11 @@ CohortImportReport import_cohort(Archive& archive, const std::vector<ceph::Cohor
                                  const std::string& cohort_name, const LandmarkFrame& frame, const std::string& source);
 
 // Attaches one cohort case's time points to an existing case (e.g. a scanned patient's own
-// case), skipping those already archived as they are; counts into `report`.
+// case), skipping those already archived as they are; counts into `report`. `origin`: kReference
+// for a phantom cohort's known landmarks (the case's CT then never works with them).
 void attach_cohort_time_points(Archive& archive, int64_t case_id, const ceph::CohortCase& cohort_case,
-                               const LandmarkFrame& frame, const std::string& source, CohortImportReport& report);
+                               const LandmarkFrame& frame, const std::string& source, CohortImportReport& report,
+                               LandmarkOrigin origin = LandmarkOrigin::kGiven);
 
 // The cohort's cases in import order, named by Patient ID, each time point's newest set (by date).
 // Error(kNotFound, name) when the archive holds no case of this cohort.

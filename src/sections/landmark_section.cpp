@@ -72,7 +72,8 @@ void add_pictures(report::Section& section, const records::StoredLandmarks& stor
 
 std::optional<report::Section> landmark_section(const std::optional<records::StoredLandmarks>& stored,
                                                 const std::optional<records::StoredLandmarks>& automatic_beside,
-                                                const std::vector<casework::LandmarkView>& pictures) {
+                                                const std::vector<casework::LandmarkView>& pictures,
+                                                const std::optional<records::StoredLandmarks>& reference) {
   if (!stored || stored->landmarks.empty()) return std::nullopt;
   report::Section section{"landmarks", {}};
   if (stored->automatic) {
@@ -94,6 +95,16 @@ std::optional<report::Section> landmark_section(const std::optional<records::Sto
     section.blocks.push_back(report::Paragraph{
         "The landmarks were also found automatically on the CT (" + automatic_beside->automatic->method +
         "); the given set keeps precedence. Mean distance of the automatic landmarks from the given ones: " +
+        report::fixed(mean, 2) + " mm."});
+    section.blocks.push_back(std::move(comparison));
+  }
+  if (stored->automatic && reference) {
+    double mean = 0;
+    report::Table comparison = comparison_table(*reference, *stored, mean);
+    section.blocks.push_back(report::Subheading{"Automatic detection against the known landmarks"});
+    section.blocks.push_back(report::Paragraph{
+        "The true places of these landmarks are known (" + reference->source +
+        "); the case works with the automatic ones. Mean distance of the automatic landmarks from the true places: " +
         report::fixed(mean, 2) + " mm."});
     section.blocks.push_back(std::move(comparison));
   }

@@ -3,7 +3,9 @@
 // surgeon can check them at a glance: label, position (LPS mm), where it came from (a file or
 // the automatic detection), the detection's confidence and status (flagged ones with their
 // failed checks; absent ones with the reason); and, when an automatic set was stored beside a set
-// given by hand, how far each automatic landmark lies from the given one. With the pictures of
+// given by hand, how far each automatic landmark lies from the given one; when the case works
+// with an automatic set and a reference set is known (a phantom's design), how far each lies
+// from its true place. With the pictures of
 // casework/landmark_views.h the section opens with the landmarks drawn on bone and skin.
 #include <optional>
 #include <vector>
@@ -18,8 +20,11 @@ namespace maxillo::sections {
 // `automatic_beside`: an automatic set stored beside a set given by hand (which the case uses):
 // the distance of each of its landmarks from the given one is shown after the table.
 // `pictures`: the set drawn on bone and skin (casework::landmark_views), shown first.
+// `reference`: a set known to be true (records::attach_reference_landmarks); when the case works
+// with an automatic set, the distance of each of its landmarks from the true place is shown.
 std::optional<report::Section> landmark_section(const std::optional<records::StoredLandmarks>& stored,
                                                 const std::optional<records::StoredLandmarks>& automatic_beside = {},
-                                                const std::vector<casework::LandmarkView>& pictures = {});
+                                                const std::vector<casework::LandmarkView>& pictures = {},
+                                                const std::optional<records::StoredLandmarks>& reference = {});
 
 }  // namespace maxillo::sections

@@ -1,15 +1,13 @@
 // Landmark sets of a case (records/case_landmarks.h), issue 28: an automatic set keeps its
-// detection's facts through the archive, and a set given by hand always takes precedence over
-// an automatic one, whichever was stored first.
+// detection's facts through the archive, a set given by hand always takes precedence over an
+// automatic one, whichever was stored first, and a reference set is never worked with.
 #include <gtest/gtest.h>
 
-#include "archive_fixture.h"
+#include "support/archived_case.h"
 #include "records/case_landmarks.h"
 
 namespace maxillo::records {
 namespace {
-
-using testing::TemporaryFolder;
 
 AutomaticFacts facts() {
   AutomaticFacts f;
@@ -21,11 +19,9 @@ AutomaticFacts facts() {
 }
 
 TEST(CaseLandmarks, AHandPlacedSetTakesPrecedenceOverAnAutomaticOne) {
-  TemporaryFolder folder;
-  testing::write_series(folder / "in", 2, "P1");
-  Archive archive = Archive::open(testing::archive_at(folder / "archive"), OpenMode::CreateIfMissing);
-  archive.import_paths({folder / "in"}, testing::quiet());
-  const int64_t case_id = archive.resolve_case("P1");
+  testing::ArchivedCase c;
+  Archive& archive = c.archive;
+  const int64_t case_id = c.case_id;
   EXPECT_FALSE(preferred_landmarks(archive, case_id));
 
   const LandmarkSet automatic = {{"S", {0, 0, 20}}, {"OrL", {33, -57, 0}}};
@@ -48,6 +44,39 @@ TEST(CaseLandmarks, AHandPlacedSetTakesPrecedenceOverAnAutomaticOne) {
   attach_automatic_landmarks(archive, case_id, automatic, facts());
   EXPECT_EQ(latest_landmarks(archive, case_id).size(), 3u);
   EXPECT_EQ(landmark_history(archive, case_id).size(), 3u);
+}
+
+// A reference set (a phantom's known landmarks) is kept to measure a detection against: the case
+// never works with it, whether it is the CT's or a time point's.
+TEST(CaseLandmarks, AReferenceSetIsNeverTheOneTheCaseWorksWith) {
+  testing::ArchivedCase c;
+  Archive& archive = c.archive;
+  const int64_t case_id = c.case_id;
+
+  const LandmarkSet truth = {{"S", {0, 0, 19}}};
+  attach_landmarks(archive, case_id, truth, "phantom (analytic)", {}, {}, LandmarkOrigin::kReference);
+  attach_landmarks(archive, case_id, {{"S", {0, 0, 21}}}, "cohort", {"6M", "2002-01-10"}, {},
+                   LandmarkOrigin::kReference);
+  EXPECT_FALSE(preferred_landmarks(archive, case_id));
+  EXPECT_EQ(landmark_time_points(archive, case_id).size(), 1u);  // the follow-up still reads it
+
+  attach_automatic_landmarks(archive, case_id, {{"S", {0, 0, 20}}, {"OrL", {33, -57, 0}}}, facts());
+  auto preferred = preferred_landmarks(archive, case_id);
+  ASSERT_TRUE(preferred && preferred->automatic);
+  EXPECT_FALSE(preferred->reference);
+  auto reference = newest_reference_landmarks(archive, case_id);
+  ASSERT_TRUE(reference);  // the CT's, not the time point's
+  EXPECT_TRUE(reference->reference);
+  EXPECT_EQ(reference->source, "phantom (analytic)");
+  EXPECT_DOUBLE_EQ(reference->landmarks.at(0).position.z(), 19);
+
+  // The same points given by hand are another artefact, and the one the case works with.
+  attach_landmarks(archive, case_id, truth, "hand.csv");
+  preferred = preferred_landmarks(archive, case_id);
+  ASSERT_TRUE(preferred);
+  EXPECT_EQ(preferred->source, "hand.csv");
+  EXPECT_FALSE(preferred->reference);
+  EXPECT_EQ(landmark_history(archive, case_id).size(), 4u);
 }
 
 }  // namespace
