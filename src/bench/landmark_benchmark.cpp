@@ -29,6 +29,15 @@ std::string patient_id(const LandmarkBenchOptions& options, int index) {
   return options.id_prefix + number;
 }
 
+// Why a landmark was flagged: the names of its failed checks ("second start", "mirror", ...), or
+// its weak evidence.
+std::string flag_reasons(const landmarking::DetectedLandmark& l) {
+  std::string reasons;
+  for (const auto& c : l.checks)
+    if (!c.passed) reasons += (reasons.empty() ? "" : ", ") + c.name;
+  return reasons.empty() ? "weak evidence" : reasons;
+}
+
 ScanRun run_one(const LandmarkBenchOptions& options, int index) {
   ScanRun run;
   run.patient_id = patient_id(options, index);
@@ -52,6 +61,7 @@ ScanRun run_one(const LandmarkBenchOptions& options, int index) {
       LandmarkOutcome& outcome = run.landmarks[l.label];
       outcome.detected = l.position.has_value();
       outcome.flagged = l.flagged();
+      if (outcome.flagged) outcome.flagged_for = flag_reasons(l);
       if (outcome.detected && outcome.has_truth)
         outcome.error_mm = (*l.position - *find_landmark(phantom.landmarks, l.label)).norm();
     }
@@ -94,17 +104,20 @@ double share_within(const std::vector<double>& values, double limit) {
   return values.empty() ? 0 : double(within) / double(values.size());
 }
 
-// "    over 2 mm: B 27.1, Pog 21.6; missed: U1" (nothing when every landmark is within 2 mm).
+// "    over 2 mm: B 27.1, Pog 21.6" / "    missed: U1" / "    flagged: L1 (second start)" lines
+// (each left out when empty; articulare, always flagged, is not listed among the flagged).
 std::string worst_and_missed(const ScanRun& run) {
-  std::string over, missed;
+  std::string over, missed, flagged;
   for (const auto& [label, o] : run.landmarks) {
     if (o.has_truth && o.detected && o.error_mm > 2) over += formatted(" %s %.1f", label.c_str(), o.error_mm);
     if (o.has_truth && !o.detected) missed += " " + label;
     if (!o.has_truth && o.detected) missed += " (" + label + " invented)";
+    if (o.flagged && !label.starts_with("Ar")) flagged += " " + label + " (" + o.flagged_for + ")";
   }
   std::string text;
   if (!over.empty()) text += "    over 2 mm:" + over + "\n";
   if (!missed.empty()) text += "    missed:" + missed + "\n";
+  if (!flagged.empty()) text += "    flagged:" + flagged + "\n";
   return text;
 }
 

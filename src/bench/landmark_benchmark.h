@@ -32,7 +32,8 @@ struct LandmarkBenchOptions {
 // One landmark of one scan.
 struct LandmarkOutcome {
   bool has_truth = false, detected = false, flagged = false;
-  double error_mm = 0;  // when both
+  double error_mm = 0;      // when both
+  std::string flagged_for;  // the failed checks' names, or "weak evidence"
 };
 
 struct ScanRun {

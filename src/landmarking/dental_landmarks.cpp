@@ -16,14 +16,17 @@ constexpr double kCrownHu = 2000;    // enamel: above any bone
 constexpr double kSurfaceHu = 1400;  // halfway between enamel and the soft tissue or air around it
 constexpr double kMolarMinLengthMm = 8.5;
 constexpr double kMolarMaxLengthMm = 12.5;  // longer: two teeth whose contact did not show
-constexpr double kMolarSearchMm = 6;        // how far a first molar's cusp may lie from the template's
+// How far a first molar's cusp may lie from the template's: a varied phantom's lower molar lay
+// 4.4 mm from it, and the second start (landmark_checks.h) moves the template 2 mm more; the
+// canine lies 10 mm and more in front of the first molar, the second molar as far behind.
+constexpr double kMolarSearchMm = 8;
 
 // Crown voxels of a box beside the arch on one side, counted per height and per position along
 // y (the posterior teeth stand nearly in a line along y).
 class DentalBox {
  public:
-  DentalBox(const HeadVolume& v, const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) : lo_(lo) {
-    for (int a = 0; a < 3; ++a) n_[a] = int((hi[a] - lo[a]) / kStep) + 1;
+  DentalBox(const HeadVolume& v, const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) : lo_(grid_corner(lo, kStep)) {
+    for (int a = 0; a < 3; ++a) n_[a] = int((hi[a] - lo_[a]) / kStep) + 1;
     crown_.resize(size_t(n_[0]) * n_[1] * n_[2]);
     for (int k = 0; k < n_[2]; ++k)
       for (int j = 0; j < n_[1]; ++j)

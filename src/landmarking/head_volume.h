@@ -16,6 +16,13 @@ struct FrameBox {
   Eigen::Vector3d lo, hi;
 };
 
+// The corner of a rule's sampling grid of `step_mm`, moved down to the nearest multiple of the
+// step in the head frame: the grids of two windows that overlap (a rule run from a second start,
+// landmark_checks.h) then sample the same points and see the same outline.
+inline Eigen::Vector3d grid_corner(const Eigen::Vector3d& lo, double step_mm) {
+  return (lo / step_mm).array().floor().matrix() * step_mm;
+}
+
 class HeadVolume {
  public:
   // `ct` read through `grey` (its values as HU), sampled with trilinear interpolation on a grid

@@ -107,6 +107,14 @@ void adult_ranges(Checker& c) {
 
 }  // namespace
 
+CheckOutcome second_start_check(const Eigen::Vector3d& first, const std::optional<Eigen::Vector3d>& again) {
+  if (!again) return {"second start", false, "not found again from a second start"};
+  const double distance = (*again - first).norm();
+  return {
+      "second start", distance <= kSecondStartToleranceMm,
+      figure("found %.1f mm away from a second start", distance) + figure(" (limit %.1f mm)", kSecondStartToleranceMm)};
+}
+
 std::map<std::string, std::vector<CheckOutcome>> check_landmarks(const FramePoints& points, double scale) {
   Checker c(points, scale);
   for (const char* pair : {"Or", "Po", "Go", "Ar", "U6", "L6"}) c.mirror(pair);

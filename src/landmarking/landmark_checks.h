@@ -5,8 +5,8 @@
 //     Pog, A below ANS, Or in front of Po, the soft-tissue points in front of their bone);
 //   - distances and angles within published adult ranges, widened (S-N, ANS-Me, ANS-PNS, SNA,
 //     SNB, the gonial angle);
-//   - the same point found again from a second start (the rule run from a window shifted by a
-//     few millimetres): it must come back within 1 mm.
+//   - the same point found again from a second start (every rule run again with its search
+//     window placed 4 % farther from sella): it must come back within 1.5 mm.
 // A landmark that fails a check is flagged: not used for planning unless a person confirms it.
 #include <map>
 #include <optional>
@@ -28,5 +28,12 @@ using FramePoints = std::map<std::string, Eigen::Vector3d>;
 
 // The checks of each label (only the checks whose points are present are run).
 std::map<std::string, std::vector<CheckOutcome>> check_landmarks(const FramePoints& points, double scale);
+
+// How far a second start may find a point from the first: a rule whose answer depends on where
+// its window starts by more than this has found no definite point.
+inline constexpr double kSecondStartToleranceMm = 1.5;
+// The second start's check of a point found at `first`: `again` is where the second start found
+// it (nullopt: not found again).
+CheckOutcome second_start_check(const Eigen::Vector3d& first, const std::optional<Eigen::Vector3d>& again);
 
 }  // namespace maxillo::landmarking

@@ -17,8 +17,8 @@ constexpr double kConnectedBoneHu = 700;
 // The ramus region's bone connected to the seed, as a 3D grid and its side view.
 class RamusView {
  public:
-  RamusView(const HeadVolume& v, const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) : lo_(lo) {
-    for (int a = 0; a < 3; ++a) n_[a] = int((hi[a] - lo[a]) / kStep) + 1;
+  RamusView(const HeadVolume& v, const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) : lo_(grid_corner(lo, kStep)) {
+    for (int a = 0; a < 3; ++a) n_[a] = int((hi[a] - lo_[a]) / kStep) + 1;
     bone_.resize(size_t(n_[0]) * n_[1] * n_[2]);
     for (int k = 0; k < n_[2]; ++k)
       for (int j = 0; j < n_[1]; ++j)
@@ -267,8 +267,15 @@ void find_ramus_landmarks(const HeadVolume& v, double scale, int side, Findings&
     found["Go" + suffix] = RuleFinding::absent("no outline near the angle's vertex");
     return;
   }
-  const auto go_x = ramus.middle_x(go2->x() + 0.5 * outward.x(), go2->y() + 0.5);
-  found["Go" + suffix] = RuleFinding::found({go_x.value_or(go.x()), go2->x(), go2->y()}, 1);
+  // Across the ramus: the middle of the bone at the outline point, or just inside it.
+  std::optional<double> go_x;
+  for (double inside : {0.0, 0.5, 1.0})
+    if (!go_x) go_x = ramus.middle_x(go2->x() - inside * outward.x(), go2->y() - inside * outward.y());
+  if (!go_x) {
+    found["Go" + suffix] = RuleFinding::absent("no bone across the angle at its outline");
+    return;
+  }
+  found["Go" + suffix] = RuleFinding::found({*go_x, go2->x(), go2->y()}, 1);
 }
 
 }  // namespace maxillo::landmarking

@@ -1,8 +1,11 @@
 // The checks of a detected landmark set: the template head passes every one; each kind of
-// fault (a lopsided pair, an order the anatomy forbids, a size outside adult ranges) fails the
-// check that names it, on the landmarks concerned.
+// fault (a lopsided pair, an order the anatomy forbids, a size outside adult ranges, a point found
+// elsewhere from a second start) fails the check that names it, on the landmarks concerned.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
+#include "landmarking/head_volume.h"
 #include "landmarking/landmark_checks.h"
 #include "landmarking/landmark_template.h"
 
@@ -71,6 +74,32 @@ TEST(LandmarkChecks, AClassThreeBiteMayHaveTheLowerIncisorInFront) {
   points["Pog"].y() -= 8;
   points["PogS"].y() -= 8;
   EXPECT_TRUE(failed(check_landmarks(points, 1.0), "U1").empty());
+}
+
+// The second start: a point found again within the limit passes, one farther away or not found
+// again fails, saying how far.
+TEST(LandmarkChecks, APointFoundElsewhereFromASecondStartFails) {
+  const Eigen::Vector3d first(10, -60, -20);
+  EXPECT_TRUE(second_start_check(first, first + Eigen::Vector3d(0.9, 0, 1.1)).passed);     // 1.42 mm
+  EXPECT_FALSE(second_start_check(first, first + Eigen::Vector3d(0, 1.28, 0.96)).passed);  // 1.6 mm
+  const CheckOutcome lost = second_start_check(first, first + Eigen::Vector3d(0, 0, 4));
+  EXPECT_FALSE(lost.passed);
+  EXPECT_EQ(lost.name, "second start");
+  EXPECT_NE(lost.detail.find("4.0 mm"), std::string::npos) << lost.detail;
+  EXPECT_FALSE(second_start_check(first, std::nullopt).passed);
+}
+
+// The rules' sampling grids start on multiples of their step, wherever their window does.
+TEST(LandmarkChecks, TwoOverlappingWindowsShareTheirGridNodes) {
+  const double step = 0.5;
+  const Eigen::Vector3d lo(-16.3, 7.9, -72.26);
+  const Eigen::Vector3d a = grid_corner(lo, step), b = grid_corner({-14.1, 5.2, -70.0}, step);
+  EXPECT_TRUE(a.isApprox(Eigen::Vector3d(-16.5, 7.5, -72.5)));
+  for (int axis = 0; axis < 3; ++axis) {
+    EXPECT_LE(a[axis], lo[axis]);
+    const double nodes_apart = (b[axis] - a[axis]) / step;
+    EXPECT_NEAR(nodes_apart, std::round(nodes_apart), 1e-9) << axis;
+  }
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 // points, moved with the head.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <Eigen/Geometry>
 #include <atomic>
 #include <cmath>
@@ -51,6 +53,11 @@ TEST(PhantomLandmarks, TheDefaultPhantomsLandmarksAreFoundNearTheirTruth) {
     ASSERT_TRUE(l.position) << l.label << ": " << l.note;
     // Articulare, read in 3D, is never confident (mandible_landmarks.h): flagged for a person.
     EXPECT_EQ(l.flagged(), l.label.starts_with("Ar")) << l.label;
+    // Every landmark was found again from a second start (landmark_checks.h), and passed.
+    const auto again =
+        std::find_if(l.checks.begin(), l.checks.end(), [](const CheckOutcome& c) { return c.name == "second start"; });
+    ASSERT_NE(again, l.checks.end()) << l.label;
+    EXPECT_TRUE(again->passed) << l.label << ": " << again->detail;
   }
   // Measured 2026-11-28 (1 mm phantom): mean 0.70 mm over the 27 confident landmarks; L1 (1.8)
   // the weakest. (Or was 2.6-2.8 mm until the phantom's orbital margin had its lowest point where
