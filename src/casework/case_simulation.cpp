@@ -226,8 +226,19 @@ Uncertainty prediction_uncertainty(const SoftTissuePrediction& base, const Trian
 SoftTissuePrediction predict_face(const SoftTissueInput& input, const SoftTissueOptions& options,
                                   const FaceModel* model,
                                   std::optional<records::SimulationSummary::ModelFallback>& fallback) {
+  // The face model is built once here when not given, so that a fallback solves the same mesh
+  // without meshing the face again; the prediction still reports the building's seconds.
+  std::optional<FaceModel> built;
+  if (!model) model = &built.emplace(build_face_model(*input.tissues, input.landmarks, options));
+  const auto with_building_time = [&](SoftTissuePrediction prediction) {
+    if (built) {
+      prediction.seconds.region = built->region_seconds;
+      prediction.seconds.meshing = built->meshing_seconds;
+    }
+    return prediction;
+  };
   try {
-    return predict_soft_tissue(input, options, model);
+    return with_building_time(predict_soft_tissue(input, options, model));
   } catch (const Error& e) {
     const bool nonlinear_failed = options.model == softtissue::SoftTissueModel::kNonlinearFem &&
                                   e.code() == ErrorCode::kProcessing && e.subject() == "non-linear FEM";
@@ -236,7 +247,7 @@ SoftTissuePrediction predict_face(const SoftTissueInput& input, const SoftTissue
     fallback = records::SimulationSummary::ModelFallback{std::string(model_name(options.model)), e.reason()};
     SoftTissueOptions linear = options;
     linear.model = softtissue::SoftTissueModel::kLinearFem;
-    return predict_soft_tissue(input, linear, model);
+    return with_building_time(predict_soft_tissue(input, linear, model));
   }
 }
 

@@ -59,7 +59,7 @@ struct SimulationResult {
 // head (a sliver turned inside out by the bone's move; docs/ARCHITECTURE.md); the linear FEM,
 // which solves the same equations for small strains, then predicts the face on the same model,
 // and `fallback` says which model was asked for and why it did not run. Every other failure is
-// thrown.
+// thrown. `model`: the case's face model, or null to build it here (once, for both solves).
 SoftTissuePrediction predict_face(const SoftTissueInput& input, const SoftTissueOptions& options,
                                   const FaceModel* model,
                                   std::optional<records::SimulationSummary::ModelFallback>& fallback);
