@@ -75,6 +75,14 @@ std::vector<std::byte>::iterator first_fragment(std::vector<std::byte>& bytes) {
   return at + 8 + table_length + 8;
 }
 
+// The file of a one-slice series of `folder`, compressed by `command` (a DCMTK tool and its
+// options) into `folder / name`.
+std::vector<std::byte> one_slice_compressed_by(const std::string& command, const TemporaryFolder& folder,
+                                               const std::string& name) {
+  const auto native = testing::write_series(folder / "native", 1, "P1").files.front();
+  return compressed_with(command, native, folder / name);
+}
+
 // `bytes` decoded as a slice must fail with a message containing `expected`.
 void expect_refused(const std::vector<std::byte>& bytes, const std::filesystem::path& file,
                     const std::string& expected) {
@@ -91,8 +99,7 @@ void expect_refused(const std::vector<std::byte>& bytes, const std::filesystem::
 TEST(CompressedSlices, AnRleSegmentOffsetBeyondItsFragmentIsRefused) {
   if (!testing::tool_available("dcmcrle")) GTEST_SKIP() << "dcmcrle is not installed (the dcmtk package)";
   TemporaryFolder folder;
-  const auto native = testing::write_series(folder / "native", 1, "P1").files.front();
-  auto bytes = compressed_with("dcmcrle", native, folder / "rle.dcm");
+  auto bytes = one_slice_compressed_by("dcmcrle", folder, "rle.dcm");
   const auto header = first_fragment(bytes);
   ASSERT_NE(header, bytes.end());
   uint32_t segments = 0;
@@ -109,8 +116,7 @@ TEST(CompressedSlices, AnRleSegmentOffsetBeyondItsFragmentIsRefused) {
 TEST(CompressedSlices, AJpegTemMarkerBeforeTheStartOfFrameIsRefused) {
   if (!testing::tool_available("dcmcjpeg")) GTEST_SKIP() << "dcmcjpeg is not installed (the dcmtk package)";
   TemporaryFolder folder;
-  const auto native = testing::write_series(folder / "native", 1, "P1").files.front();
-  auto bytes = compressed_with("dcmcjpeg +e1", native, folder / "jpeg.dcm");
+  auto bytes = one_slice_compressed_by("dcmcjpeg +e1", folder, "jpeg.dcm");
   const auto stream = first_fragment(bytes);
   ASSERT_NE(stream, bytes.end());
   ASSERT_EQ(stream[0], std::byte(0xff));  // the stream opens with its start of image, FFD8
