@@ -271,11 +271,18 @@ Eigen::Vector3d upper_incisal_edge_centre(const HeadVolume& v, const ProfilePoin
 }
 
 // The upper incisor's labial face read downwards until the profile jumps back to the lower
-// incisor (or ends): the last point before the jump.
+// incisor (or ends): the last point before the jump. A jump back by more than 1.2 mm, or, where
+// the point seen first moves sideways by more than kOtherToothSideMm at once (another tooth: the
+// lower incisors, or the lateral incisor at the slab's side), by more than kOtherToothStepMm: with
+// a small overjet the lower incisor's labial face stands barely a millimetre behind the edge (a
+// varied phantom's, 1.19 mm, was missed).
+constexpr double kOtherToothStepMm = 0.5, kOtherToothSideMm = 2.0;
 std::optional<ProfilePoint> upper_incisor_tip(const Profile& profile) {
   for (size_t i = 1; i < profile.size(); ++i) {
     const bool gap = std::abs(profile[i].z - profile[i - 1].z) > 0.6;
-    if (gap || profile[i].y - profile[i - 1].y > 1.2)
+    const double back = profile[i].y - profile[i - 1].y;
+    if (gap || back > 1.2 ||
+        (back > kOtherToothStepMm && std::abs(profile[i].x - profile[i - 1].x) > kOtherToothSideMm))
       return i >= 8 ? std::optional<ProfilePoint>(profile[i - 1]) : std::nullopt;
   }
   return std::nullopt;
