@@ -5,7 +5,7 @@
 //     Pog, A below ANS, Or in front of Po, the soft-tissue points in front of their bone);
 //   - distances and angles within published adult ranges, widened (S-N, ANS-Me, ANS-PNS, SNA,
 //     SNB, the gonial angle);
-//   - the same point found again from a second start (every rule run again with its search
+//   - the same point found again from a second start (every rule but sella's run again with its search
 //     window placed 4 % farther from sella): it must come back within 1.5 mm.
 // A landmark that fails a check is flagged: not used for planning unless a person confirms it.
 #include <map>

@@ -212,16 +212,20 @@ void leave_out_points_at_the_field_edge(const HeadVolume& head, Findings& found)
   }
 }
 
-// Every rule in the head volume at the fine spacing, its windows placed for a head of `scale`
-// (S-N / 70 mm); points where the field's edge cuts their surroundings are left out.
-Findings find_every_landmark(const HeadVolume& head, double scale) {
-  Findings found;
+// Sella, sought around the head frame's origin: its window does not depend on the head's size,
+// so a second start would find it again to the bit (it is not run twice).
+RuleFinding find_sella_in_frame(const HeadVolume& head) {
   if (auto s = find_sella(head, {{0, -14, -14}, {0, 14, 14}}))
-    found["S"] = RuleFinding::found(s->centre, evidence_between(1.5 - s->fit_rms_mm, 0, 1));
-  else
-    found["S"] =
-        RuleFinding::absent(head.scanned(Eigen::Vector3d::Zero()) ? "no sella turcica in the head frame"
-                                                                  : "the sella lies outside the scanned field");
+    return RuleFinding::found(s->centre, evidence_between(1.5 - s->fit_rms_mm, 0, 1));
+  return RuleFinding::absent(head.scanned(Eigen::Vector3d::Zero()) ? "no sella turcica in the head frame"
+                                                                   : "the sella lies outside the scanned field");
+}
+
+// Every rule but sella's in the head volume at the fine spacing, its windows placed for a head of
+// `scale` (S-N / 70 mm); points where the field's edge cuts their surroundings are left out.
+Findings find_every_landmark(const HeadVolume& head, double scale, const RuleFinding& sella) {
+  Findings found;
+  found["S"] = sella;
   found["N"] = find_nasion(head, expected_position("N", scale));
   for (int side : {-1, 1}) {
     const std::string suffix = side > 0 ? "L" : "R";
@@ -303,13 +307,15 @@ LandmarkDetection detect_landmarks(const Volume& scan, const std::string& subjec
   result.head_frame = frame;
   // Every landmark, read in the head volume at the fine spacing, and again from a second start.
   const HeadVolume head(ct, grey, frame, head_box(result.scale), options.fine_spacing_mm);
-  Findings found = find_every_landmark(head, result.scale);
-  const Findings again = find_every_landmark(head, result.scale * kSecondStartScale);
+  const RuleFinding sella = find_sella_in_frame(head);
+  Findings found = find_every_landmark(head, result.scale, sella);
+  const Findings again = find_every_landmark(head, result.scale * kSecondStartScale, sella);
   FramePoints points;
   for (const auto& [label, f] : found)
     if (f.position) points[label] = *f.position;
   auto checks = check_landmarks(points, result.scale);
   for (const auto& [label, point] : points) {
+    if (label == "S") continue;  // the same window from both starts
     const auto second = again.find(label);
     checks[label].push_back(second_start_check(point, second == again.end() ? std::nullopt : second->second.position));
   }

@@ -83,7 +83,7 @@ const ArtefactRecord* preferred_record(const std::vector<ArtefactRecord>& artefa
     if (record.kind != kLandmarksKind) continue;
     const Json parameters = Json::parse(record.parameters_json, nullptr, /*allow_exceptions=*/false);
     const bool is_object = parameters.is_object();
-    if (is_object && parameters.value("reference", false)) continue;
+    if (is_object && parameters.contains("reference") && parameters.at("reference") == Json(true)) continue;
     const bool detected = is_object && parameters.contains("automatic");
     const ArtefactRecord*& newest = detected ? automatic : by_hand;
     if (!newest || record.id > newest->id) newest = &record;

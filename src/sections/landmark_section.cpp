@@ -54,6 +54,18 @@ report::Table comparison_table(const records::StoredLandmarks& given, const reco
   return table;
 }
 
+// The automatic set measured against `against` (a given or a reference set): a heading, what
+// the comparison is (`mean_said`, followed by the mean distance) and the table.
+void add_comparison(report::Section& section, const records::StoredLandmarks& against,
+                    const records::StoredLandmarks& automatic, const std::string& heading,
+                    const std::string& mean_said) {
+  double mean = 0;
+  report::Table comparison = comparison_table(against, automatic, mean);
+  section.blocks.push_back(report::Subheading{heading});
+  section.blocks.push_back(report::Paragraph{mean_said + report::fixed(mean, 2) + " mm."});
+  section.blocks.push_back(std::move(comparison));
+}
+
 // The pictures two to a row (large enough to read the labels), with what the colours mean.
 void add_pictures(report::Section& section, const records::StoredLandmarks& stored,
                   const std::vector<casework::LandmarkView>& pictures) {
@@ -88,26 +100,16 @@ std::optional<report::Section> landmark_section(const std::optional<records::Sto
   add_pictures(section, *stored, pictures);
   section.blocks.push_back(landmark_table(*stored));
   section.blocks.push_back(report::Note{"Positions in the patient frame (LPS), millimetres."});
-  if (!stored->automatic && automatic_beside && automatic_beside->automatic) {
-    double mean = 0;
-    report::Table comparison = comparison_table(*stored, *automatic_beside, mean);
-    section.blocks.push_back(report::Subheading{"Automatic detection against these landmarks"});
-    section.blocks.push_back(report::Paragraph{
-        "The landmarks were also found automatically on the CT (" + automatic_beside->automatic->method +
-        "); the given set keeps precedence. Mean distance of the automatic landmarks from the given ones: " +
-        report::fixed(mean, 2) + " mm."});
-    section.blocks.push_back(std::move(comparison));
-  }
-  if (stored->automatic && reference) {
-    double mean = 0;
-    report::Table comparison = comparison_table(*reference, *stored, mean);
-    section.blocks.push_back(report::Subheading{"Automatic detection against the known landmarks"});
-    section.blocks.push_back(report::Paragraph{
-        "The true places of these landmarks are known (" + reference->source +
-        "); the case works with the automatic ones. Mean distance of the automatic landmarks from the true places: " +
-        report::fixed(mean, 2) + " mm."});
-    section.blocks.push_back(std::move(comparison));
-  }
+  if (!stored->automatic && automatic_beside && automatic_beside->automatic)
+    add_comparison(section, *stored, *automatic_beside, "Automatic detection against these landmarks",
+                   "The landmarks were also found automatically on the CT (" + automatic_beside->automatic->method +
+                       "); the given set keeps precedence. Mean distance of the automatic landmarks from the given "
+                       "ones: ");
+  if (stored->automatic && reference)
+    add_comparison(section, *reference, *stored, "Automatic detection against the known landmarks",
+                   "The true places of these landmarks are known (" + reference->source +
+                       "); the case works with the automatic ones. Mean distance of the automatic landmarks from "
+                       "the true places: ");
   return section;
 }
 

@@ -20,7 +20,7 @@ namespace maxillo::sections {
 // `automatic_beside`: an automatic set stored beside a set given by hand (which the case uses):
 // the distance of each of its landmarks from the given one is shown after the table.
 // `pictures`: the set drawn on bone and skin (casework::landmark_views), shown first.
-// `reference`: a set known to be true (records::attach_reference_landmarks); when the case works
+// `reference`: a set known to be true (records::LandmarkOrigin::kReference); when the case works
 // with an automatic set, the distance of each of its landmarks from the true place is shown.
 std::optional<report::Section> landmark_section(const std::optional<records::StoredLandmarks>& stored,
                                                 const std::optional<records::StoredLandmarks>& automatic_beside = {},

@@ -53,9 +53,14 @@ TEST(PhantomLandmarks, TheDefaultPhantomsLandmarksAreFoundNearTheirTruth) {
     ASSERT_TRUE(l.position) << l.label << ": " << l.note;
     // Articulare, read in 3D, is never confident (mandible_landmarks.h): flagged for a person.
     EXPECT_EQ(l.flagged(), l.label.starts_with("Ar")) << l.label;
-    // Every landmark was found again from a second start (landmark_checks.h), and passed.
+    // Every landmark was found again from a second start (landmark_checks.h), and passed; sella,
+    // whose window is the same from both starts, is not checked so.
     const auto again =
         std::find_if(l.checks.begin(), l.checks.end(), [](const CheckOutcome& c) { return c.name == "second start"; });
+    if (l.label == "S") {
+      EXPECT_EQ(again, l.checks.end());
+      continue;
+    }
     ASSERT_NE(again, l.checks.end()) << l.label;
     EXPECT_TRUE(again->passed) << l.label << ": " << again->detail;
   }
