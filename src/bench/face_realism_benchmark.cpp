@@ -85,6 +85,7 @@ SoftTissueOptions model_options(const FaceRealismOptions& variant, SoftTissueMod
   SoftTissueOptions options;
   options.model = model;
   options.attachment.outer_surface_only = variant.free_cavities;
+  options.attachment.moved_bone_contact = variant.bone_contact;
   options.nose_root = variant.nose_root;
   options.part_lips = variant.part_lips;
   options.nose_stiffness = variant.nose_stiffness;
@@ -111,6 +112,7 @@ Json run_model(const PreparedHead& head, const casework::FaceModel& face, double
     run["boundary_move_mm"] = prediction.boundary_move_mm;
     run["fixed_nodes"] = softtissue::count_nodes(prediction.bc, softtissue::NodeConstraint::kFixed);
     run["prescribed_nodes"] = softtissue::count_nodes(prediction.bc, softtissue::NodeConstraint::kPrescribed);
+    run["sliding_nodes"] = softtissue::count_nodes(prediction.bc, softtissue::NodeConstraint::kSliding);
   } catch (const Error& error) {
     run["seconds"] = seconds_since(start);
     run["error"] = error.what();
@@ -141,6 +143,7 @@ Json run_face_realism_benchmark(const FaceRealismOptions& options) {
   Json figures = {{"preparation_seconds", preparation_seconds},
                   {"landmarks_by_hand", head.by_hand},
                   {"free_cavities", options.free_cavities},
+                  {"bone_contact", softtissue::contact_name(options.bone_contact)},
                   {"nose_root", options.nose_root},
                   {"part_lips", options.part_lips},
                   {"lips_parted_faces", face.lips_parted.faces},
@@ -173,6 +176,7 @@ std::string face_realism_text(const Json& figures) {
       by_hand.empty() ? " none" : by_hand.c_str(), figures["preparation_seconds"].get<double>(),
       face["tets"].get<int>(), face["nodes"].get<int>(), face["cell_mm"].get<double>(), face["seconds"].get<double>());
   if (figures["free_cavities"].get<bool>()) text += "moved bone carries only the tissue on its outer surface\n";
+  text += "tissue on the moved bone: " + figures["bone_contact"].get<std::string>() + "\n";
   if (figures["nose_root"].get<bool>()) text += "the region goes on above the orbits in front of the eyes\n";
   if (figures["part_lips"].get<bool>())
     text += formatted("the model parted between the lips: %d faces\n", figures["lips_parted_faces"].get<int>());

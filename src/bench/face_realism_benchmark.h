@@ -10,6 +10,7 @@
 
 #include "casework/nasal_cartilage.h"
 #include "core/json.h"
+#include "softtissue/bone_attachment.h"
 
 namespace maxillo::bench {
 
@@ -19,16 +20,18 @@ struct FaceRealismOptions {
   bool nose_root = false;      // the region's second piece above the orbits (SoftTissueOptions::nose_root)
   bool part_lips = false;      // the model parted between the lips (SoftTissueOptions::part_lips)
   double nose_stiffness = casework::kNasalCartilageStiffness;  // SoftTissueOptions::nose_stiffness
+  // How tissue on the moved bone follows it (AttachmentOptions::moved_bone_contact).
+  softtissue::MovedBoneContact bone_contact = softtissue::AttachmentOptions{}.moved_bone_contact;
 };
 
 // Error(kFileNotFound) when the cadaver head is absent. Figures: preparation_seconds,
-// landmarks_by_hand, free_cavities, nose_root, part_lips, lips_parted_faces, nose_stiffness, nose_tets, face_model (tets, nodes, cell_mm, seconds), published (label,
+// landmarks_by_hand, free_cavities, bone_contact ("tied" or "sliding"), nose_root, part_lips, lips_parted_faces, nose_stiffness, nose_tets, face_model (tets, nodes, cell_mm, seconds), published (label,
 // published, source, plausible_low/high), advancements_mm, runs (advancement_mm, model, title,
 // seconds; error when it failed, else iterations, points: label, present, forward_mm, ratio,
 // plausible; gradient_p999, gradient_max, moved_edges; boundary_move_mm, the largest move within
 // 5 mm inside each region plane where it cuts tissue: below the orbits, under the chin, in front
 // of the ears, and with nose_root above the orbits, under the forehead's cut, in front of the eyes;
-// fixed_nodes, prescribed_nodes), peak_memory_mb.
+// fixed_nodes, prescribed_nodes, sliding_nodes), peak_memory_mb.
 Json run_face_realism_benchmark(const FaceRealismOptions& options);
 
 std::string face_realism_text(const Json& figures);

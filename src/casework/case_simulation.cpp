@@ -102,6 +102,8 @@ records::SimulationSummary summarise(const SimulationResult& result, const Simul
   summary.prescribed_nodes = softtissue::count_nodes(p.bc, softtissue::NodeConstraint::kPrescribed);
   summary.fixed_nodes = softtissue::count_nodes(p.bc, softtissue::NodeConstraint::kFixed);
   summary.free_nodes = softtissue::count_nodes(p.bc, softtissue::NodeConstraint::kFree);
+  summary.sliding_nodes = softtissue::count_nodes(p.bc, softtissue::NodeConstraint::kSliding);
+  summary.bone_contact = softtissue::contact_name(options.attachment.moved_bone_contact);
   summary.iterations = p.iterations;
   summary.nose_tets = p.nose_tets;
   summary.nose_stiffness = p.nose_stiffness;
@@ -147,6 +149,7 @@ void store_outputs(Archive& archive, int64_t case_id, int64_t series, const Simu
                       {"poisson_ratio", request.options.poisson_ratio},
                       {"gradient_threshold_mm", request.options.gradient_threshold_mm},
                       {"skin_binding_mm", request.options.skin_binding_mm},
+                      {"bone_contact", softtissue::contact_name(request.options.attachment.moved_bone_contact)},
                       {"uncertainty", request.uncertainty},
                       {"plan_text", result.summary.plan_text}};
   records::SimulationToStore stored{

@@ -38,12 +38,17 @@ void attach_bench_face(CLI::App& bench, CommandContext& ctx) {
                  "with --real: the face region goes on above the orbits in front of the eyes (off by default)");
   face->add_flag("--part-lips", realism->part_lips,
                  "with --real: the model parted between the lips at their cleft (off by default)");
+  auto contact = std::make_shared<std::string>(softtissue::contact_name(realism->bone_contact));
+  face->add_option("--bone-contact", *contact, "with --real: tissue on the moved bone is tied to it or slides on it")
+      ->check(CLI::IsMember(softtissue::contact_names()))
+      ->capture_default_str();
   face->add_option("--nose-stiffness", realism->nose_stiffness,
                    "with --real: Young's modulus of the cartilaginous nose over the soft tissue's (1: homogeneous)")
       ->check(CLI::Range(1.0, 1000.0))
       ->capture_default_str();
-  face->callback([args, real, realism, &ctx] {
+  face->callback([args, real, realism, contact, &ctx] {
     if (*real) {
+      realism->bone_contact = *softtissue::contact_named(*contact);
       const Json figures = bench::run_face_realism_benchmark(*realism);
       std::cout << (ctx.global.json ? json_text(figures) + "\n" : bench::face_realism_text(figures));
       return;

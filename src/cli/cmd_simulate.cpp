@@ -21,6 +21,7 @@ struct SimulateOptions {
   double advance_mm = 0;
   std::string model = "mtm";
   double poisson = 0.46;
+  std::string bone_contact = softtissue::contact_name(softtissue::AttachmentOptions{}.moved_bone_contact);
   int max_tets = 100000;
   double cell_mm = 4.0;
   bool uncertainty = false;
@@ -40,6 +41,7 @@ casework::SimulationRequest make_request(const SimulateOptions& o) {
   }
   request.options.model = *softtissue::parse_model(o.model);
   request.options.poisson_ratio = o.poisson;
+  request.options.attachment.moved_bone_contact = *softtissue::contact_named(o.bone_contact);
   request.options.meshing.max_tets = o.max_tets;
   request.options.meshing.cell_size_mm = o.cell_mm;
   request.uncertainty = o.uncertainty;
@@ -107,6 +109,11 @@ void attach_simulate(CLI::App& app, CommandContext& ctx) {
       ->capture_default_str();
   app.add_option("--poisson", options->poisson, "Poisson ratio of the soft tissue")
       ->check(CLI::Range(0.3, 0.499))
+      ->capture_default_str();
+  app.add_option("--bone-contact", options->bone_contact,
+                 "tissue on moved bone: tied to it, sliding on it (the subperiosteal dissection), or sliding only "
+                 "inside its cavities")
+      ->check(CLI::IsMember(softtissue::contact_names()))
       ->capture_default_str();
   app.add_option("--max-tets", options->max_tets, "tetrahedra budget of the face model")
       ->check(kTetrahedra)

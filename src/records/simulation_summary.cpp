@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "core/json_reader.h"
+#include "softtissue/bone_attachment.h"
 #include "softtissue/soft_tissue_model.h"
 
 namespace maxillo::records {
@@ -161,6 +162,10 @@ Json to_json(const SimulationSummary& s) {
         s.model_fallback ? Json{{"requested", s.model_fallback->requested}, {"reason", s.model_fallback->reason}}
                          : Json(nullptr);
   }
+  if (s.format_version >= 5) {
+    json["sliding_nodes"] = s.sliding_nodes;
+    json["bone_contact"] = s.bone_contact;
+  }
   if (s.uncertainty)
     json["uncertainty"] = {
         {"runs", s.uncertainty->runs}, {"p95_mm", s.uncertainty->p95_mm}, {"max_mm", s.uncertainty->max_mm}};
@@ -210,6 +215,12 @@ SimulationSummary read_simulation_summary(const Json& json, const std::string& s
       if (!softtissue::parse_model(s.model_fallback->requested))
         fallback.fail(fallback.field("requested"), "unknown model \"" + s.model_fallback->requested + "\"");
     }
+  }
+  if (s.format_version >= 5) {
+    s.sliding_nodes = count(r, "sliding_nodes");
+    s.bone_contact = r.required_text("bone_contact");
+    if (!softtissue::contact_named(s.bone_contact))
+      r.fail("bone_contact", "unknown contact \"" + s.bone_contact + "\"");
   }
   return s;
 }

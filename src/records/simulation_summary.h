@@ -20,7 +20,9 @@ struct SimulationSummary {
   // 4: nose_tets and nose_stiffness (the cartilaginous nose, casework/nasal_cartilage.h) and
   // model_fallback (null when the model asked for ran), required from 4 on; before it every
   // model was one homogeneous tissue.
-  static constexpr int kFormatVersion = 4;
+  // 5: sliding_nodes and bone_contact (how tissue on moved bone follows it,
+  // softtissue/bone_attachment.h), required from 5 on; before it that tissue was tied to the bone.
+  static constexpr int kFormatVersion = 5;
 
   struct UncertaintyBand {
     std::vector<std::string> runs;  // "mtm nu=0.46", ...
@@ -86,6 +88,8 @@ struct SimulationSummary {
   int nose_tets = 0;                                // version 4: tets of the cartilaginous nose (0: none)
   double nose_stiffness = 1;                        // version 4: their Young's modulus over the soft tissue's
   std::optional<ModelFallback> model_fallback;      // version 4: none when the model asked for ran
+  int sliding_nodes = 0;                            // version 5: nodes sliding on moved bone
+  std::string bone_contact = "tied";                // version 5: softtissue::contact_name of the attachment
 };
 
 Json to_json(const SimulationSummary& summary);

@@ -18,8 +18,19 @@ namespace {
 using report::fixed;
 
 std::string count_text(const records::SimulationSummary& s) {
-  return std::to_string(s.prescribed_nodes) + " joined to moved bone, " + std::to_string(s.fixed_nodes) + " fixed, " +
-         std::to_string(s.free_nodes) + " free";
+  std::string text = std::to_string(s.prescribed_nodes) + " joined to moved bone, ";
+  if (s.sliding_nodes) text += std::to_string(s.sliding_nodes) + " sliding on it, ";
+  return text + std::to_string(s.fixed_nodes) + " fixed, " + std::to_string(s.free_nodes) + " free";
+}
+
+// How the tissue on the moved bone follows it (summaries before format 5: tied).
+std::string bone_contact_text(const records::SimulationSummary& s) {
+  if (s.bone_contact == "sliding")
+    return "slides on it: the bone pushes it along its normal and leaves it free along its surface, as the "
+           "subperiosteal dissection frees it";
+  if (s.bone_contact == "sliding-in-cavities")
+    return "tied to it on its outer surface, sliding on it inside its cavities";
+  return "tied to it: moves with the bone";
 }
 
 report::Table landmark_table(const std::vector<records::SimulationSummary::LandmarkMove>& moves) {
@@ -67,6 +78,7 @@ report::KeyValueBlock model_facts(const records::SimulationSummary& s, const std
   return {{
       {"Model", title + ", Poisson ratio " + fixed(s.poisson_ratio, 2)},
       {"Tissues", tissues_text(s)},
+      {"Tissue on moved bone", bone_contact_text(s)},
       {"Tetrahedral mesh", std::to_string(s.tetrahedra) + " tetrahedra, " + std::to_string(s.nodes) +
                                " nodes (cell size " + fixed(s.cell_size_mm, 1) + " mm)"},
       {"Element quality", "smallest dihedral angle " + fixed(s.min_dihedral_deg, 1) + "°, aspect ratio mean " +

@@ -14,42 +14,44 @@ using Vector = Eigen::VectorXd;  // 3 n, node-major: entries 3 i .. 3 i + 2 belo
 // solved 10x slower on 2 threads than on 1 with the cores busy).
 constexpr int kParallelNodes = 15000;
 
-// y = K_ff x on the free nodes (rows and columns of constrained nodes left out; their y is 0).
-void multiply_free(const StiffnessBlocks& k, const std::vector<char>& is_free, const Vector& x, Vector& y) {
+// y = K_ff x on the free directions: the rows and columns of constrained nodes left out (their y
+// is 0), a sliding node's row projected across its normal. x lies in the free directions.
+void multiply_free(const StiffnessBlocks& k, const BoundaryConditions& bc, const Vector& x, Vector& y) {
   const int n = k.node_count();
 #pragma omp parallel for schedule(static) if (n >= kParallelNodes)
   for (int i = 0; i < n; ++i) {
     Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-    if (is_free[size_t(i)])
+    if (bc.has_free_directions(i)) {
       for (int e = k.graph.row_begin(i); e < k.graph.row_end(i); ++e) {
         const int j = k.graph.neighbours[size_t(e)];
-        if (is_free[size_t(j)]) sum.noalias() += k.blocks[size_t(e)] * x.segment<3>(3 * j);
+        if (bc.has_free_directions(j)) sum.noalias() += k.blocks[size_t(e)] * x.segment<3>(3 * j);
       }
+      if (!bc.is_free(i)) sum = bc.free_part(i, sum);
+    }
     y.segment<3>(3 * i) = sum;
   }
 }
 
-// b = -K_fc u_c: the load of the imposed displacements on the free nodes.
-Vector imposed_load(const StiffnessBlocks& k, const std::vector<char>& is_free, const BoundaryConditions& bc) {
+// b = -K_fc u_c: the load of the imposed displacements on the free directions.
+Vector imposed_load(const StiffnessBlocks& k, const BoundaryConditions& bc) {
   Vector b = Vector::Zero(3 * k.node_count());
   for (int i = 0; i < k.node_count(); ++i) {
-    if (!is_free[size_t(i)]) continue;
+    if (!bc.has_free_directions(i)) continue;
     Eigen::Vector3d sum = Eigen::Vector3d::Zero();
     for (int e = k.graph.row_begin(i); e < k.graph.row_end(i); ++e) {
       const int j = k.graph.neighbours[size_t(e)];
-      if (bc.constraint[size_t(j)] == NodeConstraint::kPrescribed)
-        sum -= k.blocks[size_t(e)] * bc.displacement.row(j).transpose();
+      if (!bc.is_free(j)) sum -= k.blocks[size_t(e)] * bc.imposed(j);
     }
-    b.segment<3>(3 * i) = sum;
+    b.segment<3>(3 * i) = bc.free_part(i, sum);
   }
   return b;
 }
 
-// Inverses of the free nodes' diagonal blocks.
-std::vector<Eigen::Matrix3d> block_jacobi(const StiffnessBlocks& k, const std::vector<char>& is_free) {
+// Inverses of the diagonal blocks restricted to each node's free directions.
+std::vector<Eigen::Matrix3d> block_jacobi(const StiffnessBlocks& k, const BoundaryConditions& bc) {
   std::vector<Eigen::Matrix3d> inverse(size_t(k.node_count()), Eigen::Matrix3d::Zero());
   for (int i = 0; i < k.node_count(); ++i)
-    if (is_free[size_t(i)]) inverse[size_t(i)] = k.blocks[size_t(k.graph.find(i, i))].inverse();
+    if (bc.has_free_directions(i)) inverse[size_t(i)] = bc.restricted_inverse(i, k.blocks[size_t(k.graph.find(i, i))]);
   return inverse;
 }
 
@@ -61,13 +63,12 @@ void precondition(const std::vector<Eigen::Matrix3d>& inverse, const Vector& r, 
 
 }  // namespace
 
-BlockPcgResult solve_free_block_pcg(const StiffnessBlocks& k, const std::vector<char>& is_free, const Vector& b_in,
-                                    double relative_tolerance, int max_iterations) {
+BlockPcgResult solve_free_block_pcg(const StiffnessBlocks& k, const BoundaryConditions& free_directions,
+                                    const Vector& b_in, double relative_tolerance, int max_iterations) {
   const int n = k.node_count();
-  Vector b = b_in;
-  for (int i = 0; i < n; ++i)
-    if (!is_free[size_t(i)]) b.segment<3>(3 * i).setZero();
-  const auto inverse = block_jacobi(k, is_free);
+  Vector b(3 * n);
+  for (int i = 0; i < n; ++i) b.segment<3>(3 * i) = free_directions.free_part(i, b_in.segment<3>(3 * i));
+  const auto inverse = block_jacobi(k, free_directions);
   BlockPcgResult result;
   result.x = Vector::Zero(3 * n);
   const double b_norm = b.norm();
@@ -85,7 +86,7 @@ BlockPcgResult solve_free_block_pcg(const StiffnessBlocks& k, const std::vector<
       result.converged = true;
       break;
     }
-    multiply_free(k, is_free, p, q);
+    multiply_free(k, free_directions, p, q);
     const double alpha = rz / p.dot(q);
     result.x.noalias() += alpha * p;
     r.noalias() -= alpha * q;
@@ -100,17 +101,15 @@ BlockPcgResult solve_free_block_pcg(const StiffnessBlocks& k, const std::vector<
 
 StaticSolution solve_block_pcg(const StiffnessBlocks& k, const BoundaryConditions& bc, const KrylovOptions& options) {
   const int n = k.node_count();
-  std::vector<char> is_free(static_cast<size_t>(n), 0);
-  for (int i = 0; i < n; ++i) is_free[size_t(i)] = bc.is_free(i);
-  const BlockPcgResult pcg = solve_free_block_pcg(k, is_free, imposed_load(k, is_free, bc), options.relative_tolerance,
-                                                  options.max_iterations);
+  const BlockPcgResult pcg =
+      solve_free_block_pcg(k, bc, imposed_load(k, bc), options.relative_tolerance, options.max_iterations);
   StaticSolution solution;
   solution.status = pcg.converged ? SolveStatus::kConverged : SolveStatus::kNotConverged;
   solution.iterations = pcg.iterations;
   solution.relative_residual = pcg.relative_residual;
   solution.displacement = initial_displacement(bc);
   for (int i = 0; i < n; ++i)
-    if (is_free[size_t(i)]) solution.displacement.row(i) = pcg.x.segment<3>(3 * i).transpose();
+    if (bc.has_free_directions(i)) solution.displacement.row(i) += pcg.x.segment<3>(3 * i).transpose();
   return solution;
 }
 

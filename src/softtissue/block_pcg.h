@@ -17,17 +17,19 @@ namespace maxillo::softtissue {
 StaticSolution solve_block_pcg(const StiffnessBlocks& stiffness, const BoundaryConditions& bc,
                                const KrylovOptions& options = {});
 
-// The same conjugate gradient for any right-hand side: K_ff x = b on the nodes with
-// is_free[i] != 0. Vectors are node-major (entries 3 i .. 3 i + 2 belong to node i, length
-// 3 n); b's entries on constrained nodes are ignored and x is 0 there. Used by the non-linear
-// FEM for its Newton steps, with the tangent stiffness in `stiffness`.
+// The same conjugate gradient for any right-hand side: K_ff x = b in the free directions of
+// `free_directions` (all three of a free node, the two across the normal of a sliding one, none
+// of a fixed or prescribed one; its imposed values are not read). Vectors are node-major
+// (entries 3 i .. 3 i + 2 belong to node i, length 3 n); b's parts in constrained directions are
+// ignored and x has none. Used by the non-linear FEM for its Newton steps, with the tangent
+// stiffness in `stiffness`.
 struct BlockPcgResult {
   Eigen::VectorXd x;
   bool converged = false;
   int iterations = 0;
   double relative_residual = 0;  // |b - K_ff x| / |b| over the free nodes
 };
-BlockPcgResult solve_free_block_pcg(const StiffnessBlocks& stiffness, const std::vector<char>& is_free,
+BlockPcgResult solve_free_block_pcg(const StiffnessBlocks& stiffness, const BoundaryConditions& free_directions,
                                     const Eigen::VectorXd& b, double relative_tolerance, int max_iterations);
 
 }  // namespace maxillo::softtissue

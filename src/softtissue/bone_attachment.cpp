@@ -71,10 +71,10 @@ bool ray_meets_bone(const LabelVolume& segments, const Eigen::Vector3d& p, const
   return false;
 }
 
-// A piece of the mesh that only cavities held (the lining of a sinus, cut off from the face by
-// the mesher) would float with nothing to hold it, and its solve would have no answer: its
-// nodes follow their bone after all. `inner_segment`: per node, the moved segment whose cavity
-// left it free (0 = none).
+// A piece of the mesh that no fixed or prescribed node anchors (the lining of a sinus, cut off
+// from the face by the mesher, that only cavities or sliding contact held) would float with
+// nothing to hold it, and its solve would have no answer: its nodes follow their bone after all.
+// `inner_segment`: per node, the moved segment whose cavity left it free (0 = none).
 void hold_floating_pieces(const TetMesh& mesh, const std::vector<uint8_t>& inner_segment,
                           const std::map<uint8_t, Eigen::Isometry3d>& moves, Attachment& result) {
   const int n = mesh.node_count();
@@ -82,11 +82,18 @@ void hold_floating_pieces(const TetMesh& mesh, const std::vector<uint8_t>& inner
   for (int t = 0; t < mesh.tet_count(); ++t)
     for (int a = 1; a < 4; ++a) pieces.unite(mesh.tets(t, 0), mesh.tets(t, a));
   std::vector<char> held(size_t(n), 0);
-  for (int i = 0; i < n; ++i)
-    if (result.bc.constraint[size_t(i)] != NodeConstraint::kFree) held[size_t(pieces.find(i))] = 1;
   for (int i = 0; i < n; ++i) {
+    const NodeConstraint c = result.bc.constraint[size_t(i)];
+    if (c == NodeConstraint::kFixed || c == NodeConstraint::kPrescribed) held[size_t(pieces.find(i))] = 1;
+  }
+  for (int i = 0; i < n; ++i) {
+    if (held[size_t(pieces.find(i))]) continue;
+    if (result.bc.constraint[size_t(i)] == NodeConstraint::kSliding) {
+      result.bc.constraint[size_t(i)] = NodeConstraint::kPrescribed;  // its displacement is the bone's move
+      continue;
+    }
     const uint8_t s = inner_segment[size_t(i)];
-    if (!s || held[size_t(pieces.find(i))]) continue;
+    if (!s) continue;
     const Eigen::Vector3d p = mesh.nodes.row(i).transpose();
     result.bc.constraint[size_t(i)] = NodeConstraint::kPrescribed;
     result.bc.displacement.row(i) = (moves.at(s) * p - p).transpose();
@@ -95,7 +102,49 @@ void hold_floating_pieces(const TetMesh& mesh, const std::vector<uint8_t>& inner
   }
 }
 
+// Joins node i at p to the moved segment s: tied, or sliding on the bone's surface when asked
+// for and the bone's outward direction is defined there.
+void join_to_moved_bone(const LabelVolume& segments, int i, const Eigen::Vector3d& p, const Eigen::Isometry3d& move,
+                        const AttachmentOptions& options, BoundaryConditions& bc) {
+  const Eigen::Vector3d bone_move = move * p - p;
+  const bool slides =
+      options.moved_bone_contact == MovedBoneContact::kSliding ||
+      (options.moved_bone_contact == MovedBoneContact::kSlidingInCavities && inside_bone_cavity(segments, p, options));
+  if (slides) {
+    const Eigen::Vector3d normal = away_from_bone(segments, p, options.touch_mm + 1);
+    if (!normal.isZero()) {
+      make_sliding(bc, i, normal, bone_move);
+      return;
+    }
+  }
+  bc.constraint[size_t(i)] = NodeConstraint::kPrescribed;
+  bc.displacement.row(i) = bone_move.transpose();
+}
+
 }  // namespace
+
+const char* contact_name(MovedBoneContact contact) {
+  switch (contact) {
+    case MovedBoneContact::kSliding: return "sliding";
+    case MovedBoneContact::kSlidingInCavities: return "sliding-in-cavities";
+    default: return "tied";
+  }
+}
+
+constexpr MovedBoneContact kContacts[] = {MovedBoneContact::kTied, MovedBoneContact::kSliding,
+                                          MovedBoneContact::kSlidingInCavities};
+
+std::optional<MovedBoneContact> contact_named(std::string_view name) {
+  for (auto contact : kContacts)
+    if (name == contact_name(contact)) return contact;
+  return std::nullopt;
+}
+
+std::vector<std::string> contact_names() {
+  std::vector<std::string> names;
+  for (auto contact : kContacts) names.emplace_back(contact_name(contact));
+  return names;
+}
 
 bool inside_bone_cavity(const LabelVolume& segments, const Eigen::Vector3d& p, const AttachmentOptions& options) {
   const Eigen::Vector3d outward = away_from_bone(segments, p, options.touch_mm + 1);
@@ -132,8 +181,7 @@ Attachment attach_to_bone(const TetMesh& mesh, const LabelVolume& segments,
         result.segment[size_t(i)] = 0;
         ++result.inner_nodes;
       } else if (move != moves.end()) {
-        result.bc.constraint[size_t(i)] = NodeConstraint::kPrescribed;
-        result.bc.displacement.row(i) = (move->second * p - p).transpose();
+        join_to_moved_bone(segments, i, p, move->second, options, result.bc);
       } else {
         result.bc.constraint[size_t(i)] = NodeConstraint::kFixed;
       }
@@ -141,7 +189,7 @@ Attachment attach_to_bone(const TetMesh& mesh, const LabelVolume& segments,
       result.bc.constraint[size_t(i)] = NodeConstraint::kFixed;
     }
   }
-  if (result.inner_nodes) hold_floating_pieces(mesh, inner_segment, moves, result);
+  if (result.inner_nodes || any_sliding(result.bc)) hold_floating_pieces(mesh, inner_segment, moves, result);
   return result;
 }
 

@@ -2,7 +2,9 @@
 // Boundary conditions of a face model from the bone it lies on (thesis ch. 6: join points).
 // A node touches bone when a voxel of a bone segment lies within touch_mm of it; it then
 // follows that segment's rigid move (prescribed) or, when the segment does not move, stays put
-// (fixed). Nodes where the region's shape cuts through tissue are fixed too (RegionShape::on_cut):
+// (fixed); with MovedBoneContact::kSliding a node on a moved segment slides on its surface instead
+// (boundary_conditions.h), its normal the direction away from the bone voxels within touch_mm +
+// 1 mm. Nodes where the region's shape cuts through tissue are fixed too (RegionShape::on_cut):
 // the tissue beyond is not modelled and is taken as unmoved. Every other node is free.
 //
 // With outer_surface_only (off by default, see below), a moved segment carries only the tissue on
@@ -19,6 +21,9 @@
 // for a 6 mm advancement (docs/ARCHITECTURE.md, "Soft tissue realism").
 #include <Eigen/Geometry>
 #include <map>
+#include <optional>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/volume.h"
@@ -28,11 +33,24 @@
 
 namespace maxillo::softtissue {
 
+// How tissue touching a moved segment follows it.
+enum class MovedBoneContact {
+  kTied,               // it moves with the bone (the thesis' join points)
+  kSliding,            // its move along the bone's outward normal is the bone's; across it, it slides
+  kSlidingInCavities,  // sliding inside the bone's cavities (inside_bone_cavity), tied on its outer surface
+};
+
+// "tied" or "sliding", and back (std::nullopt for another name).
+const char* contact_name(MovedBoneContact contact);
+std::optional<MovedBoneContact> contact_named(std::string_view name);
+std::vector<std::string> contact_names();
+
 struct AttachmentOptions {
   double touch_mm = 1.5;                // how close bone must be for a node to be joined to it
   double cut_plane_tolerance_mm = 1.0;  // nodes this close to a region plane are on the cut
   bool outer_surface_only = false;      // moved segments carry the tissue on their outer surface only
   double cavity_reach_mm = 60;          // bone this far along a ray from a node closes a cavity around it
+  MovedBoneContact moved_bone_contact = MovedBoneContact::kSliding;
 };
 
 struct Attachment {

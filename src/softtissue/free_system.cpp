@@ -3,9 +3,14 @@
 #include <algorithm>
 #include <cassert>
 
+#include "core/error.h"
+
 namespace maxillo::softtissue {
 
 FreeNodeNumbering number_free_nodes(const std::vector<NodeConstraint>& constraint) {
+  if (std::find(constraint.begin(), constraint.end(), NodeConstraint::kSliding) != constraint.end())
+    throw Error(ErrorCode::kBadValue, "linear FEM",
+                "the assembled free system has no sliding nodes; solve them with the block conjugate gradient");
   FreeNodeNumbering numbering;
   numbering.free_index.assign(constraint.size(), -1);
   for (size_t i = 0; i < constraint.size(); ++i)
@@ -71,8 +76,7 @@ Eigen::MatrixX3d assemble_displacement(const Eigen::VectorXd& free_solution, con
 double max_free_force(const StiffnessBlocks& stiffness, const BoundaryConditions& bc, const Eigen::MatrixX3d& u) {
   Eigen::MatrixX3d f = multiply(stiffness, u);
   double largest = 0;
-  for (int i = 0; i < bc.node_count(); ++i)
-    if (bc.is_free(i)) largest = std::max(largest, f.row(i).norm());
+  for (int i = 0; i < bc.node_count(); ++i) largest = std::max(largest, bc.free_part(i, f.row(i).transpose()).norm());
   return largest;
 }
 

@@ -1,6 +1,8 @@
 #pragma once
 // The static problem K u = 0 on free nodes with constrained displacements eliminated:
-// K_ff u_f = -K_fc u_c, where f are free nodes and c fixed or prescribed ones.
+// K_ff u_f = -K_fc u_c, where f are free nodes and c fixed or prescribed ones. Sliding nodes
+// (boundary_conditions.h) are not taken: number_free_nodes refuses them (Error), and
+// block_pcg.h solves them.
 // Free dof 3 f + c is free node number f (in node order) along axis c.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
@@ -27,7 +29,7 @@ Eigen::VectorXd free_load(const StiffnessBlocks& stiffness, const FreeNodeNumber
 // Full n x 3 displacement: imposed values on constrained nodes, u_f on free ones.
 Eigen::MatrixX3d assemble_displacement(const Eigen::VectorXd& free_solution, const FreeNodeNumbering& numbering,
                                        const BoundaryConditions& bc);
-// max |f_i| over free nodes of f = K u (N): zero at equilibrium.
+// max |f_i| over the free directions of f = K u (N): zero at equilibrium.
 double max_free_force(const StiffnessBlocks& stiffness, const BoundaryConditions& bc, const Eigen::MatrixX3d& u);
 
 }  // namespace maxillo::softtissue

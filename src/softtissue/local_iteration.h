@@ -32,7 +32,7 @@ struct LocalIterationResult {
 };
 
 // The local dynamic stop criterion, shared by the point-wise solvers. Sweeps over the active
-// points in index order; update_point(i) moves free point i by its local solve and returns the
+// points in index order; update_point(i) moves free or sliding point i by its local solve and returns the
 // step (mm). A point that moved more than options.gradient_threshold_mm stays active and wakes
 // its free neighbours (CSR adjacency: neighbours of i are neighbours[offsets[i]..offsets[i+1])),
 // every other point goes to rest. Fills result's iterations, point_updates, last_max_move_mm
@@ -42,7 +42,7 @@ void sweep_until_rest(const std::vector<int>& offsets, const std::vector<int>& n
                       const LocalIterationOptions& options, UpdatePoint&& update_point, LocalIterationResult& result) {
   const int n = bc.node_count();
   std::vector<char> active(static_cast<size_t>(n)), next(static_cast<size_t>(n), 0);
-  for (int i = 0; i < n; ++i) active[size_t(i)] = bc.is_free(i) ? 1 : 0;
+  for (int i = 0; i < n; ++i) active[size_t(i)] = bc.has_free_directions(i) ? 1 : 0;
   bool any_active = true;
   while (any_active && result.iterations < options.max_iterations) {
     any_active = false;
@@ -55,7 +55,7 @@ void sweep_until_rest(const std::vector<int>& offsets, const std::vector<int>& n
       if (move <= options.gradient_threshold_mm) continue;
       next[size_t(i)] = 1;
       for (int e = offsets[size_t(i)]; e < offsets[size_t(i) + 1]; ++e)
-        if (bc.is_free(neighbours[size_t(e)])) next[size_t(neighbours[size_t(e)])] = 1;
+        if (bc.has_free_directions(neighbours[size_t(e)])) next[size_t(neighbours[size_t(e)])] = 1;
       any_active = true;
     }
     active.swap(next);

@@ -78,7 +78,8 @@ int mass_spring_load_steps(const MassSpringModel& model, const BoundaryCondition
     if (bc.is_free(i)) continue;
     const double move = bc.imposed(i).norm();
     for (int s = model.offsets[size_t(i)]; s < model.offsets[size_t(i) + 1]; ++s)
-      if (bc.is_free(model.other_end[size_t(s)])) worst = std::max(worst, move / model.rest_length[size_t(s)]);
+      if (bc.has_free_directions(model.other_end[size_t(s)]))
+        worst = std::max(worst, move / model.rest_length[size_t(s)]);
   }
   return std::clamp(int(std::ceil(worst / kMaxStepOverRestLength)), 1, kMaxLoadSteps);
 }
@@ -95,7 +96,7 @@ LocalIterationResult solve_mass_spring(const MassSpringModel& model, const Bound
   // A local Newton step of point i towards zero net spring force, its neighbours held.
   auto update_point = [&](int i) {
     local_force(model, x, i, force, hessian);
-    Eigen::Vector3d step = options.relaxation * hessian.ldlt().solve(force);
+    Eigen::Vector3d step = options.relaxation * bc.restricted_solve(i, hessian, force);
     x[size_t(i)] += step;
     return step;
   };
@@ -103,8 +104,12 @@ LocalIterationResult solve_mass_spring(const MassSpringModel& model, const Bound
   result.load_steps = mass_spring_load_steps(model, bc);
   for (int step = 1; step <= result.load_steps; ++step) {
     const double fraction = double(step) / result.load_steps;
+    // A sliding node keeps its move across the normal from the last step.
     for (int i = 0; i < n; ++i)
-      if (!bc.is_free(i)) x[size_t(i)] = model.rest_positions.row(i).transpose() + fraction * bc.imposed(i);
+      if (!bc.is_free(i)) {
+        const Eigen::Vector3d rest = model.rest_positions.row(i).transpose();
+        x[size_t(i)] = rest + fraction * bc.imposed(i) + bc.free_part(i, x[size_t(i)] - rest);
+      }
     LocalIterationResult step_result;
     sweep_until_rest(model.offsets, model.other_end, bc, options, update_point, step_result);
     result.iterations += step_result.iterations;

@@ -26,8 +26,9 @@ struct MassTensorModel {
 // Precomputation: splits the FEM blocks into K_jj^-1 and K_jk.
 MassTensorModel make_mass_tensor_model(const StiffnessBlocks& stiffness);
 
-// Static solve. `start`, when given (n x 3), is the initial guess for free nodes (e.g. the
-// answer before a plan change); constrained nodes always take their imposed values.
+// Static solve. `start`, when given (n x 3), is the initial guess for free nodes and the free
+// directions of sliding ones (e.g. the answer before a plan change); constrained nodes always
+// take their imposed values. A sliding node takes its local solve across its normal.
 LocalIterationResult solve_mass_tensor(const MassTensorModel& model, const BoundaryConditions& bc,
                                        const LocalIterationOptions& options, const Eigen::MatrixX3d* start = nullptr);
 

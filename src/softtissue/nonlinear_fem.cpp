@@ -128,17 +128,17 @@ void assemble_tangent(const TetMesh& mesh, const Reference& ref, const LameParam
   }
 }
 
-// Node-major 3 n vector of the forces on free nodes (zero on constrained ones).
-Eigen::VectorXd free_residual(const Eigen::MatrixX3d& f, const std::vector<char>& is_free) {
-  Eigen::VectorXd r = Eigen::VectorXd::Zero(3 * f.rows());
-  for (Eigen::Index i = 0; i < f.rows(); ++i)
-    if (is_free[size_t(i)]) r.segment<3>(3 * i) = f.row(i).transpose();
+// Node-major 3 n vector of the forces in the free directions (none on constrained nodes, those
+// across the normal on sliding ones).
+Eigen::VectorXd free_residual(const Eigen::MatrixX3d& f, const BoundaryConditions& bc) {
+  Eigen::VectorXd r(3 * f.rows());
+  for (Eigen::Index i = 0; i < f.rows(); ++i) r.segment<3>(3 * i) = bc.free_part(int(i), f.row(i).transpose());
   return r;
 }
 
-void add_free_step(Eigen::MatrixX3d& u, const Eigen::VectorXd& du, double alpha, const std::vector<char>& is_free) {
+void add_free_step(Eigen::MatrixX3d& u, const Eigen::VectorXd& du, double alpha, const BoundaryConditions& bc) {
   for (Eigen::Index i = 0; i < u.rows(); ++i)
-    if (is_free[size_t(i)]) u.row(i) += alpha * du.segment<3>(3 * i).transpose();
+    u.row(i) += alpha * bc.free_part(int(i), du.segment<3>(3 * i)).transpose();
 }
 
 constexpr int kMaxLinearIterations = 20000;
@@ -166,14 +166,12 @@ NonlinearSolution solve_nonlinear_static(const TetMesh& mesh, const Material& ma
   Reference ref = reference_of(mesh);
   add_block_entries(mesh, ref);
   const LameParameters lame = lame_parameters(material);
-  std::vector<char> is_free(size_t(mesh.node_count()), 0);
-  for (int i = 0; i < mesh.node_count(); ++i) is_free[size_t(i)] = bc.is_free(i);
   StiffnessBlocks k;  // the tangent, re-assembled in place at every Newton step
   k.graph = ref.graph;
   k.blocks.assign(k.graph.neighbours.size(), Eigen::Matrix3d::Zero());
   auto newton_direction = [&](const Eigen::MatrixX3d& u, const Eigen::VectorXd& rhs, NonlinearSolution& solution) {
     assemble_tangent(mesh, ref, lame, u, options.law, k);
-    BlockPcgResult pcg = solve_free_block_pcg(k, is_free, rhs, options.linear_tolerance, kMaxLinearIterations);
+    BlockPcgResult pcg = solve_free_block_pcg(k, bc, rhs, options.linear_tolerance, kMaxLinearIterations);
     solution.linear_iterations += pcg.iterations;
     return pcg.x;
   };
@@ -191,10 +189,10 @@ NonlinearSolution solve_nonlinear_static(const TetMesh& mesh, const Material& ma
     const Eigen::MatrixX3d f0 = forces(mesh, ref, lame, solution.displacement, options.law);
     constexpr double kEpsilon = 1e-4;
     const Eigen::VectorXd coupling =
-        (free_residual(forces(mesh, ref, lame, solution.displacement + kEpsilon * increment, options.law), is_free) -
-         free_residual(f0, is_free)) /
+        (free_residual(forces(mesh, ref, lame, solution.displacement + kEpsilon * increment, options.law), bc) -
+         free_residual(f0, bc)) /
         kEpsilon;
-    const Eigen::VectorXd r0 = free_residual(f0, is_free);
+    const Eigen::VectorXd r0 = free_residual(f0, bc);
     if (reference_norm == 0) reference_norm = std::max((r0 + coupling).norm(), 1e-300);
     const Eigen::VectorXd predictor = newton_direction(solution.displacement, -(r0 + coupling), solution);
     // The predicted free move is shortened while it turns a tet inside out (neo-Hookean: NaN forces).
@@ -202,8 +200,8 @@ NonlinearSolution solve_nonlinear_static(const TetMesh& mesh, const Material& ma
     Eigen::VectorXd r;
     for (double scale = 1; scale > 1e-3; scale /= 2) {
       solution.displacement = start;
-      add_free_step(solution.displacement, predictor, scale, is_free);
-      r = free_residual(forces(mesh, ref, lame, solution.displacement, options.law), is_free);
+      add_free_step(solution.displacement, predictor, scale, bc);
+      r = free_residual(forces(mesh, ref, lame, solution.displacement, options.law), bc);
       if (r.allFinite()) break;
     }
     solution.converged = false;
@@ -222,8 +220,8 @@ NonlinearSolution solve_nonlinear_static(const TetMesh& mesh, const Material& ma
       bool decreased = false;
       for (int halving = 0; halving < 8 && !decreased; ++halving, alpha /= 2) {
         trial = solution.displacement;
-        add_free_step(trial, du, alpha, is_free);
-        trial_r = free_residual(forces(mesh, ref, lame, trial, options.law), is_free);
+        add_free_step(trial, du, alpha, bc);
+        trial_r = free_residual(forces(mesh, ref, lame, trial, options.law), bc);
         decreased = trial_r.allFinite() && trial_r.norm() < r.norm();  // NaN: a tet turned inside out
       }
       if (!trial_r.allFinite()) break;  // stalled: every step along the Newton direction inverts a tet

@@ -59,7 +59,8 @@ TEST(CadaverSimulate, LeFortAdvancementOnTheRealHead) {
   const auto summary = Json::parse(run.output);
   EXPECT_LE(summary["tetrahedra"].get<int>(), 100000);
   EXPECT_GT(summary["min_dihedral_deg"].get<double>(), 3.0);
-  EXPECT_GT(summary["prescribed_nodes"].get<int>(), 50);
+  EXPECT_EQ(summary["bone_contact"], "sliding");  // tissue slides on the moved maxilla (issue 34)
+  EXPECT_GT(summary["sliding_nodes"].get<int>(), 50);
   const double largest = summary["max_skin_displacement_mm"].get<double>();
   EXPECT_GT(largest, 4.0);
   EXPECT_LT(largest, 9.0);

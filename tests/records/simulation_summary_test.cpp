@@ -50,6 +50,8 @@ SimulationSummary example_summary() {
   s.nose_stiffness = 30;
   s.model = "fem";
   s.model_fallback = SimulationSummary::ModelFallback{"nfem", "Newton's method did not converge"};
+  s.sliding_nodes = 1234;
+  s.bone_contact = "sliding";
   return s;
 }
 
@@ -87,6 +89,20 @@ TEST(SimulationSummary, RoundTripsThroughItsText) {
   ran_as_asked.model_fallback.reset();
   EXPECT_TRUE(to_json(ran_as_asked)["model_fallback"].is_null());
   EXPECT_FALSE(read_simulation_summary(to_json(ran_as_asked), "test").model_fallback);
+  EXPECT_EQ(read.sliding_nodes, 1234);
+  EXPECT_EQ(read.bone_contact, "sliding");
+}
+
+// Version 4 summaries (tissue on moved bone tied to it) still read so.
+TEST(SimulationSummary, AVersion4SummaryReadsAsTiedToTheMovedBone) {
+  Json v4 = to_json(example_summary());
+  v4.erase("sliding_nodes");
+  v4.erase("bone_contact");
+  v4["format_version"] = 4;
+  const SimulationSummary read = read_simulation_summary(v4, "test");
+  EXPECT_EQ(read.sliding_nodes, 0);
+  EXPECT_EQ(read.bone_contact, "tied");
+  EXPECT_EQ(read.nose_tets, 812);
 }
 
 // Version 3 summaries (every model one homogeneous tissue) still read: no stiffer nose.
@@ -95,6 +111,8 @@ TEST(SimulationSummary, AVersion3SummaryReadsAsOneHomogeneousTissue) {
   v3.erase("nose_tets");
   v3.erase("nose_stiffness");
   v3.erase("model_fallback");
+  v3.erase("sliding_nodes");
+  v3.erase("bone_contact");
   v3["format_version"] = 3;
   const SimulationSummary read = read_simulation_summary(v3, "test");
   EXPECT_EQ(read.nose_tets, 0);
@@ -111,6 +129,8 @@ TEST(SimulationSummary, AVersion2SummaryReadsWithoutTheProfileResponse) {
   v2.erase("nose_tets");
   v2.erase("nose_stiffness");
   v2.erase("model_fallback");
+  v2.erase("sliding_nodes");
+  v2.erase("bone_contact");
   v2["format_version"] = 2;
   const SimulationSummary read = read_simulation_summary(v2, "test");
   EXPECT_FALSE(read.profile_response);
@@ -120,8 +140,9 @@ TEST(SimulationSummary, AVersion2SummaryReadsWithoutTheProfileResponse) {
 // Version 1 summaries (before the report's facts were added) still read, without those facts.
 TEST(SimulationSummary, AVersion1SummaryReadsWithoutTheReportFacts) {
   Json v1 = to_json(example_summary());
-  for (const char* key : {"plan_text", "meshing_attempts", "mean_aspect_ratio", "soft_landmarks", "profile_response",
-                          "boundary_moves", "nose_tets", "nose_stiffness", "model_fallback"})
+  for (const char* key :
+       {"plan_text", "meshing_attempts", "mean_aspect_ratio", "soft_landmarks", "profile_response", "boundary_moves",
+        "nose_tets", "nose_stiffness", "model_fallback", "sliding_nodes", "bone_contact"})
     v1.erase(key);
   v1["format_version"] = 1;
   const SimulationSummary read = read_simulation_summary(v1, "test");
@@ -159,8 +180,11 @@ TEST(SimulationSummary, DamageIsAnErrorNamingTheKey) {
             "sim/simulation.json: model_fallback.requested: unknown model \"springs\"");
   EXPECT_NE(failure([](Json& j) { j["nose_stiffness"] = 0.5; }).find("sim/simulation.json: nose_stiffness: must"),
             std::string::npos);
-  EXPECT_EQ(failure([](Json& j) { j["format_version"] = 5; }),
-            "sim/simulation.json: format_version: is 5, newer than this program reads (4): update maxillo");
+  EXPECT_EQ(failure([](Json& j) { j["bone_contact"] = "glued"; }),
+            "sim/simulation.json: bone_contact: unknown contact \"glued\"");
+  EXPECT_EQ(failure([](Json& j) { j.erase("sliding_nodes"); }), "sim/simulation.json: sliding_nodes: missing");
+  EXPECT_EQ(failure([](Json& j) { j["format_version"] = 6; }),
+            "sim/simulation.json: format_version: is 6, newer than this program reads (5): update maxillo");
 }
 
 }  // namespace

@@ -66,6 +66,16 @@ TEST(SoftTissueSection, SaysWhichTissuesTheModelTellsApart) {
             "soft tissue, and the cartilaginous nose (812 tetrahedra) 30 times stiffer");
 }
 
+TEST(SoftTissueSection, SaysHowTheTissueFollowsTheMovedBone) {
+  auto stored = stored_prediction(2, 2);
+  EXPECT_EQ(fact(soft_tissue_section(stored), "Tissue on moved bone"), "tied to it: moves with the bone");
+  EXPECT_EQ(fact(soft_tissue_section(stored), "Nodes").find("sliding"), std::string::npos);
+  stored.summary.bone_contact = "sliding";
+  stored.summary.sliding_nodes = 321;
+  EXPECT_EQ(fact(soft_tissue_section(stored), "Tissue on moved bone").rfind("slides on it", 0), 0u);
+  EXPECT_NE(fact(soft_tissue_section(stored), "Nodes").find("321 sliding on it"), std::string::npos);
+}
+
 TEST(SoftTissueSection, AModelThatDidNotRunIsNamedWithWhy) {
   auto stored = stored_prediction(2, 2);
   EXPECT_EQ(notes_of(soft_tissue_section(stored)).find("was asked for"), std::string::npos);

@@ -136,7 +136,9 @@ TEST(BoneAttachment, JoinsNodesToTheBoneTheyTouchAndFixesCutPlanes) {
     for (int i = 0; i < 23; ++i) segments.labels[size_t(segments.geometry.index(i, j, 0))] = (i - 1) < 10 ? 1 : 2;
   const Eigen::Isometry3d move(Eigen::Translation3d(0, 3, 0));
   std::vector<RegionPlane> cuts{{Eigen::Vector3d(20, 0, 0), -Eigen::Vector3d::UnitX()}};
-  auto attachment = attach_to_bone(mesh, segments, {{uint8_t(2), move}}, cuts, {1.2, 0.5});
+  AttachmentOptions tied{1.2, 0.5};
+  tied.moved_bone_contact = MovedBoneContact::kTied;  // the thesis' join points
+  auto attachment = attach_to_bone(mesh, segments, {{uint8_t(2), move}}, cuts, tied);
   for (int n = 0; n < mesh.node_count(); ++n) {
     const Eigen::Vector3d p = mesh.nodes.row(n).transpose();
     const auto c = attachment.bc.constraint[size_t(n)];
@@ -212,6 +214,7 @@ TEST(BoneAttachment, MovedBoneCarriesOnlyItsOuterSurface) {
   // Without the rule the floor's nodes follow the bone; unmoved bone holds them either way.
   AttachmentOptions tie_all;
   tie_all.outer_surface_only = false;
+  tie_all.moved_bone_contact = MovedBoneContact::kTied;
   attached = attach_to_bone(inner, box, {{uint8_t(2), move}}, {}, tie_all);
   EXPECT_EQ(count_nodes(attached.bc, NodeConstraint::kPrescribed), 9);
   attached = attach_to_bone(inner, box, {}, {}, outer_only);
@@ -222,6 +225,36 @@ TEST(BoneAttachment, MovedBoneCarriesOnlyItsOuterSurface) {
   attached = attach_to_bone(outer, box, {{uint8_t(2), move}}, {}, outer_only);
   EXPECT_EQ(count_nodes(attached.bc, NodeConstraint::kPrescribed), 9);
   EXPECT_EQ(attached.inner_nodes, 0);
+}
+
+TEST(BoneAttachment, TissueOnMovedBoneSlidesAlongItsOutwardNormal) {
+  // A block of bone (segment 2, moved sideways and up) under a tet cube whose bottom lies 1.2 mm
+  // above it; a cut plane through the cube's top holds it.
+  const auto slab =
+      bone_volume([](int i, int j, int k) { return i >= 10 && i <= 50 && j >= 10 && j <= 50 && k <= 50; });
+  const Eigen::Isometry3d move(Eigen::Translation3d(0, 3, 1));
+  auto tissue = cube(8, 2);
+  tissue.nodes.rowwise() += Eigen::RowVector3d(26, 26, 51.2);
+  const std::vector<RegionPlane> top{{Eigen::Vector3d(0, 0, 59.2), -Eigen::Vector3d::UnitZ()}};
+  AttachmentOptions sliding;
+  sliding.moved_bone_contact = MovedBoneContact::kSliding;
+  auto attached = attach_to_bone(tissue, slab, {{uint8_t(2), move}}, top, sliding);
+  EXPECT_EQ(count_nodes(attached.bc, NodeConstraint::kSliding), 9);
+  EXPECT_EQ(count_nodes(attached.bc, NodeConstraint::kPrescribed), 0);
+  for (int i = 0; i < tissue.node_count(); ++i) {
+    if (attached.bc.constraint[size_t(i)] != NodeConstraint::kSliding) continue;
+    EXPECT_GT(attached.bc.normal.row(i).dot(Eigen::RowVector3d::UnitZ()), std::cos(M_PI / 180)) << i;
+    EXPECT_NEAR(attached.bc.imposed(i).z(), 1.0, 1e-9);  // pushed up, not carried sideways
+    EXPECT_NEAR(attached.bc.imposed(i).y(), 0.0, 1e-9);
+    EXPECT_EQ(attached.segment[size_t(i)], 2);
+  }
+  // Nothing else holding it, the block would slide off: it follows its bone after all.
+  attached = attach_to_bone(tissue, slab, {{uint8_t(2), move}}, {}, sliding);
+  EXPECT_EQ(count_nodes(attached.bc, NodeConstraint::kSliding), 0);
+  EXPECT_EQ(count_nodes(attached.bc, NodeConstraint::kPrescribed), 9);
+  // Unmoved bone holds its tissue either way.
+  attached = attach_to_bone(tissue, slab, {}, top, sliding);
+  EXPECT_EQ(count_nodes(attached.bc, NodeConstraint::kFixed), 9 + 9);
 }
 
 TEST(BoundaryMove, LargestMoveWithinTheBandInsideEachPlane) {
