@@ -34,6 +34,7 @@ void run_sample(const SampleOptions& options, CommandContext& ctx) {
                    {"variation", request.varied ? describe_variation(spec) : ""},
                    {"maxillary_advancement_mm", spec.maxillary_advancement_mm},
                    {"mandibular_protrusion_mm", spec.mandibular_protrusion_mm},
+                   {"mandibular_deviation_mm", spec.mandibular_deviation_mm},
                    {"ct",
                     {{"folder", sample.ct_folder.string()},
                      {"files", sample.series.files.size()},

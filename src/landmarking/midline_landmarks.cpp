@@ -188,6 +188,29 @@ void find_maxillary_midline(const HeadVolume& v, double scale, Findings& found) 
                                     length < 42 * scale ? "a short hard palate" : "");
 }
 
+namespace {
+
+// The chin's own middle (x in the head frame): a chin deviated to one side (an asymmetric
+// mandible) has its midsagittal points off the skull's midline. At Pog's height and 3 mm above
+// and below, a ray from either side 3 mm behind the chin's front meets the symphysis' outer
+// cortex; the middle of each pair, the median of the three. 0 (the skull's midline) when a ray
+// misses or the middle lies within kChinMiddleToleranceMm of it.
+constexpr double kChinRaysBehindFrontMm = 3, kChinRayReachMm = 40, kChinMiddleToleranceMm = 0.25;
+double symphysis_middle_x(const HeadVolume& v, const ProfilePoint& pog) {
+  std::vector<double> middles;
+  for (double dz : {-3.0, 0.0, 3.0}) {
+    const double y = pog.y + kChinRaysBehindFrontMm, z = pog.z + dz;
+    const auto right = first_edge(v, {-kChinRayReachMm, y, z}, {1, 0, 0}, kChinRayReachMm, kBoneHu);
+    const auto left = first_edge(v, {kChinRayReachMm, y, z}, {-1, 0, 0}, kChinRayReachMm, kBoneHu);
+    if (!right || !left || left->x() <= right->x()) return 0;
+    middles.push_back((right->x() + left->x()) / 2);
+  }
+  std::sort(middles.begin(), middles.end());
+  return std::abs(middles[1]) < kChinMiddleToleranceMm ? 0 : middles[1];
+}
+
+}  // namespace
+
 void find_symphysis(const HeadVolume& v, double scale, Findings& found) {
   // The template's window, carried with the lower incisor when it was found: faces differ in
   // height far more than a lower incisor differs from its symphysis.
@@ -198,19 +221,32 @@ void find_symphysis(const HeadVolume& v, double scale, Findings& found) {
     shift = Eigen::Vector3d(0, 1, 1).cwiseProduct(*l1_found->second.position - l1_template);
   const Eigen::Vector3d b = expected_position("B", scale) + shift, me = expected_position("Me", scale) + shift;
   const Eigen::Vector3d l1 = l1_template + shift;
-  const Profile front = anterior_profile(v, l1.z() - 2, me.z() - 8, b.y() - 30, b.y() + 45, kBoneHu, 0, kMidlineSlabMm);
-  Profile bone_front;  // below the crowns of the lower incisors
-  for (const auto& p : front)
-    if (!is_tooth(v, p)) bone_front.push_back(p);
+  // The symphysis' front below the crowns of the lower incisors, read in a slab about x = middle.
+  auto bone_front_at = [&](double middle) {
+    Profile bone_front;
+    for (const auto& p :
+         anterior_profile(v, l1.z() - 2, me.z() - 8, b.y() - 30, b.y() + 45, kBoneHu, middle, kMidlineSlabMm))
+      if (!is_tooth(v, p)) bone_front.push_back(p);
+    return bone_front;
+  };
   // Pog: the lowest forward extremum (the chin); B: the deepest point above it, below the crowns.
-  const int pog = lowest_local_extremum(bone_front, -1, 4);
+  // Read first in the skull's midline, then again in the chin's own (a chin to one side).
+  Profile bone_front = bone_front_at(0);
+  int pog = lowest_local_extremum(bone_front, -1, 4);
+  const double middle = pog < 0 ? 0 : symphysis_middle_x(v, refined_extremum(bone_front, pog, 5));
+  if (middle != 0) {
+    bone_front = bone_front_at(middle);
+    pog = lowest_local_extremum(bone_front, -1, 4);
+    find_lower_incisor(v, scale, middle, found);  // the lower arch goes with its chin
+  }
   if (pog < 0) {
     for (const char* label : {"Pog", "B", "Me", "Gn"})
       found[label] = RuleFinding::absent("no bony chin in the midline");
     return;
   }
+  auto chin_point = [middle](const ProfilePoint& p) { return Eigen::Vector3d(middle, p.y, p.z); };
   const ProfilePoint pog_point = refined_extremum(bone_front, pog, 5);
-  found["Pog"] = RuleFinding::found(midline_point(pog_point), 1);
+  found["Pog"] = RuleFinding::found(chin_point(pog_point), 1);
   // Read upwards from Pog, the alveolar front continues to the crowns; where it jumps (into the
   // mouth between the teeth, onto a crown) the symphysis has ended.
   Profile upwards = between_heights(bone_front, pog_point.z, bone_front.front().z);
@@ -218,23 +254,24 @@ void find_symphysis(const HeadVolume& v, double scale, Findings& found) {
   const Profile above = between_heights(until_jump(upwards, 3), pog_point.z + 1, bone_front.front().z);
   if (const auto deepest = extreme(above, +1)) {
     const double depth = deepest->y - pog_point.y;
-    found["B"] = RuleFinding::found(midline_point(*deepest), evidence_between(depth, 0.5, 3));
+    found["B"] = RuleFinding::found(chin_point(*deepest), evidence_between(depth, 0.5, 3));
   } else {
     found["B"] = RuleFinding::absent("no alveolar bone above the chin");
   }
   // Me: the lowest point of the symphysis, from rays up through the chin's underside.
   Profile underside;  // (z, y) swapped roles: here "y" holds the height of the hit, "z" the column
   for (double y = pog_point.y - 4; y <= pog_point.y + 25 * scale; y += 0.25)
-    if (auto hit = first_edge(v, {0, y, me.z() - 25}, {0, 0, 1}, 35, kBoneHu)) underside.push_back({y, hit->z(), 0});
+    if (auto hit = first_edge(v, {middle, y, me.z() - 25}, {0, 0, 1}, 35, kBoneHu))
+      underside.push_back({y, hit->z(), middle});
   if (underside.size() < 5) {
     found["Me"] = found["Gn"] = RuleFinding::absent("no lower border of the symphysis");
     return;
   }
   const ProfilePoint lowest = refined_extremum(underside, most_anterior(underside), 5);
-  found["Me"] = RuleFinding::found({0, lowest.z, lowest.y}, 1);
+  found["Me"] = RuleFinding::found({middle, lowest.z, lowest.y}, 1);
   // Gn: the chin's support point along the antero-inferior bisector.
   const Eigen::Vector3d d = Eigen::Vector3d(0, 1, 1).normalized(), across(0, 1, -1);
-  const Eigen::Vector3d centre(0, pog_point.y + 8, lowest.y + 12);
+  const Eigen::Vector3d centre(middle, pog_point.y + 8, lowest.y + 12);
   Profile support;  // z holds the offset across, y the distance along d
   for (double s = -14; s <= 14; s += 0.25)
     if (auto hit = first_edge(v, centre - 40 * d + s * across.normalized(), d, 45, kBoneHu))
@@ -250,13 +287,14 @@ void find_symphysis(const HeadVolume& v, double scale, Findings& found) {
 namespace {
 
 // The middle of the right central incisor's width (x) 1 mm inside its edge: between its distal
-// end and its mesial one, which is its contact with the left central incisor at the midline
-// (x = 0 in the head frame) unless a gap shows within 1.5 mm of it.
-double crown_middle_x(const HeadVolume& v, const Eigen::Vector3d& edge, double rootward) {
-  const Eigen::Vector3d inside(-2.5, edge.y(), edge.z() + rootward);
+// end and its mesial one, which is its contact with the left central incisor at the arch's
+// midline (`midline_x`: 0 in the head frame, the chin's middle for a lower arch to one side)
+// unless a gap shows within 1.5 mm of it.
+double crown_middle_x(const HeadVolume& v, const Eigen::Vector3d& edge, double rootward, double midline_x = 0) {
+  const Eigen::Vector3d inside(midline_x - 2.5, edge.y(), edge.z() + rootward);
   const auto distal = first_drop(v, inside, {-1, 0, 0}, 9, kToothSurfaceHu, 0.1);
   const auto mesial = first_drop(v, inside, {1, 0, 0}, 4, kToothSurfaceHu, 0.1);
-  const double mesial_x = mesial && mesial->x() < 1.5 ? mesial->x() : 0;
+  const double mesial_x = mesial && mesial->x() < midline_x + 1.5 ? mesial->x() : midline_x;
   return distal ? (distal->x() + mesial_x) / 2 : edge.x();
 }
 
@@ -306,15 +344,8 @@ int overjet_jump(const Profile& lingual, const Eigen::Vector3d& upper_edge, doub
 
 }  // namespace
 
-void find_incisors(const HeadVolume& v, double scale, Findings& found) {
-  const Eigen::Vector3d u1 = expected_position("U1", scale), l1 = expected_position("L1", scale);
-  // The patient's right central incisors (x < 0), as the phantom and most analyses take them.
-  const Profile upper_labial =
-      anterior_profile(v, u1.z() + 8, u1.z() - 12, u1.y() - 20, u1.y() + 20, kToothSurfaceHu, u1.x(), 2.5);
-  if (const auto tip = upper_incisor_tip(upper_labial))
-    found["U1"] = RuleFinding::found(upper_incisal_edge_centre(v, *tip), 1);
-  else
-    found["U1"] = RuleFinding::absent("no upper incisor crown ending above the lower arch");
+void find_lower_incisor(const HeadVolume& v, double scale, double midline_x, Findings& found) {
+  const Eigen::Vector3d l1 = expected_position("L1", scale) + Eigen::Vector3d(midline_x, 0, 0);
   // The lower incisor's lingual face, from inside the mouth, bottom up.
   Profile lower_lingual;
   for (double z = l1.z() - 12; z <= l1.z() + 8; z += 0.25) {
@@ -343,8 +374,20 @@ void find_incisors(const HeadVolume& v, double scale, Findings& found) {
   const auto labial =
       first_drop(v, {lingual_tip.x, lingual_tip.y - 0.1, lingual_tip.z - 1.5}, {0, -1, 0}, 7, kToothSurfaceHu, 0.1);
   const double y = labial ? (lingual_tip.y + labial->y()) / 2 : lingual_tip.y - 0.6;
-  const double x = crown_middle_x(v, {lingual_tip.x, y, lingual_tip.z}, -1);
+  const double x = crown_middle_x(v, {lingual_tip.x, y, lingual_tip.z}, -1, midline_x);
   found["L1"] = RuleFinding::found({x, y, lingual_tip.z}, labial ? 1 : 0.6);
+}
+
+void find_incisors(const HeadVolume& v, double scale, Findings& found) {
+  const Eigen::Vector3d u1 = expected_position("U1", scale);
+  // The patient's right central incisors (x < 0), as the phantom and most analyses take them.
+  const Profile upper_labial =
+      anterior_profile(v, u1.z() + 8, u1.z() - 12, u1.y() - 20, u1.y() + 20, kToothSurfaceHu, u1.x(), 2.5);
+  if (const auto tip = upper_incisor_tip(upper_labial))
+    found["U1"] = RuleFinding::found(upper_incisal_edge_centre(v, *tip), 1);
+  else
+    found["U1"] = RuleFinding::absent("no upper incisor crown ending above the lower arch");
+  find_lower_incisor(v, scale, 0, found);
 }
 
 void find_soft_tissue_profile(const HeadVolume& v, double scale, Findings& found) {

@@ -26,10 +26,12 @@ namespace maxillo::landmarking {
 RuleFinding find_nasion(const HeadVolume& v, const Eigen::Vector3d& expected);
 // ANS, A and PNS together (A and PNS are read from ANS).
 void find_maxillary_midline(const HeadVolume& v, double scale, Findings& found);
-// B, Pog, Me and Gn together.
+// B, Pog, Me and Gn together, in the chin's own middle (a chin to one side: L1 again there).
 void find_symphysis(const HeadVolume& v, double scale, Findings& found);
 // U1 and L1.
 void find_incisors(const HeadVolume& v, double scale, Findings& found);
+// L1 alone, its window and its arch's midline `midline_x` mm to the left of the skull's.
+void find_lower_incisor(const HeadVolume& v, double scale, double midline_x, Findings& found);
 // NS, Prn, Sn, Ls, Li, PogS, from the skin profile (needs N and Me or their expected positions).
 void find_soft_tissue_profile(const HeadVolume& v, double scale, Findings& found);
 

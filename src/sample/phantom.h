@@ -85,6 +85,9 @@ struct PhantomSpec {
   // Anterior displacement (mm) of the mandibular body and chin (+ = protrusion, Class III);
   // the rami and condyles stay in place, the body between them is stretched.
   double mandibular_protrusion_mm = 0;
+  // Lateral displacement (mm, + = the patient's left, LPS +x) of the mandibular body and chin,
+  // the rami and condyles staying in place: a chin deviated to one side (asymmetry).
+  double mandibular_deviation_mm = 0;
   double noise_sigma_hu = 15;  // Gaussian noise added to the HU; 0 = none
   uint32_t noise_seed = 20240521;
   PartialVolume partial_volume = PartialVolume::Blurred;

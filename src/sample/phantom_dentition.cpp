@@ -216,8 +216,11 @@ void add_dentition_parts(const PhantomDesign& design, PartList& parts) {
           box = box.united({corner, corner});
         }
     double shift = std::abs(t.jaw == Jaw::kUpper ? design.maxilla_shift : design.mandible_shift);
+    double deviation = t.jaw == Jaw::kUpper ? 0 : std::abs(design.mandible_deviation);
     box.lo.y() -= shift;
     box.hi.y() += shift;
+    box.lo.x() -= deviation;
+    box.hi.x() += deviation;
     Tissue tissue = t.jaw == Jaw::kUpper ? Tissue::kUpperTooth : Tissue::kLowerTooth;
     // Upper teeth replace maxillary bone, lower teeth mandibular bone; neither replaces the
     // other arch (with the knobs, incisors may meet: the upper arch wins).
@@ -246,7 +249,8 @@ void add_amalgam_fillings(const PhantomDesign& design, PartList& parts) {
         const Vector3d local(q.dot(tooth->mesiodistal) / 1.75, q.dot(tooth->buccal) / 1.25, q.dot(tooth->apical) / 1.0);
         return local.squaredNorm() < 1 && dentition->inside(*tooth, ToothPart::kCrown, p);
       };
-      double shift = std::abs(jaw == Jaw::kUpper ? design.maxilla_shift : design.mandible_shift) + 3;
+      double shift = std::abs(jaw == Jaw::kUpper ? design.maxilla_shift : design.mandible_shift) +
+                     (jaw == Jaw::kUpper ? 0 : std::abs(design.mandible_deviation)) + 3;
       const Tissue tissue = jaw == Jaw::kUpper ? Tissue::kUpperTooth : Tissue::kLowerTooth;
       parts.push_back({"amalgam filling", Box::around(centre, Vector3d::Constant(shift)), inside, tissue,
                        Material::kAmalgam, mask_of(tissue)});

@@ -61,16 +61,18 @@ Vector3d PhantomDesign::to_mandible_reference(const Vector3d& p) const {
   // Invert a_ref + shift * w(a_ref) = a by fixed-point iteration (contraction: shift * w' < 1).
   double a = anterior(p), a_ref = a;
   for (int i = 0; i < 6; ++i) a_ref = a - mandible_shift * mandible_weight(a_ref);
-  return {p.x(), -a_ref, p.z()};
+  return {p.x() - mandible_deviation * mandible_weight(a_ref), -a_ref, p.z()};
 }
 Vector3d PhantomDesign::from_mandible_reference(const Vector3d& p) const {
-  return {p.x(), p.y() - mandible_shift * mandible_weight(anterior(p)), p.z()};
+  const double w = mandible_weight(anterior(p));
+  return {p.x() + mandible_deviation * w, p.y() - mandible_shift * w, p.z()};
 }
 
 PhantomDesign make_design(const PhantomSpec& spec) {
   PhantomDesign d;
   d.maxilla_shift = spec.maxillary_advancement_mm;
   d.mandible_shift = spec.mandibular_protrusion_mm;
+  d.mandible_deviation = spec.mandibular_deviation_mm;
   d.S = lps(0, 0, kSellaHeight);
   d.N = point_from(d.S, kSellaNasion, kSnToFrankfort);
   // Ray N->S points at 180 + 7 deg; A and B are reached by turning towards inferior.

@@ -5,7 +5,7 @@
 // Reference anatomy = Class I, built in the mid-sagittal plane from:
 //   S at (0, 0, 20) mm, S-N 70 mm rising 7 deg anteriorly above Frankfort horizontal (z = 0),
 //   A at 58 mm from N with SNA 82 deg, B at 95 mm from N with SNB 80 deg.
-// Displaced anatomy: a query point is pulled back to the reference anatomy
+// Displaced anatomy (the mandible also to one side, PhantomSpec::mandibular_deviation_mm): a query point is pulled back to the reference anatomy
 // (to_maxilla_reference / to_mandible_reference) and a landmark is pushed forward
 // (from_maxilla_reference / from_mandible_reference), so landmarks stay exactly on their parts.
 #include "sample/implicit.h"
@@ -27,8 +27,9 @@ inline constexpr double kChinHeight = 13.5;    // mental protuberance semi-axis,
 inline constexpr double kChinHalfWidth = 14;   // mental protuberance semi-axis, lateral (mm)
 
 struct PhantomDesign {
-  double maxilla_shift = 0;   // mm anterior, below the Le Fort I level
-  double mandible_shift = 0;  // mm anterior, mandibular body and chin
+  double maxilla_shift = 0;       // mm anterior, below the Le Fort I level
+  double mandible_shift = 0;      // mm anterior, mandibular body and chin
+  double mandible_deviation = 0;  // mm to the patient's left (+x), mandibular body and chin
 
   // Reference (undisplaced) mid-sagittal skeleton, LPS mm.
   Vector3d S, N, A, B, ANS, PNS, Pog, Gn, Me;

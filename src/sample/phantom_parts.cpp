@@ -24,9 +24,11 @@ Part with_maxilla(const PhantomDesign& design, Part part) {
 Part with_mandible(const PhantomDesign& design, Part part) {
   auto inside = std::move(part.inside);
   part.inside = [design, inside](const Vector3d& p) { return inside(design.to_mandible_reference(p)); };
-  double shift = std::abs(design.mandible_shift);
+  double shift = std::abs(design.mandible_shift), deviation = std::abs(design.mandible_deviation);
   part.box.lo.y() -= shift;
   part.box.hi.y() += shift;
+  part.box.lo.x() -= deviation;
+  part.box.hi.x() += deviation;
   return part;
 }
 

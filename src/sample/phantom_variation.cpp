@@ -27,6 +27,9 @@ class Draws {
   std::mt19937_64 random_;
 };
 
+// A chin deviation up to this far to either side.
+constexpr double kChinDeviationMm = 3;
+
 PhantomPlacement draw_placement(Draws& draws) {
   PhantomPlacement placement;
   placement.scale = draws.uniform(0.92, 1.08);
@@ -69,17 +72,19 @@ PhantomSpec varied_phantom_spec(std::string_view patient_id, ScannerKind scanner
   } else {
     spec.noise_sigma_hu = draws.uniform(5, 30);
   }
+  // Drawn last, so that the draws above (and the patients they made before) stay the same.
+  spec.mandibular_deviation_mm = draws.uniform(-kChinDeviationMm, kChinDeviationMm);
   return spec;
 }
 
 std::string describe_variation(const PhantomSpec& spec) {
   char text[320];
   std::snprintf(text, sizeof text,
-                "scale %.3f, maxilla %+.1f mm, mandible %+.1f mm, turned %.1f deg, shifted (%.1f, %.1f, %.1f) mm, "
-                "noise %.0f HU",
+                "scale %.3f, maxilla %+.1f mm, mandible %+.1f mm, chin %+.1f mm to the left, turned %.1f deg, "
+                "shifted (%.1f, %.1f, %.1f) mm, noise %.0f HU",
                 spec.placement.scale, spec.maxillary_advancement_mm, spec.mandibular_protrusion_mm,
-                Eigen::AngleAxisd(spec.placement.rotation).angle() / kDeg, spec.placement.shift.x(),
-                spec.placement.shift.y(), spec.placement.shift.z(), spec.noise_sigma_hu);
+                spec.mandibular_deviation_mm, Eigen::AngleAxisd(spec.placement.rotation).angle() / kDeg,
+                spec.placement.shift.x(), spec.placement.shift.y(), spec.placement.shift.z(), spec.noise_sigma_hu);
   std::string description = text;
   if (const auto& cb = spec.cone_beam) {
     std::snprintf(text, sizeof text,

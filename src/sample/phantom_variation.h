@@ -17,8 +17,10 @@
 //                radius whose top lies 25-60 mm above Frankfort (above the orbits, sometimes
 //                below sella) and whose axis lies 20-40 mm in front of the porions (the ears often
 //                outside), padded with air's grey value or 200 below it.
-// Not varied (yet): facial height, the mandibular angle and left-right asymmetry, which need
-// the design's own knobs to keep the landmark definitions exact.
+//   asymmetry    the mandibular body and chin 0-3 mm to one side, the rami in place (a chin
+//                deviation; 4 mm is where published series start calling a face asymmetric).
+// Not varied (yet): facial height and the mandibular angle, which need the design's own knobs to
+// keep the landmark definitions exact.
 #include <string>
 #include <string_view>
 

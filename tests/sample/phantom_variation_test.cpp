@@ -51,6 +51,32 @@ TEST(PhantomVariation, ThePatientIdDecidesThePatient) {
   EXPECT_GT(most_anb, 6.0);    // Class II
 }
 
+// A chin to one side: the mandibular body and chin move by the deviation, the rami, the cranium
+// and the upper jaw stay; some patients' chins lie to the left, some to the right.
+TEST(PhantomVariation, AChinToOneSideMovesTheMandibularBodyAlone) {
+  PhantomSpec deviated;
+  deviated.mandibular_deviation_mm = 2.5;
+  const LandmarkSet moved = make_phantom_landmarks(deviated), straight = make_phantom_landmarks({});
+  for (const char* label : {"B", "Pog", "Me", "Gn", "L1"})
+    EXPECT_LT((*find_landmark(moved, label) - *find_landmark(straight, label) - Eigen::Vector3d(2.5, 0, 0)).norm(),
+              1e-9)
+        << label;
+  for (const char* label : {"S", "N", "A", "ANS", "U1", "U6R", "GoR", "GoL", "ArR", "ArL", "PoR", "OrL"})
+    EXPECT_LT((*find_landmark(moved, label) - *find_landmark(straight, label)).norm(), 1e-9) << label;
+  // The bone is there: the chin's bone moved with its landmark.
+  const Phantom phantom = make_phantom(quiet(deviated));
+  const Eigen::Vector3d pog = *find_landmark(phantom.landmarks, "Pog");
+  EXPECT_EQ(label_at(phantom.labels, pog + Eigen::Vector3d(0, 2, 0)), uint8_t(Tissue::kMandible));
+  double leftmost = 0, rightmost = 0;
+  for (int id = 0; id < 200; ++id) {
+    const double d = varied_phantom_spec("ID" + std::to_string(id), ScannerKind::kCt, 1.0).mandibular_deviation_mm;
+    EXPECT_LE(std::abs(d), 3.0);
+    leftmost = std::max(leftmost, d), rightmost = std::min(rightmost, d);
+  }
+  EXPECT_GT(leftmost, 2.5);
+  EXPECT_LT(rightmost, -2.5);
+}
+
 // The placed head is the designed head moved: a voxel of the placed scan holds what the designed
 // head holds where the placement sends it back, and the landmarks moved the same way.
 TEST(PhantomVariation, ThePlacedHeadAndItsLandmarksMoveTogether) {
