@@ -22,7 +22,7 @@ StaticSolution solve_block_pcg(const StiffnessBlocks& stiffness, const BoundaryC
 // of a fixed or prescribed one; its imposed values are not read). Vectors are node-major
 // (entries 3 i .. 3 i + 2 belong to node i, length 3 n); b's parts in constrained directions are
 // ignored and x has none. Used by the non-linear FEM for its Newton steps, with the tangent
-// stiffness in `stiffness`.
+// stiffness in `stiffness`. A b that is not finite returns at once: not converged, x = 0.
 struct BlockPcgResult {
   Eigen::VectorXd x;
   bool converged = false;

@@ -1,8 +1,12 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
+
 #include "softtissue/cube_benchmark.h"
 #include "softtissue/factorised_elasticity.h"
 #include "softtissue/free_system.h"
+#include "softtissue/block_pcg.h"
 #include "softtissue/linear_static_solve.h"
 #include "softtissue/rigid_plan_basis.h"
 #include "test_problems.h"
@@ -99,6 +103,22 @@ TEST(FactorisedElasticity, UnconstrainedMeshIsNotPositiveDefinite) {
 
 // Scaling the mesh and the imposed displacements by s scales the answer by s (the static
 // answer has no length scale of its own), for s = 1e3 and 1e-3.
+// A right-hand side with NaN (forces of an inverted neo-Hookean tet) has no answer: the block
+// conjugate gradient says so at once instead of iterating NaN to its limit.
+TEST(BlockPcg, ANonFiniteRightHandSideReturnsAtOnceUnconverged) {
+  const auto mesh = make_cube_mesh({10.0, 2, HexSplit::kSixTets});
+  const auto stiffness = assemble_stiffness_blocks(mesh, {0.003, 0.45});
+  BoundaryConditions bc = testing::affine_on_border(mesh, 10.0, Eigen::Matrix3d::Zero(), Eigen::Vector3d::Zero());
+  Eigen::VectorXd b = Eigen::VectorXd::Ones(3 * mesh.node_count());
+  b(0) = std::numeric_limits<double>::quiet_NaN();
+  bc.constraint.assign(bc.constraint.size(), NodeConstraint::kFree);  // every entry of b is read
+  const BlockPcgResult result = solve_free_block_pcg(stiffness, bc, b, 1e-8, 20000);
+  EXPECT_FALSE(result.converged);
+  EXPECT_EQ(result.iterations, 0);
+  EXPECT_TRUE(std::isnan(result.relative_residual));
+  EXPECT_TRUE(result.x.isZero());
+}
+
 TEST(LinearStatic, ScaleInvariance) {
   CubeSpec spec{100.0, 6, HexSplit::kFiveTets};
   TetMesh mesh = make_cube_mesh(spec);
