@@ -25,7 +25,7 @@ struct FaceRealismOptions {
 };
 
 // Error(kFileNotFound) when the cadaver head is absent. Figures: preparation_seconds,
-// landmarks_by_hand, free_cavities, bone_contact ("tied" or "sliding"), nose_root, part_lips, lips_parted_faces, nose_stiffness, nose_tets, face_model (tets, nodes, cell_mm, seconds), published (label,
+// landmarks_by_hand, free_cavities, bone_contact (softtissue::contact_name), nose_root, part_lips, lips_parted_faces, nose_stiffness, nose_tets, face_model (tets, nodes, cell_mm, seconds), published (label,
 // published, source, plausible_low/high), advancements_mm, runs (advancement_mm, model, title,
 // seconds; error when it failed, else iterations, points: label, present, forward_mm, ratio,
 // plausible; gradient_p999, gradient_max, moved_edges; boundary_move_mm, the largest move within

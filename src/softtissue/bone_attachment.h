@@ -40,7 +40,7 @@ enum class MovedBoneContact {
   kSlidingInCavities,  // sliding inside the bone's cavities (inside_bone_cavity), tied on its outer surface
 };
 
-// "tied" or "sliding", and back (std::nullopt for another name).
+// "tied", "sliding" or "sliding-in-cavities", and back (std::nullopt for another name); all three.
 const char* contact_name(MovedBoneContact contact);
 std::optional<MovedBoneContact> contact_named(std::string_view name);
 std::vector<std::string> contact_names();

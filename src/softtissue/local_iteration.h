@@ -32,9 +32,10 @@ struct LocalIterationResult {
 };
 
 // The local dynamic stop criterion, shared by the point-wise solvers. Sweeps over the active
-// points in index order; update_point(i) moves free or sliding point i by its local solve and returns the
-// step (mm). A point that moved more than options.gradient_threshold_mm stays active and wakes
-// its free neighbours (CSR adjacency: neighbours of i are neighbours[offsets[i]..offsets[i+1])),
+// points in index order; update_point(i) moves free or sliding point i by its local solve and
+// returns the step (mm). A point that moved more than options.gradient_threshold_mm stays active
+// and wakes its free and sliding neighbours (CSR adjacency: neighbours of i are
+// neighbours[offsets[i]..offsets[i+1])),
 // every other point goes to rest. Fills result's iterations, point_updates, last_max_move_mm
 // and status; the caller fills the displacement.
 template <typename UpdatePoint>
