@@ -209,7 +209,31 @@ double symphysis_middle_x(const HeadVolume& v, const ProfilePoint& pog) {
   return std::abs(middles[1]) < kChinMiddleToleranceMm ? 0 : middles[1];
 }
 
+// A chin too flat to have its extremes in the head frame: the forward bulge and the concavity
+// above it differ by less than this (a frame pitched a few degrees moves them that much).
+constexpr double kFlatChinMm = 1;
+
 }  // namespace
+
+std::optional<ChinReading> chin_from_nasion(const Profile& alveolar_front, const Eigen::Vector3d& nasion,
+                                            double lowest_chin_z) {
+  if (alveolar_front.size() < 8) return std::nullopt;
+  const ProfilePoint id = alveolar_front.back();
+  const Profile chin = between_heights(alveolar_front, lowest_chin_z, (id.z + lowest_chin_z) / 2);
+  if (chin.size() < 5) return std::nullopt;
+  std::vector<double> forwardness(chin.size());  // the slope of the line from nasion, forward positive
+  for (size_t i = 0; i < chin.size(); ++i) forwardness[i] = (nasion.y() - chin[i].y) / (nasion.z() - chin[i].z);
+  const int touch = int(std::max_element(forwardness.begin(), forwardness.end()) - forwardness.begin());
+  const ProfilePoint pog = refined_peak(chin, forwardness, touch, 5);
+  const Profile concavity = between_heights(alveolar_front, pog.z + 1, id.z - 1);
+  if (concavity.size() < 5) return std::nullopt;
+  const Eigen::Vector2d along = Eigen::Vector2d(id.y - pog.y, id.z - pog.z).normalized();
+  std::vector<double> depth(concavity.size());  // behind the chord, posterior positive
+  for (size_t i = 0; i < concavity.size(); ++i)
+    depth[i] = along.y() * (concavity[i].y - pog.y) - along.x() * (concavity[i].z - pog.z);
+  const int deepest = int(std::max_element(depth.begin(), depth.end()) - depth.begin());
+  return ChinReading{pog, refined_peak(concavity, depth, deepest, 4), depth[size_t(deepest)]};
+}
 
 void find_symphysis(const HeadVolume& v, double scale, Findings& found) {
   // The template's window, carried with the lower incisor when it was found: faces differ in
@@ -245,18 +269,32 @@ void find_symphysis(const HeadVolume& v, double scale, Findings& found) {
     return;
   }
   auto chin_point = [middle](const ProfilePoint& p) { return Eigen::Vector3d(middle, p.y, p.z); };
-  const ProfilePoint pog_point = refined_extremum(bone_front, pog, 5);
-  found["Pog"] = RuleFinding::found(chin_point(pog_point), 1);
-  // Read upwards from Pog, the alveolar front continues to the crowns; where it jumps (into the
-  // mouth between the teeth, onto a crown) the symphysis has ended.
-  Profile upwards = between_heights(bone_front, pog_point.z, bone_front.front().z);
+  ProfilePoint pog_point = refined_extremum(bone_front, pog, 5);
+  // Read upwards from below Pog, the alveolar front continues to the crowns; where it jumps
+  // (into the mouth between the teeth, onto a crown) the symphysis has ended.
+  const double lowest_chin_z = pog_point.z - 10;
+  Profile upwards = between_heights(bone_front, lowest_chin_z, bone_front.front().z);
   std::reverse(upwards.begin(), upwards.end());
-  const Profile above = between_heights(until_jump(upwards, 3), pog_point.z + 1, bone_front.front().z);
-  if (const auto deepest = extreme(above, +1)) {
-    const double depth = deepest->y - pog_point.y;
-    found["B"] = RuleFinding::found(chin_point(*deepest), evidence_between(depth, 0.5, 3));
-  } else {
-    found["B"] = RuleFinding::absent("no alveolar bone above the chin");
+  const Profile alveolar_front = until_jump(upwards, 3);
+  const Profile above = between_heights(alveolar_front, pog_point.z + 1, bone_front.front().z);
+  const auto deepest = extreme(above, +1);
+  const auto nasion = found.find("N");
+  bool flat_chin = false;
+  if (deepest && deepest->y - pog_point.y < kFlatChinMm && nasion != found.end() && nasion->second.position) {
+    if (const auto flat = chin_from_nasion(alveolar_front, *nasion->second.position, lowest_chin_z)) {
+      found["Pog"] = RuleFinding::found(chin_point(flat->pog), 1, "a flat chin: read on the line from nasion");
+      found["B"] = RuleFinding::found(chin_point(flat->b), evidence_between(flat->b_depth, 0.5, 3),
+                                      "a flat chin: the deepest point behind the line from infradentale to Pog");
+      pog_point = flat->pog;
+      flat_chin = true;
+    }
+  }
+  if (!flat_chin) {
+    found["Pog"] = RuleFinding::found(chin_point(pog_point), 1);
+    if (deepest)
+      found["B"] = RuleFinding::found(chin_point(*deepest), evidence_between(deepest->y - pog_point.y, 0.5, 3));
+    else
+      found["B"] = RuleFinding::absent("no alveolar bone above the chin");
   }
   // Me: the lowest point of the symphysis, from rays up through the chin's underside.
   Profile underside;  // (z, y) swapped roles: here "y" holds the height of the hit, "z" the column

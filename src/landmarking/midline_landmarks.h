@@ -18,7 +18,10 @@
 //        nose), pronasale (nose tip, most anterior), subnasale (deepest point between nose and
 //        upper lip), labrale superius and inferius (most anterior points of the lips), soft-tissue
 //        pogonion (most anterior point of the soft chin)
+#include <optional>
+
 #include "landmarking/head_volume.h"
+#include "landmarking/profile.h"
 #include "landmarking/rule_finding.h"
 
 namespace maxillo::landmarking {
@@ -32,6 +35,18 @@ void find_symphysis(const HeadVolume& v, double scale, Findings& found);
 void find_incisors(const HeadVolume& v, double scale, Findings& found);
 // L1 alone, its window and its arch's midline `midline_x` mm to the left of the skull's.
 void find_lower_incisor(const HeadVolume& v, double scale, double midline_x, Findings& found);
+// The chin read without the head frame, as on a lateral cephalogram of a flat chin (one whose
+// bulge and concavity a frame pitched by a few degrees would erase): Pog where the line from
+// nasion touches the symphysis' front (Downs' facial line), B the deepest point behind the line
+// from infradentale (the top of the alveolar front) to that Pog. `alveolar_front` runs upwards
+// from below the chin to infradentale; the chin is sought from `lowest_chin_z` to halfway up to
+// infradentale. nullopt on too short a profile. find_symphysis reads a flat chin this way.
+struct ChinReading {
+  ProfilePoint pog, b;
+  double b_depth;  // mm behind the line from infradentale to Pog
+};
+std::optional<ChinReading> chin_from_nasion(const Profile& alveolar_front, const Eigen::Vector3d& nasion,
+                                            double lowest_chin_z);
 // NS, Prn, Sn, Ls, Li, PogS, from the skin profile (needs N and Me or their expected positions).
 void find_soft_tissue_profile(const HeadVolume& v, double scale, Findings& found);
 

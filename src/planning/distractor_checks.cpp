@@ -43,20 +43,35 @@ uint8_t label_at(const LabelVolume& volume, const Vector3d& p) {
 
 double side_sign(Side side) { return side == Side::Left ? 1.0 : -1.0; }
 
-// The band of heights (along frame.superior) where a maxillary sinus lies: from 5 mm below
-// the palatal plane to the orbitales. Unbounded without those landmarks.
-std::pair<double, double> sinus_band(const PlanningFrame& frame, const LandmarkSet& landmarks) {
+// Where a maxillary sinus lies: heights (along frame.superior) from 5 mm below the palatal
+// plane to the orbitales, and depths (along frame.anterior) from 5 mm behind PNS to 5 mm in front
+// of ANS. Unbounded where those landmarks are missing. On a real CT the enclosed air also holds
+// the pharynx, the mastoid air cells and the ear canals, all behind PNS and some at the
+// sinus' height; the phantom has none of them.
+struct Interval {
   double low = -std::numeric_limits<double>::infinity(), high = std::numeric_limits<double>::infinity();
+  bool contains(double value) const { return value >= low && value <= high; }
+};
+struct SinusBox {
+  Interval height, depth;
+};
+
+SinusBox sinus_box(const PlanningFrame& frame, const LandmarkSet& landmarks) {
+  SinusBox box;
   const auto ans = find_landmark(landmarks, "ANS"), pns = find_landmark(landmarks, "PNS");
-  if (ans && pns) low = std::min(ans->dot(frame.superior), pns->dot(frame.superior)) - 5;
+  if (ans && pns) {
+    box.height.low = std::min(ans->dot(frame.superior), pns->dot(frame.superior)) - 5;
+    box.depth = {pns->dot(frame.anterior) - 5, ans->dot(frame.anterior) + 5};
+  }
   for (const char* label : {"OrR", "OrL", "Or"})
     if (auto o = find_landmark(landmarks, label))
-      high = std::isinf(high) ? o->dot(frame.superior) : std::max(high, o->dot(frame.superior));
-  return {low, high};
+      box.height.high =
+          std::isinf(box.height.high) ? o->dot(frame.superior) : std::max(box.height.high, o->dot(frame.superior));
+  return box;
 }
 
 std::optional<Vector3d> sinus_centroid(const LabelVolume& volume, const PlanningFrame& frame,
-                                       const AnatomyLabels& anatomy, Side side, const std::pair<double, double>& band) {
+                                       const AnatomyLabels& anatomy, Side side, const SinusBox& box) {
   const VolumeGeometry& g = volume.geometry;
   Vector3d sum = Vector3d::Zero();
   int64_t count = 0;
@@ -66,8 +81,7 @@ std::optional<Vector3d> sinus_centroid(const LabelVolume& volume, const Planning
         if (!has(anatomy.sinus_air, volume.labels[g.index(i, j, k)])) continue;
         const Vector3d p = g.world(Vector3d(i, j, k));
         if (side_sign(side) * (p - frame.origin).dot(frame.left) <= 0) continue;
-        const double height = p.dot(frame.superior);
-        if (height < band.first || height > band.second) continue;
+        if (!box.height.contains(p.dot(frame.superior)) || !box.depth.contains(p.dot(frame.anterior))) continue;
         sum += p;
         ++count;
       }
@@ -256,9 +270,9 @@ std::string_view status_name(CheckStatus status) {
 EntryPoints find_entry_points(const LabelVolume& labels, const PlanningFrame& frame, const AnatomyLabels& anatomy,
                               const LandmarkSet& landmarks) {
   EntryPoints entries;
-  const auto band = sinus_band(frame, landmarks);
+  const SinusBox box = sinus_box(frame, landmarks);
   for (Side side : {Side::Right, Side::Left}) {
-    const auto centroid = sinus_centroid(labels, frame, anatomy, side, band);
+    const auto centroid = sinus_centroid(labels, frame, anatomy, side, box);
     if (!centroid)
       throw Error(ErrorCode::kUnsafePlan, std::string(side_name(side)) + " maxillary sinus",
                   "no sinus air in the label volume to house the distraction screw");

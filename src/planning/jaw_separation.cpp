@@ -2,6 +2,8 @@
 
 #include <Eigen/Geometry>
 #include <array>
+#include <cmath>
+#include <numbers>
 #include <optional>
 
 #include "core/error.h"
@@ -24,29 +26,65 @@ enum OutLabel : uint8_t {
   kMandible = 7
 };
 
-Eigen::Vector3d contact(const LandmarkSet& landmarks, const std::string& upper, const std::string& lower) {
+// Mean adult angles to S-N: the occlusal plane about 16 degrees, the palatal plane about 8
+// (Riolo's Michigan norms, rounded): the occlusal plane runs 8 degrees steeper than the palate,
+// its front end lower.
+constexpr double kOcclusalBelowPalatalPlaneDeg = 8;
+
+std::optional<Eigen::Vector3d> contact(const LandmarkSet& landmarks, const std::string& upper,
+                                       const std::string& lower) {
   auto u = find_landmark(landmarks, upper), l = find_landmark(landmarks, lower);
   if (u && l) return 0.5 * (*u + *l);
   if (u) return *u;
-  if (l) return *l;
-  throw Error(ErrorCode::kBadValue, "jaw separation", "the occlusal plane needs " + upper + " or " + lower);
+  return l;
 }
 
-// Through the incisor contact and the two first molar contacts, normal pointing down.
-CutPlane occlusal_plane(const LandmarkSet& landmarks) {
-  const Eigen::Vector3d incisor = contact(landmarks, "U1", "L1");
-  const Eigen::Vector3d right = contact(landmarks, "U6R", "L6R"), left = contact(landmarks, "U6L", "L6L");
+// The two planes the jaws are told apart by: the occlusal plane (normal pointing down) and the
+// coronal plane behind the dental arches (normal pointing back): the rami lie behind it.
+struct ArchPlanes {
+  CutPlane occlusal, arch_end;
+};
+
+// Through the incisor contact and the two first molar contacts; the arches end
+// `arch_behind_first_molar_mm` behind the molars.
+ArchPlanes planes_from_molars(const Eigen::Vector3d& incisor, const Eigen::Vector3d& right, const Eigen::Vector3d& left,
+                              const AnatomicalFrame& frame, const JawSeparationOptions& o) {
   Eigen::Vector3d normal = (right - incisor).cross(left - incisor).normalized();
-  const auto frame = anatomical_frame(landmarks);
   if (normal.dot(frame.superior) > 0) normal = -normal;
-  return {(incisor + right + left) / 3.0, normal};
+  const Eigen::Vector3d molars = 0.5 * (right + left);
+  return {{(incisor + right + left) / 3.0, normal},
+          {molars - o.arch_behind_first_molar_mm * frame.anterior, -frame.anterior}};
 }
 
-// Coronal plane behind the second molars (normal pointing back): the rami lie behind it.
-CutPlane dental_arch_end(const LandmarkSet& landmarks, const JawSeparationOptions& o) {
+// Without first molars (crowns a CT's metal streaks hide, a posterior arch without teeth): the
+// occlusal plane through the incisor contact at the adults' mean tilt to the palatal plane
+// (ANS-PNS), and the arches ending at PNS, beside which the maxillary tuberosities lie.
+std::optional<ArchPlanes> planes_from_palate(const LandmarkSet& landmarks, const Eigen::Vector3d& incisor,
+                                             const AnatomicalFrame& frame) {
+  auto ans = find_landmark(landmarks, "ANS"), pns = find_landmark(landmarks, "PNS");
+  if (!ans || !pns) return std::nullopt;
+  Eigen::Vector3d forward = *ans - *pns;
+  forward -= forward.dot(frame.left) * frame.left;
+  if (forward.norm() < 10) return std::nullopt;  // no palate to speak of: degenerate landmarks
+  forward.normalize();
+  const Eigen::Vector3d up = forward.cross(frame.left);  // superior, perpendicular to the palate
+  const double tilt = kOcclusalBelowPalatalPlaneDeg * std::numbers::pi / 180;
+  const Eigen::Vector3d occlusal_forward = std::cos(tilt) * forward - std::sin(tilt) * up;
+  Eigen::Vector3d normal = occlusal_forward.cross(frame.left).normalized();
+  if (normal.dot(frame.superior) > 0) normal = -normal;
+  return ArchPlanes{{incisor, normal}, {*pns, -frame.anterior}};
+}
+
+ArchPlanes arch_planes(const LandmarkSet& landmarks, const JawSeparationOptions& o) {
+  const auto incisor = contact(landmarks, "U1", "L1");
+  if (!incisor) throw Error(ErrorCode::kBadValue, "jaw separation", "the occlusal plane needs U1 or L1");
   const auto frame = anatomical_frame(landmarks);
-  const Eigen::Vector3d molars = 0.5 * (contact(landmarks, "U6R", "L6R") + contact(landmarks, "U6L", "L6L"));
-  return {molars - o.arch_behind_first_molar_mm * frame.anterior, -frame.anterior};
+  const auto right = contact(landmarks, "U6R", "L6R"), left = contact(landmarks, "U6L", "L6L");
+  if (right && left) return planes_from_molars(*incisor, *right, *left, frame, o);
+  if (const auto from_palate = planes_from_palate(landmarks, *incisor, frame)) return *from_palate;
+  throw Error(ErrorCode::kBadValue, "jaw separation",
+              std::string("the occlusal plane needs ") + (right ? "U6L or L6L" : "U6R or L6R") +
+                  ", or ANS and PNS to estimate it from the palate");
 }
 
 // Coronal plane a little in front of the porions (normal anterior), if they are known.
@@ -60,7 +98,8 @@ std::optional<CutPlane> in_front_of_ears(const LandmarkSet& landmarks, const Jaw
 }  // namespace
 
 LabelVolume separate_jaws(const LabelVolume& ct_tissues, const LandmarkSet& landmarks, const JawSeparationOptions& o) {
-  const CutPlane occlusal = occlusal_plane(landmarks);
+  const ArchPlanes planes = arch_planes(landmarks, o);
+  const CutPlane& occlusal = planes.occlusal;
   auto menton = find_landmark(landmarks, "Me");
   if (!menton) throw Error(ErrorCode::kBadValue, "jaw separation", "the mandible is found from the landmark Me");
   const auto& g = ct_tissues.geometry;
@@ -69,7 +108,7 @@ LabelVolume separate_jaws(const LabelVolume& ct_tissues, const LandmarkSet& land
   // Bone that may belong to the mandible. Along the dental arches the occlusal plane itself
   // divides the jaws (the alveolar bone of both touches through the teeth); behind the arches
   // the rami rise above it, up to ramus_height_mm.
-  const CutPlane behind_arches = dental_arch_end(landmarks, o);
+  const CutPlane& behind_arches = planes.arch_end;
   // The condyles sit in front of the ear canals: bone behind them (mastoid, occiput, spine)
   // never belongs to the mandible, and may touch it on a CT.
   const std::optional<CutPlane> ears = in_front_of_ears(landmarks, o);

@@ -26,7 +26,8 @@ struct JawSeparationOptions {
 // Input labels: 0 background, 1 soft tissue, 2 enclosed air, 3 bone, 4 teeth. Output: phantom
 // Tissue values (0 air, 1 soft tissue, 2 bone, 3 upper teeth, 4 air inside the head,
 // 6 lower teeth, 7 mandible). Needs U1 and L1 (or one of them), U6R/L6R and U6L/L6L (or one
-// of each pair), and Me; Error naming the missing landmark otherwise.
+// of each pair) or else ANS and PNS (the occlusal plane at the adults' mean tilt to the palate,
+// jaw_separation.cpp), and Me; Error naming the missing landmark otherwise.
 LabelVolume separate_jaws(const LabelVolume& ct_tissues, const LandmarkSet& landmarks,
                           const JawSeparationOptions& options = {});
 

@@ -49,6 +49,23 @@ TEST(CadaverLandmarks, TheMidlineLandmarksLieWhereAPersonReadsThem) {
   EXPECT_NEAR(found.midsagittal.signed_distance({-21.5, 0, 0}), 0, 3.0);
 }
 
+// This head's chin is flat: in the Frankfort frame its bulge stands 2 mm out and B came out 2.7 mm
+// above Pog, failing the order check. Read on the line from nasion (Pog) and behind the line from
+// infradentale (B), both pass, near where a person reads them on the slices (B about 51 mm, Pog
+// about 37 mm high, z to within the 2 mm slices).
+TEST(CadaverLandmarks, ItsFlatChinIsReadOnTheLineFromNasion) {
+  if (!cadaver_present()) GTEST_SKIP() << "real data absent: " << testing::cthead_slices();
+  const LandmarkDetection found = detect_landmarks(cadaver(), "cadaver");
+  const DetectedLandmark *b = found.find("B"), *pog = found.find("Pog");
+  ASSERT_TRUE(b && b->position && pog && pog->position);
+  EXPECT_FALSE(b->flagged());
+  EXPECT_FALSE(pog->flagged());
+  EXPECT_NE(pog->note.find("flat chin"), std::string::npos) << pog->note;
+  EXPECT_NEAR(b->position->z(), 51, 4);
+  EXPECT_NEAR(pog->position->z(), 37, 4);
+  EXPECT_GT(b->position->z() - pog->position->z(), 8);
+}
+
 // The head's orbitales are read 19 mm apart from their mirror images (its right orbital rim is
 // not where the rule looks): the second start, which knows nothing of the other side, finds them
 // elsewhere too. Two independent checks agree, on real data.
