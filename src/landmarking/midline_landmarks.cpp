@@ -209,6 +209,23 @@ double symphysis_middle_x(const HeadVolume& v, const ProfilePoint& pog) {
   return std::abs(middles[1]) < kChinMiddleToleranceMm ? 0 : middles[1];
 }
 
+constexpr double kAlveolarGapMm = 1;
+
+// The alveolar front read upwards (`upwards`), cut at infradentale: its most anterior point above
+// `chin_z` halfway to its top. Above it the alveolar crest curls back towards the crowns (which
+// is_tooth leaves out), and its top would pass for the deepest point of the concavity.
+Profile up_to_infradentale(const Profile& upwards, double chin_z) {
+  if (upwards.empty()) return upwards;
+  // The front ends first where samples go missing over more than a millimetre: the crowns.
+  size_t end = 1;
+  while (end < upwards.size() && upwards[end].z - upwards[end - 1].z <= kAlveolarGapMm) ++end;
+  const double halfway = (chin_z + upwards[end - 1].z) / 2;
+  size_t id = end - 1;
+  for (size_t i = 0; i < end; ++i)
+    if (upwards[i].z >= halfway && upwards[i].y < upwards[id].y) id = i;
+  return Profile(upwards.begin(), upwards.begin() + std::ptrdiff_t(id + 1));
+}
+
 // A chin too flat to have its extremes in the head frame: the forward bulge and the concavity
 // above it differ by less than this (a frame pitched a few degrees moves them that much).
 constexpr double kFlatChinMm = 1;
@@ -271,11 +288,12 @@ void find_symphysis(const HeadVolume& v, double scale, Findings& found) {
   auto chin_point = [middle](const ProfilePoint& p) { return Eigen::Vector3d(middle, p.y, p.z); };
   ProfilePoint pog_point = refined_extremum(bone_front, pog, 5);
   // Read upwards from below Pog, the alveolar front continues to the crowns; where it jumps
-  // (into the mouth between the teeth, onto a crown) the symphysis has ended.
+  // (into the mouth between the teeth, onto a crown) the symphysis has ended, and infradentale,
+  // where it stands furthest forward near its top, ends the search for B.
   const double lowest_chin_z = pog_point.z - 10;
   Profile upwards = between_heights(bone_front, lowest_chin_z, bone_front.front().z);
   std::reverse(upwards.begin(), upwards.end());
-  const Profile alveolar_front = until_jump(upwards, 3);
+  const Profile alveolar_front = up_to_infradentale(until_jump(upwards, 3), pog_point.z);
   const Profile above = between_heights(alveolar_front, pog_point.z + 1, bone_front.front().z);
   const auto deepest = extreme(above, +1);
   const auto nasion = found.find("N");
