@@ -342,16 +342,25 @@ void find_symphysis(const HeadVolume& v, double scale, Findings& found) {
 
 namespace {
 
+// Mean mesio-distal crown widths of the central incisors (mm): the upper about 8.5, the lower
+// about 5.2 (Moyers' adult norms).
+constexpr double kUpperCentralWidthMm = 8.5, kLowerCentralWidthMm = 5.2;
+
 // The middle of the right central incisor's width (x) 1 mm inside its edge: between its distal
 // end and its mesial one, which is its contact with the left central incisor at the arch's
 // midline (`midline_x`: 0 in the head frame, the chin's middle for a lower arch to one side)
-// unless a gap shows within 1.5 mm of it.
-double crown_middle_x(const HeadVolume& v, const Eigen::Vector3d& edge, double rootward, double midline_x = 0) {
+// unless a gap shows within 1.5 mm of it. Neighbouring incisors touch, often with no gap a scan
+// resolves (the lower ones nearly always), and near the thin edge a ray may leave the crown
+// early: a distal end that makes the crown narrower than 0.8 or wider than 1.2 times its mean
+// `width` is not the crown's, and the middle is then half the mean width from the mesial end.
+double crown_middle_x(const HeadVolume& v, const Eigen::Vector3d& edge, double rootward, double width,
+                      double midline_x = 0) {
   const Eigen::Vector3d inside(midline_x - 2.5, edge.y(), edge.z() + rootward);
   const auto distal = first_drop(v, inside, {-1, 0, 0}, 9, kToothSurfaceHu, 0.1);
   const auto mesial = first_drop(v, inside, {1, 0, 0}, 4, kToothSurfaceHu, 0.1);
-  const double mesial_x = mesial && mesial->x() < midline_x + 1.5 ? mesial->x() : midline_x;
-  return distal ? (distal->x() + mesial_x) / 2 : edge.x();
+  const double mesial_x = mesial && std::abs(mesial->x() - midline_x) < 1.5 ? mesial->x() : midline_x;
+  if (distal && std::abs(mesial_x - distal->x() - width) <= 0.2 * width) return (distal->x() + mesial_x) / 2;
+  return mesial_x - width / 2;
 }
 
 // The upper incisor's incisal edge centre from the lowest point of its labial face: centred in
@@ -361,7 +370,7 @@ Eigen::Vector3d upper_incisal_edge_centre(const HeadVolume& v, const ProfilePoin
   const double y = lingual ? (tip.y + lingual->y()) / 2 : tip.y + 0.6;
   const auto edge = first_edge(v, {tip.x, y, tip.z - 3}, {0, 0, 1}, 5, kToothSurfaceHu);
   const double z = edge ? edge->z() : tip.z;
-  return {crown_middle_x(v, {tip.x, y, z}, +1), y, z};
+  return {crown_middle_x(v, {tip.x, y, z}, +1, kUpperCentralWidthMm), y, z};
 }
 
 // The upper incisor's labial face read downwards until the profile jumps back to the lower
@@ -430,7 +439,7 @@ void find_lower_incisor(const HeadVolume& v, double scale, double midline_x, Fin
   const auto labial =
       first_drop(v, {lingual_tip.x, lingual_tip.y - 0.1, lingual_tip.z - 1.5}, {0, -1, 0}, 7, kToothSurfaceHu, 0.1);
   const double y = labial ? (lingual_tip.y + labial->y()) / 2 : lingual_tip.y - 0.6;
-  const double x = crown_middle_x(v, {lingual_tip.x, y, lingual_tip.z}, -1, midline_x);
+  const double x = crown_middle_x(v, {lingual_tip.x, y, lingual_tip.z}, -1, kLowerCentralWidthMm, midline_x);
   found["L1"] = RuleFinding::found({x, y, lingual_tip.z}, labial ? 1 : 0.6);
 }
 
