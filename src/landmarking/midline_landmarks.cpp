@@ -460,6 +460,29 @@ void find_incisors(const HeadVolume& v, double scale, Findings& found) {
   find_lower_incisor(v, scale, 0, found);
 }
 
+namespace {
+
+// Skin points this much less deep than the deepest are as deep, for the soft-tissue nasion: its
+// concavity is broad and shallow, and at coarse voxels the noise decides between its parts.
+constexpr double kNasionConcavityTieMm = 0.5;
+
+// The soft-tissue nasion in the skin profile `zone` around nasion's height `nasion_z`: the
+// deepest point of the concavity, and of the concavity's local bottoms as deep (within
+// kNasionConcavityTieMm) the one nearest nasion's height, over which it lies. One scan at 1.5 mm
+// voxels had two bottoms 6.5 mm apart 0.03 mm from each other in depth, and the upper was taken.
+std::optional<ProfilePoint> soft_tissue_nasion(const Profile& zone, double nasion_z) {
+  if (zone.size() < 3) return std::nullopt;
+  const double deepest = zone[size_t(most_posterior(zone))].y;
+  int best = most_posterior(zone);
+  for (int i = 0; i < int(zone.size()); ++i)
+    if (zone[size_t(i)].y >= deepest - kNasionConcavityTieMm && is_local_extremum(zone, i, +1, 2) &&
+        std::abs(zone[size_t(i)].z - nasion_z) < std::abs(zone[size_t(best)].z - nasion_z))
+      best = i;
+  return refined_extremum(zone, best, 4);  // a wide fit, as for the face's other extremes
+}
+
+}  // namespace
+
 void find_soft_tissue_profile(const HeadVolume& v, double scale, Findings& found) {
   auto position_or = [&](const char* label) {
     const auto it = found.find(label);
@@ -477,7 +500,8 @@ void find_soft_tissue_profile(const HeadVolume& v, double scale, Findings& found
   // The soft-tissue nasion overlies the frontonasal suture: without a nasion (a field cut above
   // the nose) its concavity is not known to be there.
   if (found.count("N") && found.at("N").position)
-    record("NS", extreme_between(n.z() - 10, n.z() + 12, +1), "no skin in front of nasion");
+    record("NS", soft_tissue_nasion(between_heights(skin, n.z() - 10, n.z() + 12), n.z()),
+           "no skin in front of nasion");
   else
     found["NS"] = RuleFinding::absent("needs the nasion");
   const Eigen::Vector3d prn_expected = expected_position("Prn", scale);
