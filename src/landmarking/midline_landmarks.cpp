@@ -472,8 +472,8 @@ constexpr double kNasionConcavityTieMm = 0.5;
 // voxels had two bottoms 6.5 mm apart 0.03 mm from each other in depth, and the upper was taken.
 std::optional<ProfilePoint> soft_tissue_nasion(const Profile& zone, double nasion_z) {
   if (zone.size() < 3) return std::nullopt;
-  const double deepest = zone[size_t(most_posterior(zone))].y;
   int best = most_posterior(zone);
+  const double deepest = zone[size_t(best)].y;
   for (int i = 0; i < int(zone.size()); ++i)
     if (zone[size_t(i)].y >= deepest - kNasionConcavityTieMm && is_local_extremum(zone, i, +1, 2) &&
         std::abs(zone[size_t(i)].z - nasion_z) < std::abs(zone[size_t(best)].z - nasion_z))

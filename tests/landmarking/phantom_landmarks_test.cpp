@@ -40,6 +40,14 @@ double mean_of(const std::map<std::string, double>& errors) {
   return errors.empty() ? 1e9 : sum / double(errors.size());
 }
 
+// One varied bench patient's CT at `spacing_mm`: `label` found, not flagged, within `limit_mm`.
+void expect_found_near_truth(const char* patient, double spacing_mm, const char* label, double limit_mm) {
+  const Phantom phantom = make_phantom(varied_phantom_spec(patient, ScannerKind::kCt, spacing_mm));
+  const auto errors = errors_against(detect_landmarks(phantom.ct, patient), phantom.landmarks);
+  ASSERT_TRUE(errors.count(label)) << label << " missed or flagged on " << patient;
+  EXPECT_LT(errors.at(label), limit_mm) << label << " on " << patient;
+}
+
 // The same voxels with a header that places them turned and shifted: the head in another pose.
 const Phantom& default_phantom() {
   static const Phantom phantom = make_phantom({});
@@ -203,24 +211,12 @@ TEST(PhantomLandmarks, TheLowerIncisorIsReadInItsOwnCrownNotItsNeighbours) {
 
 // At 1.4 mm voxels the spine is a bump of 0.2 mm on a bone front whose top, under the aperture's
 // rim, stands 0.3 mm further forward: the rim had been taken for ANS, 5.1 mm above it.
-TEST(PhantomLandmarks, TheNasalSpineIsFoundAtCoarseVoxels) {
-  const Phantom phantom = make_phantom(varied_phantom_spec("BENCH-007", ScannerKind::kCt, 1.4));
-  const LandmarkDetection found = detect_landmarks(phantom.ct, "coarse");
-  const auto errors = errors_against(found, phantom.landmarks);
-  ASSERT_TRUE(errors.count("ANS")) << "missed or flagged";
-  EXPECT_LT(errors.at("ANS"), 1.5);
-}
+TEST(PhantomLandmarks, TheNasalSpineIsFoundAtCoarseVoxels) { expect_found_near_truth("BENCH-007", 1.4, "ANS", 1.5); }
 
 // At 1.5 mm voxels BENCH-026's skin between forehead and nose has two bottoms 6.5 mm apart and
 // 0.03 mm apart in depth: the upper one had been taken, 6 mm above the truth. Of bottoms as deep,
 // the one nearest nasion's height is the soft-tissue nasion.
-TEST(PhantomLandmarks, TheSoftTissueNasionLiesOverNasion) {
-  const Phantom phantom = make_phantom(varied_phantom_spec("BENCH-026", ScannerKind::kCt, 1.5));
-  const LandmarkDetection found = detect_landmarks(phantom.ct, "flat concavity");
-  const auto errors = errors_against(found, phantom.landmarks);
-  ASSERT_TRUE(errors.count("NS")) << "missed or flagged";
-  EXPECT_LT(errors.at("NS"), 1.5);
-}
+TEST(PhantomLandmarks, TheSoftTissueNasionLiesOverNasion) { expect_found_near_truth("BENCH-026", 1.5, "NS", 1.5); }
 
 TEST(PhantomLandmarks, AnUpperIncisorBarelyInFrontOfTheLowerOneIsFound) {
   PhantomSpec spec = varied_phantom_spec("BENCH-002", ScannerKind::kCt, 1.0);
