@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 
 #include "casework/exposed_bone.h"
@@ -74,8 +75,12 @@ Solved solve(const softtissue::TetMesh& mesh, const softtissue::BoundaryConditio
     auto result = softtissue::solve_nonlinear_static(mesh, material, bc, newton);
     if (!result.converged)
       throw Error(ErrorCode::kProcessing, "non-linear FEM",
-                  "Newton's method did not converge (relative residual " + std::to_string(result.relative_residual) +
-                      " after " + std::to_string(result.newton_iterations) + " Newton steps)");
+                  "Newton's method did not converge: it stopped at " + std::to_string(int(100 * result.load_reached)) +
+                      " %" + " of the bone's move, where a step of 1/" +
+                      std::to_string(int(std::lround(1 / newton.smallest_load_fraction))) +
+                      " of it still turned a tetrahedron inside out or did not converge (" +
+                      std::to_string(result.load_steps) + " load steps, " + std::to_string(result.newton_iterations) +
+                      " Newton steps)");
     return {result.displacement, result.newton_iterations};
   }
   if (o.model == softtissue::SoftTissueModel::kMassSpring) {

@@ -64,7 +64,8 @@ void precondition(const std::vector<Eigen::Matrix3d>& inverse, const Vector& r, 
 }  // namespace
 
 BlockPcgResult solve_free_block_pcg(const StiffnessBlocks& k, const BoundaryConditions& free_directions,
-                                    const Vector& b_in, double relative_tolerance, int max_iterations) {
+                                    const Vector& b_in, double relative_tolerance, int max_iterations,
+                                    bool stop_at_negative_curvature) {
   const int n = k.node_count();
   Vector b(3 * n);
   for (int i = 0; i < n; ++i) b.segment<3>(3 * i) = free_directions.free_part(i, b_in.segment<3>(3 * i));
@@ -94,7 +95,13 @@ BlockPcgResult solve_free_block_pcg(const StiffnessBlocks& k, const BoundaryCond
       break;
     }
     multiply_free(k, free_directions, p, q);
-    const double alpha = rz / p.dot(q);
+    const double curvature = p.dot(q);
+    if (stop_at_negative_curvature && curvature <= 0) {
+      result.negative_curvature = true;
+      if (result.iterations == 0) result.x = p;  // the preconditioned right-hand side
+      break;
+    }
+    const double alpha = rz / curvature;
     result.x.noalias() += alpha * p;
     r.noalias() -= alpha * q;
     precondition(inverse, r, z);

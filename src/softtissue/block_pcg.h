@@ -23,13 +23,21 @@ StaticSolution solve_block_pcg(const StiffnessBlocks& stiffness, const BoundaryC
 // (entries 3 i .. 3 i + 2 belong to node i, length 3 n); b's parts in constrained directions are
 // ignored and x has none. Used by the non-linear FEM for its Newton steps, with the tangent
 // stiffness in `stiffness`. A b that is not finite returns at once: not converged, x = 0.
+//
+// With `stop_at_negative_curvature` (Newton on an energy whose tangent may be indefinite: a
+// compressed tissue near buckling) the iteration stops where it meets a direction p with
+// p^T K p <= 0 and returns the iterate so far, or the preconditioned right-hand side if that
+// happens at once: either is a descent direction of the energy when b is minus its gradient
+// (Steihaug's truncated conjugate gradient; Nocedal and Wright, Numerical Optimization, alg. 7.1).
 struct BlockPcgResult {
   Eigen::VectorXd x;
   bool converged = false;
+  bool negative_curvature = false;  // stopped at a direction of negative curvature
   int iterations = 0;
   double relative_residual = 0;  // |b - K_ff x| / |b| over the free nodes
 };
 BlockPcgResult solve_free_block_pcg(const StiffnessBlocks& stiffness, const BoundaryConditions& free_directions,
-                                    const Eigen::VectorXd& b, double relative_tolerance, int max_iterations);
+                                    const Eigen::VectorXd& b, double relative_tolerance, int max_iterations,
+                                    bool stop_at_negative_curvature = false);
 
 }  // namespace maxillo::softtissue

@@ -70,6 +70,28 @@ Eigen::Matrix3d first_piola(const Eigen::Matrix3d& F, const LameParameters& lame
   return lame.mu * F + (lame.lambda * std::log(j) - lame.mu) * F.inverse().transpose();
 }
 
+// Strain energy density W(F) of each law (nonlinear_fem.h); infinite for a neo-Hookean tet
+// turned inside out.
+double energy_density(const Eigen::Matrix3d& F, const LameParameters& lame, HyperelasticLaw law) {
+  if (law == HyperelasticLaw::kStVenantKirchhoff) {
+    const Eigen::Matrix3d e = green_lagrange(F);
+    return 0.5 * lame.lambda * e.trace() * e.trace() + lame.mu * (e * e).trace();
+  }
+  const double j = F.determinant();
+  if (!(j > 0)) return std::numeric_limits<double>::infinity();
+  const double log_j = std::log(j);
+  return 0.5 * lame.mu * ((F.transpose() * F).trace() - 3) - lame.mu * log_j + 0.5 * lame.lambda * log_j * log_j;
+}
+
+double strain_energy(const TetMesh& mesh, const Reference& ref, const LameParameters& lame, const Eigen::MatrixX3d& u,
+                     HyperelasticLaw law) {
+  double total = 0;
+  for (int t = 0; t < mesh.tet_count(); ++t)
+    total +=
+        ref.weights[size_t(t)] * energy_density(deformation_gradient(mesh, t, ref.gradients[size_t(t)], u), lame, law);
+  return total;
+}
+
 Eigen::MatrixX3d forces(const TetMesh& mesh, const Reference& ref, const LameParameters& lame,
                         const Eigen::MatrixX3d& u, HyperelasticLaw law) {
   Eigen::MatrixX3d f = Eigen::MatrixX3d::Zero(mesh.node_count(), 3);
@@ -161,78 +183,137 @@ StiffnessBlocks tangent_stiffness(const TetMesh& mesh, const Material& material,
   return k;
 }
 
-NonlinearSolution solve_nonlinear_static(const TetMesh& mesh, const Material& material, const BoundaryConditions& bc,
-                                         const NewtonOptions& options) {
-  Reference ref = reference_of(mesh);
-  add_block_entries(mesh, ref);
-  const LameParameters lame = lame_parameters(material);
-  StiffnessBlocks k;  // the tangent, re-assembled in place at every Newton step
-  k.graph = ref.graph;
-  k.blocks.assign(k.graph.neighbours.size(), Eigen::Matrix3d::Zero());
-  auto newton_direction = [&](const Eigen::MatrixX3d& u, const Eigen::VectorXd& rhs, NonlinearSolution& solution) {
-    assemble_tangent(mesh, ref, lame, u, options.law, k);
-    BlockPcgResult pcg = solve_free_block_pcg(k, bc, rhs, options.linear_tolerance, kMaxLinearIterations);
-    solution.linear_iterations += pcg.iterations;
-    return pcg.x;
-  };
+namespace {
 
-  NonlinearSolution solution;
-  solution.displacement = Eigen::MatrixX3d::Zero(mesh.node_count(), 3);
-  double reference_norm = 0;
-  for (int step = 1; step <= options.load_steps; ++step) {
+// The state the load steps share: reference geometry, material, and the tangent's storage,
+// re-assembled in place at every Newton step.
+class NewtonSolver {
+ public:
+  NewtonSolver(const TetMesh& mesh, const Material& material, const BoundaryConditions& bc,
+               const NewtonOptions& options)
+      : mesh_(mesh), bc_(bc), options_(options), ref_(reference_of(mesh)), lame_(lame_parameters(material)) {
+    add_block_entries(mesh, ref_);
+    k_.graph = ref_.graph;
+    k_.blocks.assign(k_.graph.neighbours.size(), Eigen::Matrix3d::Zero());
+  }
+
+  // The free-direction residual at u; NaN where a neo-Hookean tet is inside out.
+  Eigen::VectorXd residual(const Eigen::MatrixX3d& u) const {
+    return free_residual(forces(mesh_, ref_, lame_, u, options_.law), bc_);
+  }
+
+  // One load step: the constrained nodes move on by `fraction` of their imposed displacement and
+  // the free ones follow. Returns false, with u unchanged, when the step turns a tet inside out
+  // or Newton does not reach the tolerance within its iterations.
+  bool take_step(Eigen::MatrixX3d& u, double fraction, double& reference_norm, NonlinearSolution& solution) {
     // Predictor: the imposed increment moves the free nodes as the current tangent says,
     // K_ff du_f = -(r + K_fc du_c); jumping the constrained nodes alone would invert the tets
     // around them. K_fc du_c is the directional derivative of the forces (a finite difference).
-    Eigen::MatrixX3d increment = Eigen::MatrixX3d::Zero(mesh.node_count(), 3);
-    for (int i = 0; i < mesh.node_count(); ++i)
-      if (!bc.is_free(i)) increment.row(i) = bc.imposed(i).transpose() / options.load_steps;
-    const Eigen::MatrixX3d f0 = forces(mesh, ref, lame, solution.displacement, options.law);
+    Eigen::MatrixX3d increment = Eigen::MatrixX3d::Zero(mesh_.node_count(), 3);
+    for (int i = 0; i < mesh_.node_count(); ++i)
+      if (!bc_.is_free(i)) increment.row(i) = fraction * bc_.imposed(i).transpose();
     constexpr double kEpsilon = 1e-4;
-    const Eigen::VectorXd coupling =
-        (free_residual(forces(mesh, ref, lame, solution.displacement + kEpsilon * increment, options.law), bc) -
-         free_residual(f0, bc)) /
-        kEpsilon;
-    const Eigen::VectorXd r0 = free_residual(f0, bc);
+    const Eigen::VectorXd r0 = residual(u);
+    const Eigen::VectorXd coupling = (residual(u + kEpsilon * increment) - r0) / kEpsilon;
     if (reference_norm == 0) reference_norm = std::max((r0 + coupling).norm(), 1e-300);
-    const Eigen::VectorXd predictor = newton_direction(solution.displacement, -(r0 + coupling), solution);
-    // The predicted free move is shortened while it turns a tet inside out (neo-Hookean: NaN forces).
-    const Eigen::MatrixX3d start = solution.displacement + increment;
-    Eigen::VectorXd r;
-    for (double scale = 1; scale > 1e-3; scale /= 2) {
-      solution.displacement = start;
-      add_free_step(solution.displacement, predictor, scale, bc);
-      r = free_residual(forces(mesh, ref, lame, solution.displacement, options.law), bc);
-      if (r.allFinite()) break;
-    }
-    solution.converged = false;
-    for (int it = 0; it < options.max_iterations_per_step; ++it) {
+    Eigen::MatrixX3d trial = u + increment;
+    add_free_step(trial, newton_direction(u, -(r0 + coupling), solution), 1, bc_);
+    Eigen::VectorXd r = residual(trial);
+    if (!r.allFinite()) return false;  // the increment is too large for the mesh: a tet inverts
+    for (int it = 0; it < options_.max_iterations_per_step; ++it) {
       solution.relative_residual = r.norm() / reference_norm;
-      if (solution.relative_residual <= options.relative_tolerance) {
-        solution.converged = true;
-        break;
+      if (solution.relative_residual <= options_.relative_tolerance) {
+        u = trial;
+        return true;
       }
-      const Eigen::VectorXd du = newton_direction(solution.displacement, -r, solution);
-      ++solution.newton_iterations;
-      // Backtracking: halve the step until the residual decreases (Newton may overshoot).
-      double alpha = 1;
-      Eigen::MatrixX3d trial;
-      Eigen::VectorXd trial_r;
-      bool decreased = false;
-      for (int halving = 0; halving < 8 && !decreased; ++halving, alpha /= 2) {
-        trial = solution.displacement;
-        add_free_step(trial, du, alpha, bc);
-        trial_r = free_residual(forces(mesh, ref, lame, trial, options.law), bc);
-        decreased = trial_r.allFinite() && trial_r.norm() < r.norm();  // NaN: a tet turned inside out
-      }
-      if (!trial_r.allFinite()) break;  // stalled: every step along the Newton direction inverts a tet
-      solution.displacement = trial;    // (not decreased: the smallest step, as a nudge out of a plateau)
-      r = trial_r;
+      if (!newton_iteration(trial, r, solution)) return false;
     }
-    if (!solution.converged) {
-      solution.relative_residual = r.norm() / reference_norm;
-      solution.converged = solution.relative_residual <= options.relative_tolerance;
-    }
+    solution.relative_residual = r.norm() / reference_norm;
+    if (solution.relative_residual > options_.relative_tolerance) return false;
+    u = trial;
+    return true;
   }
+
+ private:
+  Eigen::VectorXd newton_direction(const Eigen::MatrixX3d& u, const Eigen::VectorXd& rhs, NonlinearSolution& solution,
+                                   bool truncated = false) {
+    assemble_tangent(mesh_, ref_, lame_, u, options_.law, k_);
+    BlockPcgResult pcg = solve_free_block_pcg(k_, bc_, rhs, options_.linear_tolerance, kMaxLinearIterations, truncated);
+    solution.linear_iterations += pcg.iterations;
+    return pcg.x;
+  }
+
+  // One Newton step from u with residual r (the energy's gradient in the free directions), both
+  // updated. The direction is the truncated conjugate gradient's (a descent direction even where
+  // the tangent is indefinite: a compressed tissue near buckling, where plain Newton heads for a
+  // saddle and stalls); the step is halved until the energy falls by a fraction of what its slope
+  // promises (Armijo) or, near the answer where energy differences drown in round-off, until the
+  // residual halves. False when no step along the direction does either.
+  bool newton_iteration(Eigen::MatrixX3d& u, Eigen::VectorXd& r, NonlinearSolution& solution) {
+    const Eigen::VectorXd du = newton_direction(u, -r, solution, /*truncated=*/true);
+    ++solution.newton_iterations;
+    const double slope = r.dot(du);
+    if (!(slope < 0)) return false;
+    const double energy = strain_energy(mesh_, ref_, lame_, u, options_.law);
+    constexpr double kArmijo = 1e-4;
+    double alpha = 1;
+    for (int halving = 0; halving < kMaxHalvings; ++halving, alpha /= 2) {
+      Eigen::MatrixX3d trial = u;
+      add_free_step(trial, du, alpha, bc_);
+      const double trial_energy = strain_energy(mesh_, ref_, lame_, trial, options_.law);
+      if (!std::isfinite(trial_energy)) continue;  // a tet turned inside out
+      const Eigen::VectorXd trial_r = residual(trial);
+      if (trial_energy <= energy + kArmijo * alpha * slope || trial_r.norm() <= 0.5 * r.norm()) {
+        u = trial;
+        r = trial_r;
+        return true;
+      }
+    }
+    return false;
+  }
+
+  static constexpr int kMaxHalvings = 12;
+
+  const TetMesh& mesh_;
+  const BoundaryConditions& bc_;
+  const NewtonOptions& options_;
+  Reference ref_;
+  LameParameters lame_;
+  StiffnessBlocks k_;
+};
+
+}  // namespace
+
+NonlinearSolution solve_nonlinear_static(const TetMesh& mesh, const Material& material, const BoundaryConditions& bc,
+                                         const NewtonOptions& options) {
+  NewtonSolver solver(mesh, material, bc, options);
+  NonlinearSolution solution;
+  solution.displacement = Eigen::MatrixX3d::Zero(mesh.node_count(), 3);
+  // The tolerance is relative to the first step's residual, at the planned step size, so that
+  // halving a step later does not tighten it.
+  double reference_norm = 0;
+  const double planned = 1.0 / std::max(options.load_steps, 1);
+  double fraction = planned;
+  double reached = 0;  // fraction of the imposed displacement applied and in equilibrium
+  int successes_in_a_row = 0;
+  while (reached < 1 - 1e-12) {
+    fraction = std::min(fraction, 1 - reached);
+    if (solver.take_step(solution.displacement, fraction, reference_norm, solution)) {
+      reached += fraction;
+      ++solution.load_steps;
+      // After two easy steps the step grows back, never beyond the planned one.
+      if (++successes_in_a_row >= 2) fraction = std::min(2 * fraction, planned);
+      continue;
+    }
+    ++solution.rejected_steps;
+    successes_in_a_row = 0;
+    fraction /= 2;
+    if (fraction < options.smallest_load_fraction) break;
+  }
+  solution.load_reached = std::min(reached, 1.0);
+  solution.converged = reached >= 1 - 1e-12;
+  if (!solution.converged && !std::isfinite(solution.relative_residual))
+    solution.relative_residual = std::numeric_limits<double>::infinity();
   return solution;
 }
 

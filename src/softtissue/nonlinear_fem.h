@@ -5,7 +5,7 @@
 // first Piola stress P = F S. Unlike linear FEM it is frame-invariant: a
 // large rigid rotation of the boundary gives no stress. Static equilibrium with prescribed
 // displacements is found by Newton's method on the free dofs with a backtracking line search,
-// the imposed displacements applied in load steps (each step starts from the previous answer).
+// the imposed displacements applied in adaptive load steps (each starts from the previous answer).
 // Each Newton system is solved by the matrix-free block-Jacobi conjugate gradient of
 // block_pcg.h on the tangent assembled as 3 x 3 node blocks (no sparse matrix, no triplets).
 #include "softtissue/boundary_conditions.h"
@@ -23,7 +23,12 @@ enum class HyperelasticLaw { kStVenantKirchhoff, kNeoHookean };
 
 struct NewtonOptions {
   HyperelasticLaw law = HyperelasticLaw::kNeoHookean;
+  // The imposed displacements are applied in this many equal steps at most. A step that turns a
+  // tet inside out, or whose Newton iterations do not converge, is undone and halved (adaptive
+  // load stepping); after two accepted steps in a row the step doubles again, up to the planned
+  // one. A thin element between nodes moved by different bones needs steps shorter than itself.
   int load_steps = 4;
+  double smallest_load_fraction = 1.0 / 4096;  // give up below this step
   int max_iterations_per_step = 30;
   double relative_tolerance = 1e-6;  // on the free-dof residual, against the first step's first residual
   // Conjugate gradient on each Newton system, relative to its right-hand side. Inexact Newton:
@@ -37,6 +42,9 @@ struct NonlinearSolution {
   Eigen::MatrixX3d displacement;  // n x 3, mm
   bool converged = false;
   int newton_iterations = 0;     // over all load steps
+  int load_steps = 0;            // accepted load steps
+  int rejected_steps = 0;        // load steps undone and halved
+  double load_reached = 0;       // fraction of the imposed displacements in equilibrium (1 when converged)
   int linear_iterations = 0;     // conjugate gradient iterations over all Newton steps
   double relative_residual = 0;  // at the end
 };

@@ -2,12 +2,14 @@
 // lip and the nose base forward and leaves the forehead and the chin in place.
 #include <gtest/gtest.h>
 
+#include <optional>
 #include <string>
 #include <utility>
 
 #include "core/error.h"
 
 #include "mesh/surface_extraction.h"
+#include "casework/case_simulation.h"
 #include "casework/soft_tissue_prediction.h"
 #include "planning/osteotomy.h"
 #include "sample/phantom.h"
@@ -118,6 +120,27 @@ TEST(PhantomPrediction, AModelNotAtRestIsAnErrorNotAFace) {
       EXPECT_NE(message.find("did not come to rest: after 2 sweeps"), std::string::npos) << message;
     }
   }
+}
+
+// A move the tissue cannot follow without turning a tetrahedron inside out (the maxilla 40 mm
+// forward, through the lip) is where the non-linear FEM stops, however short its load steps: the
+// linear FEM then predicts the same face model, and the fallback says what was asked for and why.
+TEST(PhantomPrediction, ANonlinearFemThatCannotFollowTheMoveFallsBackToTheLinearFem) {
+  const auto& c = phantom_case();
+  SoftTissueInput input{&c.phantom.labels, &c.cut.segments, &c.skin, c.phantom.landmarks, {}};
+  input.moves[uint8_t(planning::Segment::kMaxilla)] = Eigen::Translation3d(0, -40, 0);
+  SoftTissueOptions options;
+  options.model = softtissue::SoftTissueModel::kNonlinearFem;
+  options.meshing.cell_size_mm = 5;
+  options.meshing.max_tets = 40000;
+  std::optional<records::SimulationSummary::ModelFallback> fallback;
+  const auto p = predict_face(input, options, nullptr, fallback);
+  EXPECT_EQ(p.model, softtissue::SoftTissueModel::kLinearFem);
+  ASSERT_TRUE(fallback);
+  EXPECT_EQ(fallback->requested, "nfem");
+  EXPECT_NE(fallback->reason.find("Newton's method did not converge: it stopped at"), std::string::npos)
+      << fallback->reason;
+  EXPECT_NE(fallback->reason.find("of the bone's move"), std::string::npos) << fallback->reason;
 }
 
 }  // namespace

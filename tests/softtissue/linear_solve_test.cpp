@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -101,8 +103,6 @@ TEST(FactorisedElasticity, UnconstrainedMeshIsNotPositiveDefinite) {
             FactorisationStatus::kOk);
 }
 
-// Scaling the mesh and the imposed displacements by s scales the answer by s (the static
-// answer has no length scale of its own), for s = 1e3 and 1e-3.
 // A right-hand side with NaN (forces of an inverted neo-Hookean tet) has no answer: the block
 // conjugate gradient says so at once instead of iterating NaN to its limit.
 TEST(BlockPcg, ANonFiniteRightHandSideReturnsAtOnceUnconverged) {
@@ -119,6 +119,39 @@ TEST(BlockPcg, ANonFiniteRightHandSideReturnsAtOnceUnconverged) {
   EXPECT_TRUE(result.x.isZero());
 }
 
+// Newton's use on an indefinite tangent (a tissue near buckling): a stiffness shifted down by half
+// its smallest diagonal block's eigenvalue keeps every diagonal block positive (so block Jacobi
+// still applies) but has directions of negative curvature, the smooth ones. The truncated
+// conjugate gradient stops at the first and returns a direction b points along (b . x > 0: downhill
+// for an energy whose gradient is -b); on the unshifted stiffness the flag changes nothing.
+TEST(BlockPcg, StopsAtNegativeCurvatureWithADescentDirection) {
+  const auto mesh = make_cube_mesh({10.0, 4, HexSplit::kSixTets});
+  StiffnessBlocks stiffness = assemble_stiffness_blocks(mesh, {0.003, 0.45});
+  BoundaryConditions bc = all_free(mesh.node_count());
+  bc.constraint[0] = NodeConstraint::kFixed;
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(3 * mesh.node_count(), -1, 2);
+  const BlockPcgResult plain = solve_free_block_pcg(stiffness, bc, b, 1e-8, 20000);
+  const BlockPcgResult flagged = solve_free_block_pcg(stiffness, bc, b, 1e-8, 20000, true);
+  EXPECT_FALSE(flagged.negative_curvature);
+  EXPECT_EQ(flagged.iterations, plain.iterations);
+  EXPECT_LT((flagged.x - plain.x).norm(), 1e-12 * plain.x.norm());
+
+  double smallest = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < mesh.node_count(); ++i) {
+    const Eigen::Matrix3d& block = stiffness.blocks[size_t(stiffness.graph.find(i, i))];
+    smallest = std::min(smallest, Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(block).eigenvalues()(0));
+  }
+  for (int i = 0; i < mesh.node_count(); ++i)
+    stiffness.blocks[size_t(stiffness.graph.find(i, i))] -= 0.5 * smallest * Eigen::Matrix3d::Identity();
+  const BlockPcgResult truncated = solve_free_block_pcg(stiffness, bc, b, 1e-8, 20000, true);
+  EXPECT_TRUE(truncated.negative_curvature);
+  EXPECT_FALSE(truncated.converged);
+  EXPECT_GT(b.dot(truncated.x), 0);
+  EXPECT_TRUE(truncated.x.allFinite());
+}
+
+// Scaling the mesh and the imposed displacements by s scales the answer by s (the static
+// answer has no length scale of its own), for s = 1e3 and 1e-3.
 TEST(LinearStatic, ScaleInvariance) {
   CubeSpec spec{100.0, 6, HexSplit::kFiveTets};
   TetMesh mesh = make_cube_mesh(spec);

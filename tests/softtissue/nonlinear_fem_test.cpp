@@ -143,5 +143,40 @@ TEST(NonlinearFem, NeoHookeanRefusesAnInvertedTet) {
   EXPECT_TRUE(internal_forces(mesh, {}, flip, HyperelasticLaw::kStVenantKirchhoff).allFinite());
 }
 
+// A node pushed towards a fixed face squeezes the tets between them. Pushed to 1 % above the face
+// the tissue follows and stays the right way out. Pushed through it (150 % of the way), no load
+// step gets past the face, however short: the step is halved down to the smallest, and the solve
+// stops where the node meets the face (2/3 of the move) and says how far it got.
+BoundaryConditions pushed_towards_the_floor(const TetMesh& mesh, double fraction_of_height) {
+  BoundaryConditions bc = all_free(mesh.node_count());
+  for (int i = 0; i < mesh.node_count(); ++i) {
+    const Eigen::Vector3d p = mesh.nodes.row(i).transpose();
+    if (p.z() < 1e-9) bc.constraint[size_t(i)] = NodeConstraint::kFixed;
+    if ((p - Eigen::Vector3d(10, 10, 5)).norm() < 1e-9) {
+      bc.constraint[size_t(i)] = NodeConstraint::kPrescribed;
+      bc.displacement.row(i) = Eigen::RowVector3d(0, 0, -5 * fraction_of_height);
+    }
+  }
+  return bc;
+}
+
+TEST(NonlinearFem, AMoveThroughAFixedFaceStopsWhereItMeetsIt) {
+  const auto mesh = small_cube();  // 5 mm cells: the pushed node is one cell above the floor
+  NewtonOptions options;
+  options.load_steps = 1;
+  const auto near = solve_nonlinear_static(mesh, {}, pushed_towards_the_floor(mesh, 0.99), options);
+  ASSERT_TRUE(near.converged);
+  EXPECT_DOUBLE_EQ(near.load_reached, 1.0);
+  EXPECT_TRUE(internal_forces(mesh, {}, near.displacement).allFinite());  // no tet inside out
+
+  const auto through = solve_nonlinear_static(mesh, {}, pushed_towards_the_floor(mesh, 1.5), options);
+  EXPECT_FALSE(through.converged);
+  EXPECT_LT(through.load_reached, 1 / 1.5);
+  EXPECT_GT(through.load_reached, 1 / 1.5 - 2 * options.smallest_load_fraction);
+  EXPECT_GE(through.rejected_steps, 12);                                     // 1 -> 1/4096 at least once
+  EXPECT_GE(through.load_steps, 2);                                          // halved steps taken, and grown again
+  EXPECT_TRUE(internal_forces(mesh, {}, through.displacement).allFinite());  // the last state in equilibrium
+}
+
 }  // namespace
 }  // namespace maxillo::softtissue
