@@ -11,6 +11,7 @@ set(maxillo_allowed_links_ceph core geometry)
 set(maxillo_allowed_links_occlusion core geometry)
 set(maxillo_allowed_links_softtissue core geometry)
 set(maxillo_allowed_links_validation core geometry)
+set(maxillo_allowed_links_dental core geometry validation)
 set(maxillo_allowed_links_planning core geometry ceph)
 set(maxillo_allowed_links_sample core geometry ceph)
 set(maxillo_allowed_links_archive core geometry ceph)
@@ -23,7 +24,7 @@ set(maxillo_allowed_links_report core)
 set(maxillo_allowed_links_tetmesh core geometry softtissue)
 # The workflows above the toolkits: the stored records, the casework shared by the three jobs,
 # the report sections, then the jobs themselves, the benchmarks and the demo.
-set(maxillo_below_records core geometry ceph occlusion softtissue validation planning sample archive net imaging landmarking mesh
+set(maxillo_below_records core geometry ceph occlusion softtissue validation dental planning sample archive net imaging landmarking mesh
                           render report tetmesh)
 set(maxillo_allowed_links_records core geometry ceph archive imaging landmarking mesh occlusion planning softtissue validation)
 set(maxillo_allowed_links_casework ${maxillo_below_records} records)
@@ -34,7 +35,7 @@ set(maxillo_allowed_links_nightly ${maxillo_allowed_links_sections} sections)
 set(maxillo_allowed_links_bench ${maxillo_allowed_links_casework} casework)
 set(maxillo_allowed_links_demo ${maxillo_allowed_links_sections} sections consultation followup nightly)
 
-set(maxillo_numerical_modules core geometry ceph occlusion softtissue validation planning)
+set(maxillo_numerical_modules core geometry ceph occlusion softtissue validation dental planning)
 # Anything whose name matches is a toolkit the numerical modules must not link.
 set(maxillo_toolkit_pattern "VTK|vtk|ITK|itk|OSMesa|OSMESA|CGAL|DCMTK|hpdf|SQLite|PostgreSQL|CURL")
 
@@ -77,7 +78,7 @@ function(maxillo_link_closure target out_var)
 endfunction()
 
 function(maxillo_check_module_layers)
-  foreach(module IN ITEMS core geometry ceph occlusion softtissue validation planning sample archive net
+  foreach(module IN ITEMS core geometry ceph occlusion softtissue validation dental planning sample archive net
                           imaging landmarking mesh render report tetmesh records casework sections consultation followup
                           nightly bench demo)
     if(NOT TARGET maxillo_${module})

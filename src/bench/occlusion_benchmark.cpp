@@ -59,14 +59,12 @@ std::string pose_line(int number, const PoseResult& r) {
 OcclusionBenchmark run_occlusion_benchmark(const OcclusionBenchOptions& options) {
   OcclusionBenchmark result;
   result.seed = options.seed;
-  const auto folder = options.data.empty() ? shared_data_folder() / "openfulljaw-p26-teeth" : options.data;
-  const auto upper_file = folder / "upper_teeth_merged.stl", lower_file = folder / "lower_teeth_merged.stl";
-  if (!std::filesystem::exists(upper_file) || !std::filesystem::exists(lower_file)) {
-    result.skipped = "the real teeth are not at " + folder.string() +
-                     " (set MAXILLO_SHARED_DATA or --data to the folder holding openfulljaw-p26-teeth)";
+  const RealTeeth teeth = real_teeth(options.data);
+  if (!teeth.absent.empty()) {
+    result.skipped = teeth.absent;
     return result;
   }
-  TriangleMesh upper = read_mesh(upper_file), lower = read_mesh(lower_file);
+  TriangleMesh upper = read_mesh(teeth.upper), lower = read_mesh(teeth.lower);
   repair_arch(upper), repair_arch(lower);
   const auto build_clock = Clock::now();
   const DistanceField upper_field(upper), lower_field(lower);
@@ -76,7 +74,7 @@ OcclusionBenchmark run_occlusion_benchmark(const OcclusionBenchOptions& options)
                                  contact_spring_pairs(upper_field, lower_field, kNaturalPose, 4, 0.1),
                                  occlusal_region(upper_field, lower_field, kNaturalPose, 3.0)};
   if (natural.springs.size() < 4)
-    throw Error(ErrorCode::kProcessing, upper_file.string(), "fewer than 4 contacts in the natural occlusion");
+    throw Error(ErrorCode::kProcessing, teeth.upper.string(), "fewer than 4 contacts in the natural occlusion");
   result.upper_vertices = upper.vertex_count(), result.lower_vertices = lower.vertex_count();
   result.region_vertices = natural.region.size();
 

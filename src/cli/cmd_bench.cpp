@@ -31,6 +31,7 @@ void attach_bench_import(CLI::App& bench, CommandContext& ctx) {
 
 void attach_bench_cube(CLI::App& bench, CommandContext& ctx);       // cmd_bench_cube.cpp
 void attach_bench_occlusion(CLI::App& bench, CommandContext& ctx);  // cmd_bench_occlusion.cpp
+void attach_bench_dental(CLI::App& bench, CommandContext& ctx);     // cmd_bench_dental.cpp
 void attach_bench_face(CLI::App& bench, CommandContext& ctx);       // cmd_bench_face.cpp
 void attach_bench_register(CLI::App& bench, CommandContext& ctx);   // cmd_bench_register.cpp
 void attach_bench_surfaces(CLI::App& bench, CommandContext& ctx);   // cmd_bench_surfaces.cpp
@@ -43,6 +44,7 @@ void attach_bench(CLI::App& app, CommandContext& ctx) {
   attach_bench_import(app, ctx);
   attach_bench_cube(app, ctx);
   attach_bench_occlusion(app, ctx);
+  attach_bench_dental(app, ctx);
   attach_bench_face(app, ctx);
   attach_bench_register(app, ctx);
   attach_bench_surfaces(app, ctx);

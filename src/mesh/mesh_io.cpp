@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <optional>
 #include <system_error>
 
 #include "core/atomic_file.h"
@@ -112,16 +113,30 @@ TriangleMesh read_with(TriangleMesh (*parse)(std::span<const std::byte>, const s
 
 }  // namespace
 
-MeshFormat mesh_format_for(const std::filesystem::path& path) {
+namespace {
+
+std::string lower_case_extension(const std::filesystem::path& path) {
   std::string extension = path.extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return std::tolower(c); });
+  return extension;
+}
+
+std::optional<MeshFormat> known_format(const std::filesystem::path& path) {
+  const std::string extension = lower_case_extension(path);
   if (extension == ".stl") return MeshFormat::Stl;
   if (extension == ".ply") return MeshFormat::Ply;
   if (extension == ".obj") return MeshFormat::Obj;
   if (extension == ".vtp") return MeshFormat::Vtp;
+  return std::nullopt;
+}
+
+}  // namespace
+
+MeshFormat mesh_format_for(const std::filesystem::path& path) {
+  if (const auto format = known_format(path)) return *format;
   throw Error(ErrorCode::kUsage, path.string(),
-              "unknown mesh extension '" + extension + "' (known: .stl, .ply, .obj, .vtp)");
+              "unknown mesh extension '" + lower_case_extension(path) + "' (known: .stl, .ply, .obj, .vtp)");
 }
 
 void write_mesh(const TriangleMesh& mesh, const std::filesystem::path& path) { write_mesh(mesh, path, {}); }
@@ -171,6 +186,24 @@ TriangleMesh read_mesh(const std::filesystem::path& path) {
     case MeshFormat::Vtp: return run_reader<vtkXMLPolyDataReader>(path);
   }
   return {};
+}
+
+}  // namespace maxillo
+
+namespace maxillo {
+
+std::vector<TriangleMesh> read_meshes_in(const std::filesystem::path& folder) {
+  std::error_code error;
+  if (!std::filesystem::is_directory(folder, error))
+    throw Error(ErrorCode::kFileNotFound, folder.string(), "no such folder");
+  std::vector<std::filesystem::path> files;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    if (entry.is_regular_file() && known_format(entry.path())) files.push_back(entry.path());
+  }
+  std::sort(files.begin(), files.end());
+  std::vector<TriangleMesh> meshes;
+  for (const auto& file : files) meshes.push_back(read_mesh(file));
+  return meshes;
 }
 
 }  // namespace maxillo

@@ -33,4 +33,9 @@ void write_mesh(const TriangleMesh& mesh, const std::filesystem::path& path, con
 // Throws Error(kFileNotFound | kBadValue, path, reason); polygons are triangulated.
 TriangleMesh read_mesh(const std::filesystem::path& path);
 
+// Every mesh file (a known extension) directly in `folder`, in the order of their names (a
+// folder's own order is the file system's, which differs between machines), e.g. one tooth per
+// file. Throws as read_mesh, and Error(kFileNotFound) for a folder that is not there.
+std::vector<TriangleMesh> read_meshes_in(const std::filesystem::path& folder);
+
 }  // namespace maxillo

@@ -92,23 +92,36 @@ struct Pair {
   Eigen::Vector3d normal;  // the target face's unit normal at q
 };
 
-class Matcher {
- public:
-  Matcher(const TriangleMesh& moving, const TriangleMesh& target, const IcpOptions& options)
-      : moving_(moving),
-        target_(target),
-        tree_(target),
-        border_(target),
-        options_(options),
-        moving_normals_(vertex_normals(moving)),
-        samples_(sample_vertices(moving.vertex_count(), options.max_samples, options.seed)) {
-    face_normals_.reserve(size_t(target.face_count()));
-    for (Eigen::Index f = 0; f < target.face_count(); ++f) {
-      const auto t = tree_.triangle(int(f));
+}  // namespace
+
+struct IcpTarget::Parts {
+  explicit Parts(const TriangleMesh& mesh) : target(mesh), tree(mesh), border(mesh) {
+    face_normals.reserve(size_t(mesh.face_count()));
+    for (Eigen::Index f = 0; f < mesh.face_count(); ++f) {
+      const auto t = tree.triangle(int(f));
       const Eigen::Vector3d n = (t.b - t.a).cross(t.c - t.a);
-      face_normals_.push_back(n.norm() > 0 ? Eigen::Vector3d(n.normalized()) : Eigen::Vector3d::Zero());
+      face_normals.push_back(n.norm() > 0 ? Eigen::Vector3d(n.normalized()) : Eigen::Vector3d::Zero());
     }
   }
+  const TriangleMesh& target;
+  AabbTree tree;
+  Border border;
+  std::vector<Eigen::Vector3d> face_normals;
+};
+
+IcpTarget::IcpTarget(const TriangleMesh& target) : parts_(std::make_unique<Parts>(target)) {}
+IcpTarget::~IcpTarget() = default;
+
+namespace {
+
+class Matcher {
+ public:
+  Matcher(const TriangleMesh& moving, const IcpTarget::Parts& target, const IcpOptions& options)
+      : moving_(moving),
+        target_(target),
+        options_(options),
+        moving_normals_(vertex_normals(moving)),
+        samples_(sample_vertices(moving.vertex_count(), options.max_samples, options.seed)) {}
 
   // The samples' pairs in the samples' order. The closest-point queries, most of ICP's time, run
   // in fixed parts of the samples, each into its own list; the lists are joined in order, so the
@@ -130,20 +143,17 @@ class Matcher {
  private:
   std::optional<Pair> pair_of(int i, const Eigen::Isometry3d& transform) const {
     const Eigen::Vector3d p = transform * row(moving_.vertices, i);
-    const auto nearest = tree_.nearest(p, options_.max_pair_distance_mm);
-    if (nearest.face < 0 || border_.contains(target_, nearest.face, nearest.feature)) return std::nullopt;
-    const Eigen::Vector3d& n = face_normals_[size_t(nearest.face)];
+    const auto nearest = target_.tree.nearest(p, options_.max_pair_distance_mm);
+    if (nearest.face < 0 || target_.border.contains(target_.target, nearest.face, nearest.feature)) return std::nullopt;
+    const Eigen::Vector3d& n = target_.face_normals[size_t(nearest.face)];
     if ((transform.linear() * moving_normals_.row(i).transpose()).dot(n) < kMinNormalCosine) return std::nullopt;
     return Pair{p, nearest.point, n};
   }
 
   const TriangleMesh& moving_;
-  const TriangleMesh& target_;
-  AabbTree tree_;
-  Border border_;
+  const IcpTarget::Parts& target_;
   const IcpOptions& options_;
   VertexMatrix moving_normals_;  // unit, area-weighted (geometry/vertex_normals.h)
-  std::vector<Eigen::Vector3d> face_normals_;
   std::vector<int> samples_;
 };
 
@@ -189,12 +199,19 @@ double rms_distance(const std::vector<Pair>& pairs) {
 
 IcpResult rigid_icp(const TriangleMesh& moving, const TriangleMesh& target, const Eigen::Isometry3d& initial,
                     const IcpOptions& options) {
-  if (moving.vertex_count() == 0 || moving.face_count() == 0)
-    throw Error(ErrorCode::kBadValue, "ICP moving surface", "the mesh is empty");
   if (target.vertex_count() == 0 || target.face_count() == 0)
     throw Error(ErrorCode::kBadValue, "ICP target surface", "the mesh is empty");
+  return rigid_icp(moving, IcpTarget(target), initial, options);
+}
 
-  const Matcher matcher(moving, target, options);
+IcpResult rigid_icp(const TriangleMesh& moving, const IcpTarget& target, const Eigen::Isometry3d& initial,
+                    const IcpOptions& options) {
+  if (moving.vertex_count() == 0 || moving.face_count() == 0)
+    throw Error(ErrorCode::kBadValue, "ICP moving surface", "the mesh is empty");
+  if (target.parts().target.vertex_count() == 0 || target.parts().target.face_count() == 0)
+    throw Error(ErrorCode::kBadValue, "ICP target surface", "the mesh is empty");
+
+  const Matcher matcher(moving, target.parts(), options);
   IcpResult result;
   result.transform = initial;
   std::vector<Pair> pairs;

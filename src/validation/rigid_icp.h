@@ -10,6 +10,7 @@
 // faces have no counterpart there), or normals more than 60 degrees apart are left out.
 #include <Eigen/Geometry>
 #include <cstdint>
+#include <memory>
 
 #include "core/triangle_mesh.h"
 
@@ -30,11 +31,29 @@ struct IcpResult {
   int pairs = 0;  // pairs used in the last iteration
 };
 
+// What ICP needs of its target, built once (its closest-point tree, open border and face
+// normals): for registering surfaces onto one target from many starts (dental/arch_registration.h).
+// Keeps a reference to `target`, which must outlive it unchanged.
+class IcpTarget {
+ public:
+  explicit IcpTarget(const TriangleMesh& target);
+  ~IcpTarget();
+  IcpTarget(const IcpTarget&) = delete;
+  IcpTarget& operator=(const IcpTarget&) = delete;
+  struct Parts;
+  const Parts& parts() const { return *parts_; }
+
+ private:
+  std::unique_ptr<Parts> parts_;
+};
+
 // Moves `moving` (e.g. a planned bone segment's surface in pre-operative coordinates) onto
 // `target` (the post-operative bone surface in the same frame), starting from `initial` (e.g.
 // the planned move). Both meshes consistently oriented (normals out). Throws Error(BadValue)
 // for an empty mesh and Error(Processing) when fewer than 6 pairs lie within reach.
 IcpResult rigid_icp(const TriangleMesh& moving, const TriangleMesh& target, const Eigen::Isometry3d& initial,
+                    const IcpOptions& options = {});
+IcpResult rigid_icp(const TriangleMesh& moving, const IcpTarget& target, const Eigen::Isometry3d& initial,
                     const IcpOptions& options = {});
 
 }  // namespace maxillo::validation

@@ -11,6 +11,7 @@
 #include "bench/formatted.h"
 #include "bench/import_benchmark.h"
 #include "bench/index_benchmark.h"
+#include "bench/dental_benchmark.h"
 #include "bench/occlusion_benchmark.h"
 #include "bench/register_benchmark.h"
 #include "bench/timing.h"
@@ -124,6 +125,11 @@ TEST(RealDataBenchmarks, SayWhyTheySkipWithoutTheirData) {
   OcclusionBenchOptions occlusion;
   occlusion.data = "/nonexistent";
   EXPECT_EQ(occlusion_benchmark_text(run_occlusion_benchmark(occlusion)),
+            "skipped: the real teeth are not at /nonexistent (set MAXILLO_SHARED_DATA or --data to the folder "
+            "holding openfulljaw-p26-teeth)\n");
+  DentalBenchOptions dental;
+  dental.data = "/nonexistent";
+  EXPECT_EQ(dental_benchmark_text(run_dental_benchmark(dental)),
             "skipped: the real teeth are not at /nonexistent (set MAXILLO_SHARED_DATA or --data to the folder "
             "holding openfulljaw-p26-teeth)\n");
   RegisterBenchOptions registration;

@@ -67,5 +67,22 @@ TEST(MeshIo, ErrorsNameTheFile) {
   EXPECT_TRUE(std::filesystem::is_empty(folder / ".") || !std::filesystem::exists(folder / "surface.off"));
 }
 
+// One tooth per file: the folder's meshes come in the order of their names, whatever the file
+// system's order, and files that are no mesh are left alone.
+TEST(MeshIo, AFoldersMeshesComeInTheOrderOfTheirNames) {
+  TemporaryFolder folder("mesh-io-folder");
+  write_mesh(testing::cube(3), folder / "tooth_2.stl");
+  write_mesh(testing::cube(1), folder / "tooth_10.ply");
+  write_mesh(testing::cube(2), folder / "tooth_1.obj");
+  std::ofstream(folder / "axes.json") << "{}";
+  const auto meshes = read_meshes_in(folder.path());
+  ASSERT_EQ(meshes.size(), 3u);
+  EXPECT_NEAR(signed_volume(meshes[0]), 8, 1e-4);   // tooth_1
+  EXPECT_NEAR(signed_volume(meshes[1]), 1, 1e-4);   // tooth_10
+  EXPECT_NEAR(signed_volume(meshes[2]), 27, 1e-4);  // tooth_2
+  const auto absent = folder / "no-such-folder";
+  EXPECT_EQ(code_of([&] { read_meshes_in(absent); }, absent), ErrorCode::kFileNotFound);
+}
+
 }  // namespace
 }  // namespace maxillo

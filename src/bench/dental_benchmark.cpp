@@ -1,0 +1,154 @@
+#include "bench/dental_benchmark.h"
+
+#include <random>
+
+#include "bench/formatted.h"
+#include "bench/shared_data.h"
+#include "bench/timing.h"
+#include "core/error.h"
+#include "dental/arch_registration.h"
+#include "geometry/mesh_transform.h"
+#include "mesh/mesh_io.h"
+#include "occlusion/occlusion_benchmark.h"
+#include "sample/simulated_dental_scan.h"
+
+namespace maxillo::bench {
+namespace {
+
+constexpr double kMaxStartMm = 20, kMaxStartDeg = 30;
+
+// RMS over the mesh's vertices of |a v - b v|.
+double rms_between(const TriangleMesh& mesh, const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
+  const std::vector<int> all = [&] {
+    std::vector<int> v(size_t(mesh.vertex_count()));
+    for (size_t i = 0; i < v.size(); ++i) v[i] = int(i);
+    return v;
+  }();
+  double sum = 0;
+  for (double d : occlusion::vertex_displacements(mesh, all, a, b)) sum += d * d;
+  return all.empty() ? 0 : std::sqrt(sum / double(all.size()));
+}
+
+DentalTrial register_from(const TriangleMesh& scan, const TriangleMesh& teeth, const Eigen::Isometry3d& start) {
+  DentalTrial trial;
+  const TriangleMesh displaced = transformed(scan, start);
+  const Eigen::Isometry3d truth = start.inverse();
+  trial.start_mm = rms_between(displaced, Eigen::Isometry3d::Identity(), truth);
+  const auto clock = Clock::now();
+  try {
+    const dental::ArchRegistration r = dental::register_arch(displaced, teeth);
+    trial.seconds = seconds_since(clock);
+    trial.error_mm = rms_between(displaced, r.fit.transform, truth);
+    trial.on_teeth_share = r.fit.on_teeth_share;
+    trial.rms_mm = r.fit.rms_mm;
+    trial.p95_mm = r.fit.p95_mm;
+    trial.confidence = r.confidence;
+  } catch (const Error& e) {
+    trial.seconds = seconds_since(clock);
+    trial.failure = e.what();
+  }
+  return trial;
+}
+
+DentalArchBench bench_arch(const std::string& name, const TriangleMesh& scan, const TriangleMesh& teeth, int starts,
+                           std::mt19937& random) {
+  DentalArchBench arch{name, scan.vertex_count(), teeth.vertex_count(), {}};
+  const Eigen::Vector3d centre = scan.vertices.colwise().mean().transpose();
+  for (int k = 0; k < starts; ++k)
+    arch.trials.push_back(
+        register_from(scan, teeth, occlusion::random_displacement(random, centre, kMaxStartMm, kMaxStartDeg)));
+  return arch;
+}
+
+Json spread(const std::vector<double>& values) {
+  return {{"median", occlusion::percentile(values, 50)},
+          {"p90", occlusion::percentile(values, 90)},
+          {"max", occlusion::percentile(values, 100)}};
+}
+
+Json arch_json(const DentalArchBench& arch) {
+  std::vector<double> errors, seconds, shares, rms, confidence;
+  int failures = 0, within = 0;
+  for (const auto& t : arch.trials) {
+    seconds.push_back(t.seconds);
+    if (!t.failure.empty()) {
+      ++failures;
+      continue;
+    }
+    errors.push_back(t.error_mm), shares.push_back(t.on_teeth_share), rms.push_back(t.rms_mm);
+    confidence.push_back(t.confidence);
+    within += t.error_mm <= 0.15;
+  }
+  return {{"arch", arch.arch},
+          {"starts", arch.trials.size()},
+          {"failures", failures},
+          {"scan_vertices", arch.scan_vertices},
+          {"teeth_vertices", arch.teeth_vertices},
+          {"error_mm", spread(errors)},
+          {"starts_within_0_15_mm", within},
+          {"on_teeth_share_median", occlusion::percentile(shares, 50)},
+          {"rms_mm_median", occlusion::percentile(rms, 50)},
+          {"confidence_median", occlusion::percentile(confidence, 50)},
+          {"seconds", spread(seconds)}};
+}
+
+}  // namespace
+
+DentalBenchmark run_dental_benchmark(const DentalBenchOptions& options) {
+  DentalBenchmark result;
+  result.seed = options.seed;
+  const RealTeeth teeth = real_teeth(options.data);
+  if (!teeth.absent.empty()) {
+    result.skipped = teeth.absent;
+    return result;
+  }
+  const TriangleMesh upper = read_mesh(teeth.upper), lower = read_mesh(teeth.lower);
+  const Eigen::Vector3d between = 0.5 * (upper.vertices.colwise().mean() + lower.vertices.colwise().mean()).transpose();
+  DentalScanOptions scan_options;
+  scan_options.seed = options.seed;
+  const TriangleMesh upper_scan =
+      simulated_dental_scan(read_meshes_in(teeth.folder / "maxilla"), between, scan_options);
+  const TriangleMesh lower_scan =
+      simulated_dental_scan(read_meshes_in(teeth.folder / "mandible"), between, scan_options);
+  std::mt19937 random(options.seed);
+  result.arches.push_back(bench_arch("upper", upper_scan, upper, options.starts, random));
+  result.arches.push_back(bench_arch("lower", lower_scan, lower, options.starts, random));
+  return result;
+}
+
+Json dental_benchmark_json(const DentalBenchmark& benchmark) {
+  Json arches = Json::array();
+  for (const auto& arch : benchmark.arches) arches.push_back(arch_json(arch));
+  return {{"seed", benchmark.seed}, {"max_start_mm", kMaxStartMm}, {"max_start_deg", kMaxStartDeg}, {"arches", arches}};
+}
+
+std::string dental_benchmark_text(const DentalBenchmark& benchmark) {
+  if (!benchmark.skipped.empty()) return "skipped: " + benchmark.skipped + "\n";
+  std::string text;
+  for (const auto& arch : benchmark.arches) {
+    for (size_t k = 0; k < arch.trials.size(); ++k) {
+      const DentalTrial& t = arch.trials[k];
+      text += t.failure.empty()
+                  ? formatted(
+                        "%s start %2zu: %5.1f mm off -> %.3f mm from the truth; %.0f %% on the teeth, RMS %.3f "
+                        "mm, P95 %.3f mm, confidence %.2f, %.2f s\n",
+                        arch.arch.c_str(), k + 1, t.start_mm, t.error_mm, 100 * t.on_teeth_share, t.rms_mm, t.p95_mm,
+                        t.confidence, t.seconds)
+                  : formatted("%s start %2zu: %5.1f mm off -> FAILED: %s\n", arch.arch.c_str(), k + 1, t.start_mm,
+                              t.failure.c_str());
+    }
+  }
+  for (const auto& arch : benchmark.arches) {
+    const Json f = arch_json(arch);
+    text += formatted(
+        "%s arch: scan %lld vertices onto teeth %lld; from the truth median %.3f mm, P90 %.3f, worst %.3f "
+        "(targets 0.15, 0.3); %d of %d starts within 0.15 mm, %d failed; %.2f s per arch (median; target 5)\n",
+        arch.arch.c_str(), (long long)arch.scan_vertices, (long long)arch.teeth_vertices,
+        f["error_mm"]["median"].get<double>(), f["error_mm"]["p90"].get<double>(), f["error_mm"]["max"].get<double>(),
+        f["starts_within_0_15_mm"].get<int>(), int(arch.trials.size()), f["failures"].get<int>(),
+        f["seconds"]["median"].get<double>());
+  }
+  return text;
+}
+
+}  // namespace maxillo::bench
