@@ -5,9 +5,10 @@
 //    keep a right-handed frame (the two long axes of an arch, its width and depth, may come in
 //    either order, and each axis either way round), about the centroids; and any starts given
 //    (from dental landmarks).
-// 2. From each start, point-to-plane ICP (validation/rigid_icp.h) with pairs first up to 8 mm
-//    apart, then 3, then 1 mm: the last fit uses only the scan's surface that lies on the CT's
-//    teeth, so the gingiva, the cast base and the crowns' streaked or missing parts drop out.
+// 2. From each start, point-to-plane ICP (validation/rigid_icp.h) with pairs up to 8 mm apart;
+//    the three starts whose coarse fits lay most of the scan on the teeth go on with pairs up to
+//    3 mm, then 1 mm: the last fit uses only the scan's surface that lies on the CT's teeth, so
+//    the gingiva, the cast base and the crowns' streaked or missing parts drop out.
 // 3. The fit kept is the one with the largest share of the scan within 0.5 mm of the CT's teeth.
 //    Its confidence is how far the best other fit (one that places the scan more than 1 mm away)
 //    falls short of it: 1 - its share / the best share.
@@ -41,7 +42,7 @@ struct ArchFit {
 struct ArchRegistration {
   ArchFit fit;
   double confidence = 0;            // 1 - (best other pose's share) / (the fit's share)
-  std::vector<ArchFit> candidates;  // one per start, in the starts' order
+  std::vector<ArchFit> candidates;  // one per start, in the starts' order (coarse only, but for the three refined)
 };
 
 // Throws Error(BadValue) for an empty mesh, Error(Processing) for a poor or ambiguous fit.

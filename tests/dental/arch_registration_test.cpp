@@ -9,6 +9,7 @@
 #include <random>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "core/error.h"
@@ -16,8 +17,10 @@
 #include "registration_error.h"
 #include "geometry/mesh_transform.h"
 #include "mesh/mesh_io.h"
+#include "mesh/surface_extraction.h"
 #include "occlusion/occlusion_benchmark.h"
 #include "sample/simulated_dental_scan.h"
+#include "sample/teeth_ct.h"
 
 namespace maxillo::dental {
 namespace {
@@ -80,6 +83,25 @@ TEST(ArchRegistration, AScanOfRealCrownsFindsItsTeethFromFarStarts) {
 }
 
 using testing::registration_error;
+
+// What a CT shows of both arches (sample/teeth_ct.h: 0.4 mm, alveolar bone, three fillings and
+// their streaks), as the surface at the segmentation's teeth threshold.
+TEST(ArchRegistration, EachScanFindsItsArchInACtOfBothWithFillingStreaks) {
+  const auto* arches = real_arches();
+  if (!arches) GTEST_SKIP() << "the real teeth are not at " << teeth_folder();
+  SurfaceOptions surface;
+  surface.keep_largest_components = 0;
+  const TriangleMesh ct_teeth = extract_surface(teeth_ct(arches->upper, arches->lower), 1500, surface);
+  std::mt19937 random(3);
+  for (const auto& [scan, name] : {std::pair{&arches->upper_scan, "upper"}, std::pair{&arches->lower_scan, "lower"}}) {
+    const Eigen::Vector3d centre = scan->vertices.colwise().mean().transpose();
+    const Eigen::Isometry3d pose = occlusion::random_displacement(random, centre, 20, 30);
+    const TriangleMesh scan_moved = transformed(*scan, pose);
+    const ArchRegistration r = register_arch(scan_moved, ct_teeth);
+    EXPECT_LT(crown_error_mm(scan_moved, r.fit.transform, pose.inverse()), 0.15) << name;
+    EXPECT_GT(r.fit.on_teeth_share, 0.8) << name;
+  }
+}
 
 // An upper arch given for the lower one, or a scan in centimetres: the fit is poor and the error
 // says so and names the likely causes; nothing is returned as a registration.
