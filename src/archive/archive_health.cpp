@@ -16,7 +16,7 @@ std::string rebuild_advice(const std::filesystem::path& archive_folder) {
 }
 
 std::string rebuild_advice(db::Connection& db) {
-  if (db.engine() == db::Engine::Sqlite) return rebuild_advice(static_cast<sqlite::Database&>(db).file().parent_path());
+  if (const auto file = db.index_file(); !file.empty()) return rebuild_advice(file.parent_path());
   return "restore the database from its backup; the shared object folder and its journal are untouched";
 }
 
@@ -80,9 +80,7 @@ IndexPresence check_index_presence(const std::filesystem::path& archive_folder) 
 
 void require_intact_index(db::Connection& db) {
   // A PostgreSQL server checks its own pages as it reads them (and with data checksums on).
-  if (db.engine() != db::Engine::Sqlite) return;
-  db::Statement check(db, "PRAGMA quick_check");
-  std::string first = check.step() ? check.text(0) : "no answer";
+  const std::string first = db.quick_check();
   if (first == "ok") return;
   throw Error(ErrorCode::kIndexDamaged, db.name(),
               "the index is damaged (SQLite quick_check: " + first + "); " + rebuild_advice(db));

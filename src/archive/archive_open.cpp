@@ -41,11 +41,11 @@ std::map<int, std::string> migrations() {
   return by_version;
 }
 
-// The migration to `version` for this engine: db/postgresql/NNN_*.sql where PostgreSQL needs
-// its own dialect, else the shared db/NNN_*.sql.
-std::string migration_for(db::Engine engine, const std::string& shared_path) {
-  if (engine == db::Engine::Postgres) {
-    const std::string variant = "db/postgresql/" + shared_path.substr(3);
+// The migration to `version` for this connection's engine: db/DIALECT/NNN_*.sql where its
+// engine needs its own (db/postgresql/), else the shared db/NNN_*.sql.
+std::string migration_for(const db::Connection& db, const std::string& shared_path) {
+  if (const std::string dialect = db.migration_dialect(); !dialect.empty()) {
+    const std::string variant = "db/" + dialect + "/" + shared_path.substr(3);
     if (!list_resources(variant).empty()) return load_resource(variant);
   }
   return load_resource(shared_path);
@@ -88,7 +88,7 @@ int upgrade_schema(db::Connection& db, const IndexJournal& journal) {
     JournalledTransaction transaction(db, journal, "snapshot");
     const int found = db.schema_version();
     if (found >= version) continue;
-    db.execute(migration_for(db.engine(), path));
+    db.execute(migration_for(db, path));
     if (version == 2 && found == 1) snapshot_rows(transaction);
     db.set_schema_version(version);
     transaction.commit();
@@ -136,28 +136,43 @@ StoreLock::StoreLock(Archive::State& state, LockKind kind) : kind_(kind) {
     follow_a_rebuilt_index(state);
     return;
   }
-  static_cast<postgres::Connection&>(state.db).lock(postgres::kStoreLockKey, kind == LockKind::Shared);
-  server_ = &state.db;
+  server_ = state.server_index;
+  server_->lock(postgres::kStoreLockKey, kind == LockKind::Shared);
 }
 
 StoreLock::StoreLock(const std::filesystem::path& folder, LockKind kind, LockFile file)
     : fd_(lock_store_file(folder, kind, file)), kind_(kind) {}
 
 StoreLock::~StoreLock() {
-  if (server_) static_cast<postgres::Connection*>(server_)->unlock(postgres::kStoreLockKey, kind_ == LockKind::Shared);
+  if (server_) server_->unlock(postgres::kStoreLockKey, kind_ == LockKind::Shared);
   if (fd_ >= 0) ::close(fd_);  // closing releases the flock
 }
 
-Archive::State::State(ArchiveLocation where, std::unique_ptr<db::Connection> index)
+Archive::State::State(ArchiveLocation where, OpenedIndex index)
     : location(std::move(where)),
-      connection(std::move(index)),
+      connection(std::move(index.connection)),
       db(*connection),
+      file_index(index.file),
+      server_index(index.server),
       objects(location.objects_folder()),
       journal(journal_folder(location)) {}
 
+OpenedIndex open_index(const ArchiveLocation& location, sqlite::OpenKind open_kind) {
+  OpenedIndex opened;
+  if (location.embedded()) {
+    auto file = std::make_unique<sqlite::Database>(index_file(location.folder), open_kind);
+    opened.file = file.get();
+    opened.connection = std::move(file);
+  } else {
+    auto server = std::make_unique<postgres::Connection>(location.server_uri);
+    opened.server = server.get();
+    opened.connection = std::move(server);
+  }
+  return opened;
+}
+
 std::unique_ptr<db::Connection> connect_index(const ArchiveLocation& location, sqlite::OpenKind open_kind) {
-  if (!location.embedded()) return std::make_unique<postgres::Connection>(location.server_uri);
-  return std::make_unique<sqlite::Database>(index_file(location.folder), open_kind);
+  return open_index(location, open_kind).connection;
 }
 
 namespace {
@@ -180,7 +195,7 @@ std::unique_ptr<Archive::State> open_embedded(const ArchiveLocation& location, O
   if (kind == sqlite::OpenKind::ReadOnlyUntouched) log::debug("the archive is read-only here: its index is only read");
   std::unique_ptr<Archive::State> state;
   try {
-    state = std::make_unique<Archive::State>(location, connect_index(location, kind));
+    state = std::make_unique<Archive::State>(location, open_index(location, kind));
   } catch (const std::filesystem::filesystem_error& e) {
     throw Error(ErrorCode::kWriteFailed, location.folder.string(), e.code().message());
   }
@@ -192,7 +207,7 @@ std::unique_ptr<Archive::State> open_embedded(const ArchiveLocation& location, O
 // lock alone, in its own transactions: a command opening the database meanwhile finds it empty
 // or behind its journal, and is told to wait rather than that the index is lost (issue 29).
 void refuse_while_rebuilding(Archive::State& state) {
-  auto& server = static_cast<postgres::Connection&>(state.db);
+  postgres::Connection& server = *state.server_index;
   if (server.try_lock(postgres::kStoreLockKey, true)) {
     server.unlock(postgres::kStoreLockKey, true);
     return;
@@ -212,7 +227,7 @@ std::unique_ptr<Archive::State> open_on_server(const ArchiveLocation& location, 
     throw Error(
         ErrorCode::kBadArchiveAddress, location.shown,
         "the shared object folder " + location.folder.string() + " does not exist (make it on the shared storage)");
-  auto state = std::make_unique<Archive::State>(location, connect_index(location, sqlite::OpenKind::Existing));
+  auto state = std::make_unique<Archive::State>(location, open_index(location, sqlite::OpenKind::Existing));
   if (state->db.schema_version() == 0) {
     refuse_while_rebuilding(*state);
     if (holds_any_file(location.objects_folder()))
@@ -237,7 +252,7 @@ Archive Archive::open(const std::filesystem::path& where, OpenMode mode) {
   // upgrade can report "locked" without waiting on the busy handler. Retry them briefly.
   for (int attempt = 0;; ++attempt) {
     try {
-      if (location.embedded()) static_cast<sqlite::Database&>(state->db).use_archive_settings();
+      if (state->file_index) state->file_index->use_archive_settings();
       state->schema_version = upgrade_schema(state->db, state->journal);
       break;
     } catch (const Error& e) {

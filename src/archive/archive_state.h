@@ -8,17 +8,28 @@
 #include "archive/index_connection.h"
 #include "archive/index_journal.h"
 #include "archive/object_store.h"
+#include "archive/postgres.h"
 #include "archive/sqlite.h"
 #include "core/utc_time.h"
 
 namespace maxillo {
 
+// A connection to the archive's index, and its engine's own object where the archive needs what
+// only that engine has: the embedded file's settings, the server's advisory locks.
+struct OpenedIndex {
+  std::unique_ptr<db::Connection> connection;
+  sqlite::Database* file = nullptr;        // an embedded index, or
+  postgres::Connection* server = nullptr;  // a server's database
+};
+
 struct Archive::State {
-  State(ArchiveLocation where, std::unique_ptr<db::Connection> index);
+  State(ArchiveLocation where, OpenedIndex index);
   ArchiveLocation location;
   std::filesystem::path address;  // as given to Archive::open
   std::unique_ptr<db::Connection> connection;
-  db::Connection& db;  // *connection
+  db::Connection& db;                            // *connection
+  sqlite::Database* file_index = nullptr;        // *connection of an embedded archive
+  postgres::Connection* server_index = nullptr;  // *connection of a server archive
   ObjectStore objects;
   IndexJournal journal;
   int schema_version = 0;
@@ -47,7 +58,7 @@ class StoreLock {
 
  private:
   int fd_ = -1;
-  db::Connection* server_ = nullptr;
+  postgres::Connection* server_ = nullptr;
   LockKind kind_;
 };
 
@@ -68,7 +79,9 @@ int upgrade_schema(db::Connection& db, const IndexJournal& journal);
 // with three queries per 4,096 cases; ids with no case are left out.
 std::map<int64_t, CaseContents> read_case_contents(db::Connection& db, const std::vector<int64_t>& case_ids);
 
-// A new connection to the archive's index (import's scanning thread has its own).
+// A new connection to the archive's index (import's scanning thread has its own), with its
+// engine's object, or alone.
+OpenedIndex open_index(const ArchiveLocation& location, sqlite::OpenKind open_kind);
 std::unique_ptr<db::Connection> connect_index(const ArchiveLocation& location, sqlite::OpenKind open_kind);
 
 }  // namespace maxillo

@@ -17,9 +17,10 @@ int64_t Archive::clock_seconds() const { return state_->db.clock_seconds(); }
 
 std::optional<std::string> Archive::claim_work(std::string_view queue, std::string_view holder, int64_t now,
                                                int64_t lease_seconds) {
-  // SQLite takes the file's write lock before looking (BEGIN IMMEDIATE), so two claims never
-  // see the same free item; PostgreSQL locks the row it picks and lets other claims skip it.
-  const bool embedded = state_->db.engine() == db::Engine::Sqlite;
+  // An index that locks single rows (PostgreSQL) locks the row it picks and lets other claims
+  // skip it; else the index's write lock is taken before looking (SQLite's BEGIN IMMEDIATE), so
+  // two claims never see the same free item.
+  const bool embedded = !state_->db.locks_rows();
   std::optional<std::string> claimed;
   db::retry_transaction([&] {
     claimed.reset();

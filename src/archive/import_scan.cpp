@@ -108,10 +108,7 @@ struct FileScanner::Queries {
         db(*connection),
         known_object(db, sql::kInstanceWithObject),
         object_of_sop(db, sql::kObjectOfSopInstance) {
-    if (db.engine() == db::Engine::Sqlite)
-      db.execute("PRAGMA query_only = ON");
-    else
-      db.execute("SET default_transaction_read_only = on");
+    db.make_read_only();
   }
   std::unique_ptr<db::Connection> connection;
   db::Connection& db;

@@ -6,7 +6,8 @@
 // positional parameters ?1, ?2... (the PostgreSQL driver renumbers them $1, $2...), ON CONFLICT
 // instead of INSERT OR IGNORE, RETURNING id instead of a last-insert-rowid call, COALESCE and
 // CAST instead of engine functions. Where the engines truly differ (the schema's DDL, schema
-// version, integrity checks, store locks, claiming work) the connection answers for its engine.
+// version, integrity checks, read-only sessions, claiming work, identities) the connection
+// answers for its engine: nothing outside sqlite.* and postgres.* asks which engine it is.
 //
 //   db::Statement insert(connection, "INSERT INTO t(a) VALUES (?1) RETURNING id");
 //   insert.reset().bind(1, "x");
@@ -16,6 +17,7 @@
 // of the whole transaction may cure (busy, serialization failure, deadlock, unique violation),
 // kIndexDamaged for a damaged index, kDatabase otherwise.
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -25,7 +27,6 @@
 
 namespace maxillo::db {
 
-enum class Engine { Sqlite, Postgres };
 enum class ColumnType { Integer, Real, Text, Null };
 // Immediate: the transaction takes the index's write lock at once (SQLite BEGIN IMMEDIATE,
 // a transaction-scoped advisory lock on PostgreSQL), so writers commit one after another in
@@ -54,7 +55,6 @@ class PreparedStatement {
 class Connection {
  public:
   virtual ~Connection() = default;
-  virtual Engine engine() const = 0;
   // What error messages name: the index file, or the server without its password.
   virtual const std::string& name() const = 0;
   // Runs one or more statements without results (schema scripts).
@@ -74,6 +74,27 @@ class Connection {
   // index file swapped by `archive rebuild-index`), in which case the connection is opened
   // again on the new one. A server's database is never swapped under a connection.
   virtual bool reopen_if_moved() { return false; }
+
+  // Where the engines differ.
+  // The index file of an embedded index (empty for a server's database): what a damaged index
+  // is rebuilt beside.
+  virtual std::filesystem::path index_file() const { return {}; }
+  // The folder under db/ holding this engine's own versions of migrations (empty: the shared
+  // SQL serves).
+  virtual std::string migration_dialect() const { return {}; }
+  // No statement of this session may write from now on.
+  virtual void make_read_only() = 0;
+  // Whether a transaction can lock the single rows it picks and let others skip them (SELECT
+  // ... FOR UPDATE SKIP LOCKED); else writers serialise on the whole index (BEGIN IMMEDIATE).
+  virtual bool locks_rows() const { return false; }
+  // A quick check of the index's pages ("ok", or the first finding), and a full one (up to
+  // 20 findings joined by "; "). "ok" for a server, which checks its pages as it reads them.
+  virtual std::string quick_check() { return "ok"; }
+  virtual std::string integrity_check() { return "ok"; }
+  // The columns of an index table, in their order.
+  virtual std::vector<std::string> table_columns(const std::string& table) = 0;
+  // After rows were written with their own ids: the table's next generated id moves past them.
+  virtual void advance_identity(const std::string& /*table*/) {}
 };
 
 // A prepared statement, reset and re-bound for each use.

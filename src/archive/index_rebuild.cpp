@@ -135,7 +135,7 @@ RebuildReport rebuild_on_server(const ArchiveLocation& location, const RebuildOp
   if (!std::filesystem::is_directory(location.objects_folder()))
     throw Error(ErrorCode::kBadArchiveAddress, location.shown,
                 "the shared object folder " + location.folder.string() + " does not exist");
-  Archive::State state(location, connect_index(location, sqlite::OpenKind::Existing));
+  Archive::State state(location, open_index(location, sqlite::OpenKind::Existing));
   StoreLock lock(state, LockKind::Exclusive);
   if (state.db.schema_version() != 0)
     throw Error(ErrorCode::kConflict, location.shown,

@@ -12,17 +12,6 @@ namespace {
   throw Error(ErrorCode::kIndexDamaged, source.string(), "journal entry cannot be replayed: " + reason);
 }
 
-std::vector<std::string> schema_columns(db::Connection& db, const std::string& table) {
-  db::Statement info(db, db.engine() == db::Engine::Sqlite
-                             ? "SELECT name FROM pragma_table_info(?1)"
-                             : "SELECT column_name FROM information_schema.columns WHERE table_name = ?1 "
-                               "AND table_schema = current_schema() ORDER BY ordinal_position");
-  info.bind(1, table);
-  std::vector<std::string> columns;
-  while (info.step()) columns.push_back(info.text(0));
-  return columns;
-}
-
 void bind_value(db::Statement& statement, int index, const Json& value, const std::filesystem::path& source) {
   if (value.is_null())
     statement.bind_null(index);
@@ -43,15 +32,11 @@ std::string primary_key(const std::string& table) {
   return "id";
 }
 
-// Rows written with their own ids leave a PostgreSQL identity behind them: move it past the
-// highest id, so the next insert does not collide with a replayed row.
+// Rows written with their own ids leave an identity (PostgreSQL's) behind them: it moves past
+// the highest id, so the next insert does not collide with a replayed row.
 void advance_identities(db::Connection& db) {
-  if (db.engine() != db::Engine::Postgres) return;
-  for (const auto& table : index_tables()) {
-    if (primary_key(table) != "id") continue;
-    db.execute("SELECT setval(pg_get_serial_sequence('" + table + "', 'id'), COALESCE((SELECT MAX(id) FROM " + table +
-               "), 0) + 1, false)");
-  }
+  for (const auto& table : index_tables())
+    if (primary_key(table) == "id") db.advance_identity(table);
 }
 
 }  // namespace
@@ -67,7 +52,7 @@ struct JournalReplayer::Statements {
 };
 
 JournalReplayer::JournalReplayer(db::Connection& db) : db_(db), statements_(new Statements) {
-  for (const auto& table : index_tables()) columns_[table] = schema_columns(db, table);
+  for (const auto& table : index_tables()) columns_[table] = db.table_columns(table);
 }
 
 JournalReplayer::~JournalReplayer() { delete statements_; }

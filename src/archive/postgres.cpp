@@ -262,4 +262,21 @@ void Connection::unlock(int64_t key, bool shared) noexcept {
   PQclear(PQexec(connection_, sql.c_str()));
 }
 
+void Connection::make_read_only() { execute("SET default_transaction_read_only = on"); }
+
+std::vector<std::string> Connection::table_columns(const std::string& table) {
+  db::Statement info(*this,
+                     "SELECT column_name FROM information_schema.columns WHERE table_name = ?1 "
+                     "AND table_schema = current_schema() ORDER BY ordinal_position");
+  info.bind(1, table);
+  std::vector<std::string> columns;
+  while (info.step()) columns.push_back(info.text(0));
+  return columns;
+}
+
+void Connection::advance_identity(const std::string& table) {
+  execute("SELECT setval(pg_get_serial_sequence('" + table + "', 'id'), COALESCE((SELECT MAX(id) FROM " + table +
+          "), 0) + 1, false)");
+}
+
 }  // namespace maxillo::postgres

@@ -32,7 +32,6 @@ class Connection final : public db::Connection {
   Connection(const Connection&) = delete;
   Connection& operator=(const Connection&) = delete;
 
-  db::Engine engine() const override { return db::Engine::Postgres; }
   const std::string& name() const override { return name_; }
   void execute(std::string_view sql) override;
   std::unique_ptr<db::PreparedStatement> prepare(std::string_view sql) override;
@@ -43,6 +42,12 @@ class Connection final : public db::Connection {
   int schema_version() override;
   void set_schema_version(int version) override;
   int64_t clock_seconds() override;
+  std::string migration_dialect() const override { return "postgresql"; }
+  void make_read_only() override;  // default_transaction_read_only
+  bool locks_rows() const override { return true; }
+  std::vector<std::string> table_columns(const std::string& table) override;
+  // setval of the table's id sequence past its highest id.
+  void advance_identity(const std::string& table) override;
 
   // Session-level advisory locks, released by unlock or when the connection ends (a killed
   // process's locks go with its connection).

@@ -227,4 +227,26 @@ void Database::commit() {
   }
 }
 
+void Database::make_read_only() { execute("PRAGMA query_only = ON"); }
+
+std::string Database::quick_check() {
+  db::Statement check(*this, "PRAGMA quick_check");
+  return check.step() ? check.text(0) : "no answer";
+}
+
+std::string Database::integrity_check() {
+  db::Statement check(*this, "PRAGMA integrity_check(20)");
+  std::string findings;
+  while (check.step()) findings += (findings.empty() ? "" : "; ") + check.text(0);
+  return findings.empty() ? "no answer" : findings;
+}
+
+std::vector<std::string> Database::table_columns(const std::string& table) {
+  db::Statement info(*this, "SELECT name FROM pragma_table_info(?1)");
+  info.bind(1, table);
+  std::vector<std::string> columns;
+  while (info.step()) columns.push_back(info.text(0));
+  return columns;
+}
+
 }  // namespace maxillo::sqlite

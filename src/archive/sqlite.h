@@ -29,7 +29,6 @@ class Database final : public db::Connection {
   Database(const Database&) = delete;
   Database& operator=(const Database&) = delete;
 
-  db::Engine engine() const override { return db::Engine::Sqlite; }
   const std::string& name() const override { return name_; }
   void execute(std::string_view sql) override;
   std::unique_ptr<db::PreparedStatement> prepare(std::string_view sql) override;
@@ -48,6 +47,11 @@ class Database final : public db::Connection {
   // connection is opened again on the file now there. SQLite's SQLITE_FCNTL_HAS_MOVED compares
   // the open file's inode with the path's.
   bool reopen_if_moved() override;
+  std::filesystem::path index_file() const override { return file_; }
+  void make_read_only() override;  // PRAGMA query_only
+  std::string quick_check() override;
+  std::string integrity_check() override;
+  std::vector<std::string> table_columns(const std::string& table) override;
 
   const std::filesystem::path& file() const { return file_; }
   sqlite3* handle() const { return db_; }

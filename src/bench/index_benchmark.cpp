@@ -69,7 +69,7 @@ Json run_index_benchmark(const IndexBenchOptions& options, const NightlyScan& ni
   };
   Json timings = Json::object();
   for (size_t q = 0; q < kQueries.size(); ++q) timings[kQueries[q]] = median_seconds(options.runs, queries[q]);
-  return {{"index", scratch.engine()},
+  return {{"index", scratch.index_kind()},
           {"patients", options.patients},
           {"instances", options.instances},
           {"fill_seconds", fill_seconds},

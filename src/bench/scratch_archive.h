@@ -17,7 +17,7 @@ class ScratchArchive {
   ScratchArchive& operator=(const ScratchArchive&) = delete;
 
   const std::filesystem::path& address() const { return address_; }
-  const char* engine() const { return server_.empty() ? "SQLite" : "PostgreSQL"; }
+  const char* index_kind() const { return server_.empty() ? "SQLite" : "PostgreSQL"; }
 
  private:
   std::string server_;
