@@ -1,13 +1,17 @@
 #include "bench/cube_benchmark.h"
 
 #include <algorithm>
+#include <cstdlib>
+#include <fstream>
 #include <map>
 #include <vector>
 
 #include "bench/formatted.h"
 #include "bench/timing.h"
 #include "core/error.h"
+#include "core/temporary_folder.h"
 #include "softtissue/blas_library.h"
+#include "softtissue/calculix_deck.h"
 #include "softtissue/cube_benchmark.h"
 #include "softtissue/element_quality.h"
 #include "softtissue/mass_spring_model.h"
@@ -89,6 +93,27 @@ Json rigid_plan_figures(const CubeProblem& cube, const FactorisedElasticity& fac
           {"rigid_plan_vs_resolve_max_mm", (solve_rigid_plan(basis, lift) - displacement).cwiseAbs().maxCoeff()}};
 }
 
+// CalculiX's linear static step on the same cube: its wall seconds (reading the deck, assembling,
+// its direct solver, writing the answer, as a user runs it), the largest difference between its
+// answer and `fem`, and how many times faster the FEM's assembly and solve (`fem_seconds`) are.
+Json calculix_figures(const CubeProblem& cube, const Eigen::MatrixX3d& fem, double fem_seconds) {
+  if (std::system("command -v ccx > /dev/null 2>&1") != 0)
+    throw Error(ErrorCode::kUsage, "bench cube --calculix", "ccx not found (scripts/setup installs calculix-ccx)");
+  TemporaryFolder folder("bench-calculix");
+  std::ofstream(folder / "cube.inp") << calculix_deck(cube.mesh, Material{}, cube.bc);
+  int status = 0;
+  const double seconds = seconds_of(
+      [&] { status = std::system(("cd '" + folder.path().string() + "' && ccx -i cube > ccx.log 2>&1").c_str()); });
+  std::ifstream dat(folder / "cube.dat");
+  const Eigen::MatrixX3d theirs = read_calculix_displacements(dat, cube.mesh.node_count());
+  if (status != 0 || !theirs.allFinite())
+    throw Error(ErrorCode::kProcessing, "bench cube --calculix",
+                "ccx did not solve the cube (exit status " + std::to_string(status) + ")");
+  return {{"calculix_seconds", seconds},
+          {"calculix_vs_fem_worst_mm", (theirs - fem).cwiseAbs().maxCoeff()},
+          {"fem_speedup_over_calculix", seconds / fem_seconds}};
+}
+
 Json bench_fem(const CubeProblem& cube, const CubeBenchOptions& options, Eigen::MatrixX3d& displacement) {
   StaticSolution solution;
   const double solve_seconds = median_seconds(options.runs, [&] {
@@ -116,6 +141,8 @@ Json bench_fem(const CubeProblem& cube, const CubeBenchOptions& options, Eigen::
                   {"cholesky", factorised.backend == CholeskyBackend::kCholmodSupernodal ? "cholmod" : "eigen"},
                   {"resolve_seconds", resolve}};
   figures.update(rigid_plan_figures(cube, factorised, options.runs, displacement));
+  if (options.calculix)
+    figures.update(calculix_figures(cube, solution.displacement, cube.assembly_seconds + solve_seconds));
   return figures;
 }
 

@@ -30,14 +30,18 @@ struct CubeBenchOptions {
                                              : softtissue::CholeskyBackend::kEigenSimplicial;
   // mtm, msm: the local stop threshold (mm per iteration) and over-relaxation
   softtissue::LocalIterationOptions local{1e-3, 1.0, 1000000};
-  int runs = 5;               // timed runs; the median is reported
+  int runs = 5;  // timed runs; the median is reported
+  // fem: CalculiX (ccx) on the same mesh, material and moves too: its seconds, how far its answer
+  // lies from the FEM's, and the ratio of the times (issue 32)
+  bool calculix = false;
   std::filesystem::path out;  // when set: the mesh, displacement and bc written as a .vtu file
 };
 
 // The figures: the mesh and its boundary conditions (model, tets, nodes, divisions, free_nodes,
 // prescribed_nodes, min_dihedral_deg, max_aspect_ratio), assembly_seconds, runs,
 // max_displacement_mm, and model_result: the model's own (solve_seconds, iterations, precision
-// or difference from FEM in mm; for mtm a threshold_table, one row per stop threshold).
+// or difference from FEM in mm; for mtm a threshold_table, one row per stop threshold; with
+// calculix: calculix_seconds, calculix_vs_fem_worst_mm, fem_speedup_over_calculix).
 Json run_cube_benchmark(const CubeBenchOptions& options);
 
 // The figures as `bench cube` prints them: a "key: value" line each (the model's after the

@@ -38,6 +38,8 @@ void attach_bench_cube(CLI::App& bench, CommandContext& ctx) {
   cube->add_option("--relaxation", args->local.relaxation, "mtm/msm: over-relaxation of the point update, in [1, 2)")
       ->check(CLI::Range(1.0, 1.99));
   cube->add_option("--runs", args->runs, "timed runs; the median is reported")->check(CLI::Range(1, 100));
+  cube->add_flag("--calculix", args->calculix,
+                 "fem: CalculiX (ccx) on the same cube too: its seconds, its difference, the speed ratio");
   cube->add_option("--out", args->out, "write the mesh, displacement and bc as a .vtu file");
   cube->callback([args, &ctx] {
     const Json figures = bench::run_cube_benchmark(*args);

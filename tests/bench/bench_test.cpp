@@ -105,6 +105,19 @@ TEST(IndexBenchmark, TimesEveryQueryAndGivesTheNightlyScanItsFolder) {
   EXPECT_EQ(lines[6], "  nightly scan found 4 eligible cases");
 }
 
+// CalculiX on the same small cube: its answer matches the FEM's at the bench's tolerance, and the
+// figures say how long it took and the ratio of the times.
+TEST(CubeBenchmark, CalculixSolvesTheSameCubeAsTheFem) {
+  CubeBenchOptions options;
+  options.tets = 3000, options.runs = 1, options.calculix = true;
+  const Json figures = run_cube_benchmark(options);
+  const Json& fem = figures["model_result"];
+  EXPECT_LT(fem["calculix_vs_fem_worst_mm"].get<double>(), 1e-4);
+  EXPECT_GT(fem["calculix_seconds"].get<double>(), 0);
+  EXPECT_GT(fem["fem_speedup_over_calculix"].get<double>(), 0);
+  EXPECT_NE(cube_benchmark_text(figures).find("\ncalculix_vs_fem_worst_mm: "), std::string::npos);
+}
+
 TEST(CubeBenchmark, MassTensorFiguresAndItsThresholdTable) {
   CubeBenchOptions options;
   options.tets = 400, options.model = softtissue::SoftTissueModel::kMassTensor, options.runs = 1;

@@ -14,6 +14,8 @@
 #include <sstream>
 #include <string>
 
+#include "core/error.h"
+#include "softtissue/calculix_deck.h"
 #include "softtissue/cube_mesh.h"
 #include "softtissue/linear_static_solve.h"
 #include "softtissue/nonlinear_fem.h"
@@ -49,51 +51,14 @@ CubeProblem lifted_cube(double lift_mm) {
   return problem;
 }
 
-// The problem as a CalculiX input deck (nodes and elements numbered from 1).
-std::string calculix_deck(const CubeProblem& problem, const Material& material, bool nonlinear) {
-  std::ostringstream deck;
-  deck.precision(17);
-  deck << "*NODE, NSET=NALL\n";
-  for (int i = 0; i < problem.mesh.node_count(); ++i)
-    deck << i + 1 << ", " << problem.mesh.nodes(i, 0) << ", " << problem.mesh.nodes(i, 1) << ", "
-         << problem.mesh.nodes(i, 2) << "\n";
-  deck << "*ELEMENT, TYPE=C3D4, ELSET=EALL\n";
-  for (int t = 0; t < problem.mesh.tet_count(); ++t)
-    deck << t + 1 << ", " << problem.mesh.tets(t, 0) + 1 << ", " << problem.mesh.tets(t, 1) + 1 << ", "
-         << problem.mesh.tets(t, 2) + 1 << ", " << problem.mesh.tets(t, 3) + 1 << "\n";
-  deck << "*NSET, NSET=HELD\n";
-  for (int i = 0; i < problem.mesh.node_count(); ++i)
-    if (problem.bc.constraint[size_t(i)] == NodeConstraint::kFixed) deck << i + 1 << ",\n";
-  deck << "*MATERIAL, NAME=TISSUE\n*ELASTIC\n" << material.young_modulus_mpa << ", " << material.poisson_ratio << "\n";
-  deck << "*SOLID SECTION, ELSET=EALL, MATERIAL=TISSUE\n";
-  deck << "*BOUNDARY\nHELD, 1, 3, 0.\n";
-  // Non-linear: ten increments, and the force residual checked to 1e-9 of the average force
-  // (ccx's default, 5e-3, stops far from equilibrium).
-  deck << (nonlinear ? "*STEP, NLGEOM, INC=100\n*STATIC\n0.1, 1.0\n" : "*STEP\n*STATIC\n");
-  if (nonlinear) deck << "*CONTROLS, PARAMETERS=FIELD\n1e-9, 1e-9, , , 1e-9\n";
-  deck << "*BOUNDARY\n"
-       << problem.centre + 1 << ", 1, 2, 0.\n"
-       << problem.centre + 1 << ", 3, 3, " << problem.bc.displacement(problem.centre, 2) << "\n";
-  deck << "*NODE PRINT, NSET=NALL\nU\n*END STEP\n";
-  return deck.str();
-}
-
-// Runs ccx on the deck in a scratch folder and reads the nodal displacements it printed last
-// (the .dat file: a header line per printed time, then "node ux uy uz" rows).
-Eigen::MatrixX3d solve_with_calculix(const CubeProblem& problem, const Material& material, bool nonlinear) {
+// Runs ccx on the problem's deck in a scratch folder and reads the displacements it printed.
+Eigen::MatrixX3d solve_with_calculix(const CubeProblem& problem, const Material& material, CalculixStep step) {
   maxillo::testing::TemporaryFolder folder("calculix");
-  std::ofstream(folder / "cube.inp") << calculix_deck(problem, material, nonlinear);
+  std::ofstream(folder / "cube.inp") << calculix_deck(problem.mesh, material, problem.bc, step);
   const auto run = maxillo::testing::run_command("cd " + maxillo::testing::quote(folder.path()) +
                                                  " && OMP_NUM_THREADS=1 ccx -i cube > ccx.log 2>&1; echo $?");
   std::ifstream dat(folder / "cube.dat");
-  Eigen::MatrixX3d u = Eigen::MatrixX3d::Constant(problem.mesh.node_count(), 3, std::nan(""));
-  std::string line;
-  while (std::getline(dat, line)) {
-    std::istringstream row(line);
-    int node = 0;
-    double x = 0, y = 0, z = 0;
-    if (row >> node >> x >> y >> z && node >= 1 && node <= u.rows()) u.row(node - 1) << x, y, z;
-  }
+  const Eigen::MatrixX3d u = read_calculix_displacements(dat, problem.mesh.node_count());
   if (!u.allFinite()) {
     std::ifstream log(folder / "ccx.log");
     ADD_FAILURE() << "ccx exit " << run.output << ": " << std::string(std::istreambuf_iterator<char>(log), {});
@@ -114,7 +79,7 @@ TEST_F(CalculixCrossCheck, TheLinearFemMatchesCalculixLinearStatic) {
   const auto ours = solve_linear_static(assemble_stiffness_blocks(problem.mesh, material), problem.bc,
                                         KrylovOptions{Preconditioner::kBlockJacobi, 1e-12, 100000});
   ASSERT_EQ(ours.status, SolveStatus::kConverged);
-  const Eigen::MatrixX3d theirs = solve_with_calculix(problem, material, false);
+  const Eigen::MatrixX3d theirs = solve_with_calculix(problem, material, CalculixStep::kLinear);
   ASSERT_TRUE(theirs.allFinite());
   EXPECT_GT(theirs.col(2).maxCoeff(), 0.49);  // the centre lifted
   EXPECT_LT((ours.displacement - theirs).cwiseAbs().maxCoeff(), 1e-5);
@@ -129,12 +94,24 @@ TEST_F(CalculixCrossCheck, TheNonlinearFemMatchesCalculixWithGeometricNonlineari
   options.linear_tolerance = 1e-10;
   const auto ours = solve_nonlinear_static(problem.mesh, material, problem.bc, options);
   ASSERT_TRUE(ours.converged);
-  const Eigen::MatrixX3d theirs = solve_with_calculix(problem, material, true);
+  const Eigen::MatrixX3d theirs = solve_with_calculix(problem, material, CalculixStep::kGeometricallyNonlinear);
   ASSERT_TRUE(theirs.allFinite());
   const auto linear = solve_linear_static(assemble_stiffness_blocks(problem.mesh, material), problem.bc);
   const double nonlinearity = (linear.displacement - theirs).cwiseAbs().maxCoeff();
   EXPECT_GT(nonlinearity, 0.05);  // large enough that the linear answer is not the non-linear one
   EXPECT_LT((ours.displacement - theirs).cwiseAbs().maxCoeff(), 1e-5) << "linear FEM differs by " << nonlinearity;
+}
+
+// What the deck cannot say is refused rather than written wrong: sliding nodes (an equation per
+// node in CalculiX), and a mesh held nowhere.
+TEST(CalculixDeck, RefusesSlidingNodesAndAMeshHeldNowhere) {
+  const CubeProblem problem = lifted_cube(0.5);
+  BoundaryConditions sliding = problem.bc;
+  make_sliding(sliding, problem.centre, Eigen::Vector3d::UnitZ(), Eigen::Vector3d(0, 0, 0.5));
+  EXPECT_THROW(calculix_deck(problem.mesh, Material{}, sliding), Error);
+  EXPECT_THROW(calculix_deck(problem.mesh, Material{}, all_free(problem.mesh.node_count())), Error);
+  std::istringstream nothing("no numbers here\n");
+  EXPECT_FALSE(read_calculix_displacements(nothing, 3).allFinite());
 }
 
 }  // namespace
