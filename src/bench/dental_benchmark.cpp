@@ -22,28 +22,16 @@ constexpr double kMaxStartMm = 20, kMaxStartDeg = 30;
 // Where the CT's teeth begin: the segmentation's teeth threshold (imaging/segmentation.h).
 const double kTeethHu = SegmentationOptions{}.teeth_hu;
 
-// RMS over the mesh's vertices of |a v - b v|.
-double rms_between(const TriangleMesh& mesh, const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
-  const std::vector<int> all = [&] {
-    std::vector<int> v(size_t(mesh.vertex_count()));
-    for (size_t i = 0; i < v.size(); ++i) v[i] = int(i);
-    return v;
-  }();
-  double sum = 0;
-  for (double d : occlusion::vertex_displacements(mesh, all, a, b)) sum += d * d;
-  return all.empty() ? 0 : std::sqrt(sum / double(all.size()));
-}
-
 DentalTrial register_from(const TriangleMesh& scan, const TriangleMesh& teeth, const Eigen::Isometry3d& start) {
   DentalTrial trial;
   const TriangleMesh displaced = transformed(scan, start);
   const Eigen::Isometry3d truth = start.inverse();
-  trial.start_mm = rms_between(displaced, Eigen::Isometry3d::Identity(), truth);
+  trial.start_mm = dental::pose_distance_mm(displaced, Eigen::Isometry3d::Identity(), truth);
   const auto clock = Clock::now();
   try {
     const dental::ArchRegistration r = dental::register_arch(displaced, teeth);
     trial.seconds = seconds_since(clock);
-    trial.error_mm = rms_between(displaced, r.fit.transform, truth);
+    trial.error_mm = dental::pose_distance_mm(displaced, r.fit.transform, truth);
     trial.on_teeth_share = r.fit.on_teeth_share;
     trial.rms_mm = r.fit.rms_mm;
     trial.p95_mm = r.fit.p95_mm;

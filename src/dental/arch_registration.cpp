@@ -58,17 +58,6 @@ std::vector<int> sampled_vertices(const TriangleMesh& mesh, int count) {
   return all;
 }
 
-// RMS distance between where two poses put the scan's sampled vertices.
-double pose_distance_mm(const TriangleMesh& scan, const std::vector<int>& samples, const Eigen::Isometry3d& a,
-                        const Eigen::Isometry3d& b) {
-  double sum = 0;
-  for (int v : samples) {
-    const Eigen::Vector3d p = scan.vertices.row(v).transpose();
-    sum += (a * p - b * p).squaredNorm();
-  }
-  return samples.empty() ? 0 : std::sqrt(sum / double(samples.size()));
-}
-
 // One stage's fit from `pose`; a fit that finds too few pairs keeps the pose it was given.
 Eigen::Isometry3d fit_stage(const TriangleMesh& scan, const validation::IcpTarget& ct_teeth, const FitStage& stage,
                             const Eigen::Isometry3d& pose, const ArchRegistrationOptions& options) {
@@ -115,8 +104,7 @@ void require_surface(const TriangleMesh& mesh, const char* what) {
 
 std::string percent(double share) { return std::to_string(int(std::lround(100 * share))) + " %"; }
 
-}  // namespace
-
+// The eight right-handed poses laying the scan's principal axes on the teeth's (step 1).
 std::vector<Eigen::Isometry3d> principal_axis_starts(const TriangleMesh& scan, const TriangleMesh& ct_teeth) {
   const PrincipalFrame from = principal_frame(scan), to = principal_frame(ct_teeth);
   std::vector<Eigen::Isometry3d> starts;
@@ -141,9 +129,17 @@ std::vector<Eigen::Isometry3d> principal_axis_starts(const TriangleMesh& scan, c
   return starts;
 }
 
-ArchFit score_fit(const TriangleMesh& scan, const TriangleMesh& ct_teeth, const Eigen::Isometry3d& transform,
-                  const ArchRegistrationOptions& options) {
-  return score_on(scan, AabbTree(ct_teeth), sampled_vertices(scan, options.max_samples), transform, options);
+}  // namespace
+
+double pose_distance_mm(const TriangleMesh& mesh, const Eigen::Isometry3d& a, const Eigen::Isometry3d& b,
+                        const std::vector<int>& vertices) {
+  const Eigen::Index count = vertices.empty() ? mesh.vertex_count() : Eigen::Index(vertices.size());
+  double sum = 0;
+  for (Eigen::Index k = 0; k < count; ++k) {
+    const Eigen::Vector3d p = mesh.vertices.row(vertices.empty() ? k : vertices[size_t(k)]).transpose();
+    sum += (a * p - b * p).squaredNorm();
+  }
+  return count == 0 ? 0 : std::sqrt(sum / double(count));
 }
 
 ArchRegistration register_arch(const TriangleMesh& scan, const TriangleMesh& ct_teeth,
@@ -178,7 +174,7 @@ ArchRegistration register_arch(const TriangleMesh& scan, const TriangleMesh& ct_
   result.fit = *best;
   double other = 0;
   for (const auto& candidate : result.candidates)
-    if (pose_distance_mm(scan, samples, candidate.transform, best->transform) > options.distinct_mm)
+    if (pose_distance_mm(scan, candidate.transform, best->transform, samples) > options.distinct_mm)
       other = std::max(other, candidate.on_teeth_share);
   result.confidence = best->on_teeth_share > 0 ? 1 - other / best->on_teeth_share : 0;
   if (best->on_teeth_share < options.min_fit_share)

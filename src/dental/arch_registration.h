@@ -50,11 +50,9 @@ ArchRegistration register_arch(const TriangleMesh& scan, const TriangleMesh& ct_
                                const std::vector<Eigen::Isometry3d>& extra_starts = {},
                                const ArchRegistrationOptions& options = {});
 
-// The eight right-handed poses laying the scan's principal axes on the teeth's (step 1 above).
-std::vector<Eigen::Isometry3d> principal_axis_starts(const TriangleMesh& scan, const TriangleMesh& ct_teeth);
-
-// How well `transform` lays the scan on the teeth (step 3's score).
-ArchFit score_fit(const TriangleMesh& scan, const TriangleMesh& ct_teeth, const Eigen::Isometry3d& transform,
-                  const ArchRegistrationOptions& options = {});
+// RMS over `vertices` of the mesh (all of them when empty) of the distance between where the
+// two poses put each: how far apart two registrations place a scan, or one lies from the truth.
+double pose_distance_mm(const TriangleMesh& mesh, const Eigen::Isometry3d& a, const Eigen::Isometry3d& b,
+                        const std::vector<int>& vertices = {});
 
 }  // namespace maxillo::dental

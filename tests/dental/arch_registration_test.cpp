@@ -48,17 +48,6 @@ const RealArches* real_arches() {
   return arches ? &*arches : nullptr;
 }
 
-// RMS over the scan's vertices of the distance between where the registration put them and where
-// they came from.
-double crown_error_mm(const TriangleMesh& scan_moved, const Eigen::Isometry3d& found, const Eigen::Isometry3d& truth) {
-  double sum = 0;
-  for (Eigen::Index v = 0; v < scan_moved.vertex_count(); ++v) {
-    const Eigen::Vector3d p = scan_moved.vertices.row(v).transpose();
-    sum += (found * p - truth * p).squaredNorm();
-  }
-  return std::sqrt(sum / double(scan_moved.vertex_count()));
-}
-
 TEST(ArchRegistration, AScanOfRealCrownsFindsItsTeethFromFarStarts) {
   const auto* arches = real_arches();
   if (!arches) GTEST_SKIP() << "the real teeth are not at " << teeth_folder();
@@ -70,7 +59,7 @@ TEST(ArchRegistration, AScanOfRealCrownsFindsItsTeethFromFarStarts) {
       const Eigen::Isometry3d pose = occlusion::random_displacement(random, centre, 20, 30);
       const TriangleMesh scan_moved = transformed(*scan, pose);
       const ArchRegistration r = register_arch(scan_moved, *teeth);
-      const double error = crown_error_mm(scan_moved, r.fit.transform, pose.inverse());
+      const double error = pose_distance_mm(scan_moved, r.fit.transform, pose.inverse());
       EXPECT_LT(error, 0.15) << name << " trial " << trial;  // issue 30's target
       // The crowns lie on the teeth (the collar, about a twentieth of the scan, does not), the
       // distances are the scan's noise, and no other pose comes close.
@@ -98,7 +87,7 @@ TEST(ArchRegistration, EachScanFindsItsArchInACtOfBothWithFillingStreaks) {
     const Eigen::Isometry3d pose = occlusion::random_displacement(random, centre, 20, 30);
     const TriangleMesh scan_moved = transformed(*scan, pose);
     const ArchRegistration r = register_arch(scan_moved, ct_teeth);
-    EXPECT_LT(crown_error_mm(scan_moved, r.fit.transform, pose.inverse()), 0.15) << name;
+    EXPECT_LT(pose_distance_mm(scan_moved, r.fit.transform, pose.inverse()), 0.15) << name;
     EXPECT_GT(r.fit.on_teeth_share, 0.8) << name;
   }
 }
