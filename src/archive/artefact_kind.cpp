@@ -5,7 +5,7 @@
 namespace maxillo {
 
 // kAllArtefactKinds lists every kind: the last enumerator closes the list.
-static_assert(std::size(kAllArtefactKinds) == size_t(ArtefactKind::kLandmarkRender) + 1);
+static_assert(std::size(kAllArtefactKinds) == size_t(ArtefactKind::kDentalRender) + 1);
 
 std::string kind_name(ArtefactKind kind) {
   switch (kind) {
@@ -33,6 +33,9 @@ std::string kind_name(ArtefactKind kind) {
     case ArtefactKind::kReport: return "report";
     case ArtefactKind::kOrientation: return "orientation";
     case ArtefactKind::kLandmarkRender: return "landmark-render";
+    case ArtefactKind::kDentalScan: return "dental-scan";
+    case ArtefactKind::kDentalRegistration: return "dental-registration";
+    case ArtefactKind::kDentalRender: return "dental-render";
   }
   return "unknown";
 }

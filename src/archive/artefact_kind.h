@@ -33,6 +33,9 @@ enum class ArtefactKind {
   kReport,               // the consultation report (PDF)
   kOrientation,          // the CT's header checked against the anatomy, or confirmed by hand (JSON)
   kLandmarkRender,       // the landmarks drawn on bone and skin, one picture per view (PNG)
+  kDentalScan,           // a dental arch scan as imported, in its scanner's frame (PLY)
+  kDentalRegistration,   // an arch scan placed onto the CT's teeth: its pose and fit (JSON)
+  kDentalRender,         // the augmented dentition and each arch's fit, pictured (PNG)
 };
 
 // Every kind, in the order above (for tables and tests).
@@ -48,7 +51,9 @@ inline constexpr ArtefactKind kAllArtefactKinds[] = {
     ArtefactKind::kSimulationImage,     ArtefactKind::kValidation,
     ArtefactKind::kValidationDistances, ArtefactKind::kValidationImage,
     ArtefactKind::kChartWits,           ArtefactKind::kReport,
-    ArtefactKind::kOrientation,         ArtefactKind::kLandmarkRender};
+    ArtefactKind::kOrientation,         ArtefactKind::kLandmarkRender,
+    ArtefactKind::kDentalScan,          ArtefactKind::kDentalRegistration,
+    ArtefactKind::kDentalRender};
 
 // The name the index stores: "landmarks", "plan-result", "render-skin-frontal", ...
 std::string kind_name(ArtefactKind kind);

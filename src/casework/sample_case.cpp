@@ -6,7 +6,9 @@
 
 #include "archive/dicom_uid.h"
 #include "ceph/landmark_io.h"
+#include "casework/phantom_dental_scans.h"
 #include "core/error.h"
+#include "core/parallel_slabs.h"
 #include "core/log.h"
 #include "core/progress.h"
 #include "sample/phantom_variation.h"
@@ -84,8 +86,11 @@ SampleCase write_sample_case(const SampleRequest& request, const fs::path& out_d
   fs::create_directories(out_dir, error);
   if (error) throw Error(ErrorCode::kWriteFailed, out_dir.string(), "cannot create the folder: " + error.message());
 
-  Progress progress("sample", 3);
-  const Phantom phantom = make_phantom(spec);
+  Progress progress("sample", 4);
+  // The dental scans need only the design: traced beside the volume's voxelisation.
+  Phantom phantom;
+  PhantomDentalScans dental;
+  run_concurrently({[&] { phantom = make_phantom(spec); }, [&] { dental = make_phantom_dental_scans(spec); }});
   progress.advance();
   const SeriesMetadata metadata = phantom_series_metadata(request);
   log::debug("sample: patient '", metadata.patient_name, "' id '", metadata.patient_id, "'");
@@ -98,6 +103,9 @@ SampleCase write_sample_case(const SampleRequest& request, const fs::path& out_d
   sample.csv_file = out_dir / "landmarks.csv";
   write_landmarks(sample.markups_file, phantom.landmarks);
   write_landmarks(sample.csv_file, phantom.landmarks);
+  progress.advance();
+  sample.dental_folder = out_dir / "dental";
+  write_phantom_dental_scans(dental, sample.dental_folder);
   progress.advance();
   progress.finish();
   sample.landmarks = phantom.landmarks;

@@ -10,9 +10,10 @@
 namespace maxillo::casework {
 
 struct SampleCase {
-  std::filesystem::path ct_folder;     // out/ct/slice0000.dcm ...
-  std::filesystem::path markups_file;  // out/landmarks.mrk.json (3D Slicer markups, LPS)
-  std::filesystem::path csv_file;      // out/landmarks.csv (label,x,y,z; LPS)
+  std::filesystem::path ct_folder;      // out/ct/slice0000.dcm ...
+  std::filesystem::path markups_file;   // out/landmarks.mrk.json (3D Slicer markups, LPS)
+  std::filesystem::path csv_file;       // out/landmarks.csv (label,x,y,z; LPS)
+  std::filesystem::path dental_folder;  // out/dental/{upper,lower}.stl, truth.json (phantom_dental_scans.h)
   WrittenSeries series;
   LandmarkSet landmarks;
   VolumeGeometry geometry;
@@ -44,7 +45,8 @@ std::string_view name_of(SkeletalClass skeletal_class);  // "I", "II", "III"
 
 // Generates the phantom and writes it under out_dir (created): ct/ replaced as a whole (never
 // a mix of two runs' slices), landmarks.mrk.json and landmarks.csv (a landmark outside a
-// cone-beam field is left out: the scan does not hold it). Deterministic: the same request
+// cone-beam field is left out: the scan does not hold it), and dental/ (the arches' intraoral
+// scans in scanners' frames, with the truth of their poses). Deterministic: the same request
 // gives byte-identical files, UIDs included.
 SampleCase write_sample_case(const SampleRequest& request, const std::filesystem::path& out_dir);
 // The designed head of this class and spacing.

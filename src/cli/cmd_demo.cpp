@@ -26,6 +26,12 @@ void attach_demo(CLI::App& app, CommandContext& ctx) {
       std::cout << "landmarks found automatically: " << summary["landmarks_detected"].get<int>()
                 << ", mean distance from the phantom's known landmarks "
                 << summary["landmark_mean_distance_mm"].get<double>() << " mm\n";
+      if (!summary["dental_scans"].empty()) {
+        std::cout << "dental scans placed into the CT without hands:";
+        for (const auto& [arch, fit] : summary["dental_scans"].items())
+          std::cout << " " << arch << " " << fit["distance_from_truth_mm"].get<double>() << " mm";
+        std::cout << " from where they were taken\n";
+      }
       std::cout << "demo report: " << summary["report"].get<std::string>() << " (" << summary["pages"].get<int>()
                 << " pages, " << summary["timing"]["total_seconds"].get<double>() << " s)\n";
     }

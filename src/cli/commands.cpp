@@ -19,6 +19,7 @@ void attach_report(CLI::App&, CommandContext&);
 void attach_demo(CLI::App&, CommandContext&);
 void attach_sample(CLI::App&, CommandContext&);
 void attach_occlude(CLI::App&, CommandContext&);
+void attach_dental(CLI::App&, CommandContext&);
 void attach_ceph(CLI::App&, CommandContext&);
 void attach_landmarks(CLI::App&, CommandContext&);
 void attach_followup(CLI::App&, CommandContext&);
@@ -89,6 +90,8 @@ std::span<const CommandSpec> command_table() {
                   attach_sample_postop},
       CommandSpec{"occlude", "Planning", "virtual occlusion: guided alignment of the dental arches, occlusionogram",
                   attach_occlude},
+      CommandSpec{"dental", "Planning", "a patient's dental scans: import, register onto the CT's teeth, show",
+                  attach_dental},
       CommandSpec{"demo", "General", "the whole pipeline on the synthetic phantom, ending in a PDF report",
                   attach_demo},
   };

@@ -21,6 +21,7 @@
 #include "records/plan_archive.h"
 #include "sections/planning_section.h"
 #include "ceph/landmark_frame.h"
+#include "sections/dental_section.h"
 #include "sections/occlusion_section.h"
 #include "sections/soft_tissue_section.h"
 #include "sections/validation_section.h"
@@ -211,6 +212,8 @@ ConsultationResult write_consultation_report(Archive& archive, int64_t case_id, 
                                      landmark_pictures, records::newest_reference_landmarks(archive, case_id)))
     model.sections.push_back(std::move(*landmarks_page));
   model.sections.push_back(sections::case_cephalometry_section(archive, case_id, sex_for_norms(contents.patient.sex)));
+  if (auto dental = sections::dental_section(records::case_dental_arches(archive, case_id)))
+    model.sections.push_back(std::move(*dental));
   if (auto plan_result = records::latest_plan_result(archive, case_id))
     model.sections.push_back(sections::planning_section(*plan_result));
   if (auto occlusion = records::latest_occlusion(archive, case_id))

@@ -5,7 +5,9 @@
 
 #include "archive/archive_location.h"
 #include "casework/automatic_landmarks.h"
+#include "casework/case_dental_scans.h"
 #include "casework/case_simulation.h"
+#include "casework/phantom_dental_scans.h"
 #include "casework/case_surfaces.h"
 #include "casework/plan_case.h"
 #include "casework/planned_case.h"
@@ -18,6 +20,7 @@
 #include "core/parallel_slabs.h"
 #include "core/temporary_folder.h"
 #include "demo/phantom_occlusion.h"
+#include "dental/arch_registration.h"
 #include "demo/stage_clock.h"
 #include "followup/ceph_sample_cohort.h"
 #include "followup/cohort_report.h"
@@ -138,6 +141,14 @@ Json run_demo(const DemoOptions& options) {
                                                  "TS-MD distraction: 10 mm advancement, 6 mm widening"));
   auto plan = plan_beside_surfaces(archive, case_id, options.out / "plan");
   clock.mark("plan, the CT's skin and bone beside it");
+  // The patient's dental scans (issue 30): the sample's intraoral scans, each in a scanner's frame
+  // of its own, imported and placed onto the CT's teeth without hands; the sample knows where
+  // they were taken, which the summary measures the placement against.
+  casework::import_dental_scans(archive, case_id,
+                                {{records::DentalArch::kUpper, sample.dental_folder / "upper.stl"},
+                                 {records::DentalArch::kLower, sample.dental_folder / "lower.stl"}});
+  const auto dental = casework::register_case_dental_scans(archive, case_id, &plan.tissues);
+  clock.mark("dental scans placed into the CT");
   // The face for the planned move (issue #3): the plan's maxillary move, mass tensor model. The
   // face's tet model is built once here and serves the synthetic post-operative CT and the
   // validation too.
@@ -182,7 +193,19 @@ Json run_demo(const DemoOptions& options) {
       detection_sum += (l.position - *known).norm();
       ++detected_count;
     }
+  Json dental_summary = Json::object();
+  const auto dental_truth = casework::read_phantom_dental_truth(sample.dental_folder);
+  for (const auto& arch : dental.arches) {
+    const auto& truth = arch.scan.arch == records::DentalArch::kUpper ? dental_truth.upper : dental_truth.lower;
+    dental_summary[std::string(name_of(arch.scan.arch))] = {
+        {"on_teeth_share", arch.record.on_teeth_share},
+        {"rms_mm", arch.record.rms_mm},
+        {"confidence", arch.record.confidence},
+        {"distance_from_truth_mm", dental::pose_distance_mm(arch.placed, Eigen::Isometry3d::Identity(),
+                                                            truth.scan_to_ct * arch.record.scan_to_ct.inverse())}};
+  }
   Json summary{{"report", report.pdf.string()},
+               {"dental_scans", dental_summary},
                {"landmarks_detected", detected_count},
                {"landmark_mean_distance_mm", detected_count ? detection_sum / detected_count : 0.0},
                {"pages", report.pages},

@@ -4,6 +4,7 @@
 
 #include "ceph/landmark_frame.h"
 #include "core/error.h"
+#include "imaging/label_crop.h"
 #include "mesh/surface_extraction.h"
 #include "occlusion/arch_contacts.h"
 #include "occlusion/occlusion_benchmark.h"
@@ -12,35 +13,6 @@
 
 namespace maxillo::demo {
 namespace {
-
-// The labels' sub-volume around the voxels of `first` and `second`, with a margin of 2 voxels
-// (extracting from the whole head would cost seconds for a few thousand voxels of teeth).
-LabelVolume crop_to_labels(const LabelVolume& labels, uint8_t first, uint8_t second) {
-  const VolumeGeometry& g = labels.geometry;
-  Eigen::Vector3i lo = g.size, hi = Eigen::Vector3i::Constant(-1);
-  for (int k = 0; k < g.size.z(); ++k)
-    for (int j = 0; j < g.size.y(); ++j)
-      for (int i = 0; i < g.size.x(); ++i) {
-        const uint8_t l = labels.labels[size_t(g.index(i, j, k))];
-        if (l != first && l != second) continue;
-        lo = lo.cwiseMin(Eigen::Vector3i(i, j, k));
-        hi = hi.cwiseMax(Eigen::Vector3i(i, j, k));
-      }
-  if (hi.x() < 0) throw Error(ErrorCode::kProcessing, "phantom", "the phantom has no teeth");
-  lo = (lo - Eigen::Vector3i::Constant(2)).cwiseMax(Eigen::Vector3i::Zero());
-  hi = (hi + Eigen::Vector3i::Constant(2)).cwiseMin(g.size - Eigen::Vector3i::Ones());
-  LabelVolume crop;
-  crop.geometry = g;
-  crop.geometry.size = hi - lo + Eigen::Vector3i::Ones();
-  crop.geometry.origin = g.world(lo.cast<double>());
-  crop.labels.resize(size_t(crop.geometry.voxel_count()));
-  for (int k = 0; k < crop.geometry.size.z(); ++k)
-    for (int j = 0; j < crop.geometry.size.y(); ++j)
-      for (int i = 0; i < crop.geometry.size.x(); ++i)
-        crop.labels[size_t(crop.geometry.index(i, j, k))] =
-            labels.labels[size_t(g.index(lo.x() + i, lo.y() + j, lo.z() + k))];
-  return crop;
-}
 
 // The demo's occlusion settings: the phantom's arches by name, and the splint's clearance.
 casework::OcclusionRunOptions phantom_occlusion_options() {
@@ -57,7 +29,7 @@ casework::OcclusionRunOptions phantom_occlusion_options() {
 
 PhantomArches phantom_arches(const Phantom& phantom) {
   const auto upper = uint8_t(Tissue::kUpperTooth), lower = uint8_t(Tissue::kLowerTooth);
-  const LabelVolume teeth = crop_to_labels(phantom.labels, upper, lower);
+  const LabelVolume teeth = crop_to_labels(phantom.labels, {upper, lower}, 2, "the phantom's teeth");
   SurfaceOptions options;
   options.keep_largest_components = 0;  // every tooth
   return {extract_surface(teeth, upper, options), extract_surface(teeth, lower, options)};

@@ -104,6 +104,10 @@ void require_surface(const TriangleMesh& mesh, const char* what) {
 
 std::string percent(double share) { return std::to_string(int(std::lround(100 * share))) + " %"; }
 
+// The four rotations that keep a frame right-handed while flipping its axes' signs: none, or
+// two at a time (a turn of the frame by 180 degrees).
+constexpr std::array<std::array<double, 3>, 4> kRightHandedFlips{{{1, 1, 1}, {-1, -1, 1}, {-1, 1, -1}, {1, -1, -1}}};
+
 // The eight right-handed poses laying the scan's principal axes on the teeth's (step 1).
 std::vector<Eigen::Isometry3d> principal_axis_starts(const TriangleMesh& scan, const TriangleMesh& ct_teeth) {
   const PrincipalFrame from = principal_frame(scan), to = principal_frame(ct_teeth);
@@ -114,14 +118,9 @@ std::vector<Eigen::Isometry3d> principal_axis_starts(const TriangleMesh& scan, c
       target.col(0).swap(target.col(1));
       target.col(2) *= -1;  // still right-handed
     }
-    for (int signs = 0; signs < 4; ++signs) {
-      // Flip two axes at a time (or none): a rotation of the frame by 180 degrees.
-      Eigen::Vector3d flip(1, 1, 1);
-      if (signs == 1) flip << -1, -1, 1;
-      if (signs == 2) flip << -1, 1, -1;
-      if (signs == 3) flip << 1, -1, -1;
+    for (const auto& flip : kRightHandedFlips) {
       Eigen::Isometry3d start = Eigen::Isometry3d::Identity();
-      start.linear() = target * flip.asDiagonal() * from.axes.transpose();
+      start.linear() = target * Eigen::Vector3d(flip[0], flip[1], flip[2]).asDiagonal() * from.axes.transpose();
       start.translation() = to.centroid - start.linear() * from.centroid;
       starts.push_back(start);
     }
@@ -130,6 +129,32 @@ std::vector<Eigen::Isometry3d> principal_axis_starts(const TriangleMesh& scan, c
 }
 
 }  // namespace
+
+std::vector<Eigen::Isometry3d> landmark_starts(const TriangleMesh& scan, const ArchLandmarks& landmarks) {
+  require_surface(scan, "dental scan");
+  const Eigen::Vector3d across = landmarks.left_molar - landmarks.right_molar;
+  const Eigen::Vector3d molars = 0.5 * (landmarks.left_molar + landmarks.right_molar);
+  Eigen::Vector3d forward = landmarks.incisor - molars;
+  forward -= forward.dot(across.normalized()) * across.normalized();
+  if (across.norm() < 20 || forward.norm() < 10)
+    throw Error(ErrorCode::kBadValue, "dental landmarks",
+                "the incisor and first molars span no arch (molars " + std::to_string(int(across.norm())) +
+                    " mm apart, incisor " + std::to_string(int(forward.norm())) + " mm in front of them)");
+  Eigen::Matrix3d arch;
+  arch.col(0) = across.normalized();
+  arch.col(1) = forward.normalized();
+  arch.col(2) = arch.col(0).cross(arch.col(1));
+  const PrincipalFrame from = principal_frame(scan);
+  const Eigen::Vector3d centre = landmarks.incisor + 0.5 * (molars - landmarks.incisor);
+  std::vector<Eigen::Isometry3d> starts;
+  for (const auto& flip : kRightHandedFlips) {
+    Eigen::Isometry3d start = Eigen::Isometry3d::Identity();
+    start.linear() = arch * Eigen::Vector3d(flip[0], flip[1], flip[2]).asDiagonal() * from.axes.transpose();
+    start.translation() = centre - start.linear() * from.centroid;
+    starts.push_back(start);
+  }
+  return starts;
+}
 
 double pose_distance_mm(const TriangleMesh& mesh, const Eigen::Isometry3d& a, const Eigen::Isometry3d& b,
                         const std::vector<int>& vertices) {
@@ -148,7 +173,9 @@ ArchRegistration register_arch(const TriangleMesh& scan, const TriangleMesh& ct_
   require_surface(scan, "dental scan");
   require_surface(ct_teeth, "the CT's teeth");
   std::vector<Eigen::Isometry3d> starts = extra_starts;
-  for (const auto& start : principal_axis_starts(scan, ct_teeth)) starts.push_back(start);
+  if (options.principal_axis_starts)
+    for (const auto& start : principal_axis_starts(scan, ct_teeth)) starts.push_back(start);
+  if (starts.empty()) throw Error(ErrorCode::kUsage, "dental scan", "no start to register it from");
   const validation::IcpTarget icp_target(ct_teeth);
   const AabbTree tree(ct_teeth);
   const std::vector<int> samples = sampled_vertices(scan, options.max_samples);

@@ -23,11 +23,12 @@
 namespace maxillo::dental {
 
 struct ArchRegistrationOptions {
-  double on_teeth_mm = 0.5;      // a scan point this close to the CT's teeth is on them
-  double min_fit_share = 0.4;    // of the scan on the teeth, below which the fit is poor
-  double min_confidence = 0.05;  // below which another pose fits about as well
-  double distinct_mm = 1.0;      // fits placing the scan farther apart (RMS) are different poses
-  int max_samples = 4000;        // scan vertices used by the fits (a deterministic subset)
+  double on_teeth_mm = 0.5;           // a scan point this close to the CT's teeth is on them
+  double min_fit_share = 0.4;         // of the scan on the teeth, below which the fit is poor
+  double min_confidence = 0.05;       // below which another pose fits about as well
+  double distinct_mm = 1.0;           // fits placing the scan farther apart (RMS) are different poses
+  int max_samples = 4000;             // scan vertices used by the fits (a deterministic subset)
+  bool principal_axis_starts = true;  // step 1's eight starts (off: only the starts given)
 };
 
 // How well a pose lays the scan on the CT's teeth, over the scan's sampled vertices.
@@ -49,6 +50,21 @@ struct ArchRegistration {
 ArchRegistration register_arch(const TriangleMesh& scan, const TriangleMesh& ct_teeth,
                                const std::vector<Eigen::Isometry3d>& extra_starts = {},
                                const ArchRegistrationOptions& options = {});
+
+// An arch's dental landmarks in the CT (LPS mm): the incisor's incisal edge (U1 or L1) and the
+// first molars' mesiobuccal cusp tips (U6R, U6L or L6R, L6L).
+struct ArchLandmarks {
+  Eigen::Vector3d incisor, right_molar, left_molar;
+};
+
+// Starts from the landmarks (issue 30: "from the dental landmarks where there are some"): the
+// scan's principal axes (widest: side to side; next: front to back; least: crowns' height) laid
+// on the arch frame the landmarks define, in the four right-handed ways the axes' signs allow,
+// the scan's centroid put halfway between the incisor and the molars. Unlike the CT teeth's own
+// principal axes, the landmarks' frame does not tilt with the roots, the streaks or a missing
+// tooth. Error(kBadValue) for landmarks that span no arch (molars < 20 mm apart, incisor not in
+// front of them).
+std::vector<Eigen::Isometry3d> landmark_starts(const TriangleMesh& scan, const ArchLandmarks& landmarks);
 
 // RMS over `vertices` of the mesh (all of them when empty) of the distance between where the
 // two poses put each: how far apart two registrations place a scan, or one lies from the truth.

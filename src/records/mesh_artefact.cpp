@@ -6,13 +6,17 @@
 
 namespace maxillo::records {
 
-void store_mesh_artefact(Archive& archive, int64_t case_id, const std::string& kind, const std::string& key,
-                         const Json& parameters, const TriangleMesh& mesh) {
+std::string store_mesh_object(Archive& archive, const TriangleMesh& mesh) {
   TemporaryFolder scratch("maxillo-mesh");
   auto file = scratch / "mesh.ply";
   write_mesh(mesh, file);
-  auto sha = archive.store_object(read_file(file));
-  archive.add_artefact(NewArtefact{case_id, kind, sha, "application/ply", key, parameters.dump()});
+  return archive.store_object(read_file(file));
+}
+
+void store_mesh_artefact(Archive& archive, int64_t case_id, const std::string& kind, const std::string& key,
+                         const Json& parameters, const TriangleMesh& mesh) {
+  archive.add_artefact(
+      NewArtefact{case_id, kind, store_mesh_object(archive, mesh), "application/ply", key, parameters.dump()});
 }
 
 TriangleMesh load_mesh_artefact(const Archive& archive, const ArtefactRecord& artefact) {

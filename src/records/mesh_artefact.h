@@ -10,6 +10,9 @@
 
 namespace maxillo::records {
 
+// Stores `mesh` as a PLY object (content-addressed: the same mesh is the same object); its SHA-256.
+std::string store_mesh_object(Archive& archive, const TriangleMesh& mesh);
+
 // Stores `mesh` as a PLY object and records it as an artefact of the case.
 void store_mesh_artefact(Archive& archive, int64_t case_id, const std::string& kind, const std::string& key,
                          const Json& parameters, const TriangleMesh& mesh);

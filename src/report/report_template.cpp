@@ -13,9 +13,9 @@
 namespace maxillo::report {
 namespace {
 
-constexpr std::array<std::string_view, 11> kSectionIds = {"patient",    "summary",     "views",     "contents",
+constexpr std::array<std::string_view, 12> kSectionIds = {"patient",    "summary",     "views",     "contents",
                                                           "planning",   "soft_tissue", "occlusion", "cephalometry",
-                                                          "validation", "notes",       "landmarks"};
+                                                          "validation", "notes",       "landmarks", "dental"};
 
 class Reader {
  public:

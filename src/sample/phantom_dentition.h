@@ -57,10 +57,11 @@ class Dentition {
   Vector3d mesiobuccal_cusp_tip(Jaw jaw, Side side) const;  // first molar (U6, L6)
   // The reference-anatomy point that the jaw's displacement carries to p.
   Vector3d reference_of(Jaw jaw, const Vector3d& p) const;
+  // Where the jaw's displacement carries a reference-anatomy point (the inverse of reference_of).
+  Vector3d displaced(Jaw jaw, const Vector3d& reference) const;
 
  private:
   bool inside_reference(const Tooth& tooth, ToothPart part, const Vector3d& p) const;
-  Vector3d displaced(Jaw jaw, const Vector3d& reference) const;
 
   PhantomDesign design_;
   std::vector<Tooth> teeth_;

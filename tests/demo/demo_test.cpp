@@ -89,8 +89,8 @@ TEST_F(DemoTest, ReportHasRealRenderedViews) {
   ASSERT_TRUE(std::filesystem::exists(report()));
   EXPECT_GE(testing::pdf_page_count(report()), 1);
   auto views = testing::pdf_images(report(), folder_->path() / "images");
-  EXPECT_EQ(views.size(), 30u) << "frontal, lateral and oblique views of skin and of bone, the landmarks drawn in "
-                                  "three views, the occlusionogram, the "
+  EXPECT_EQ(views.size(), 32u) << "frontal, lateral and oblique views of skin and of bone, the landmarks drawn in "
+                                  "three views, each dental scan's fit (2), the occlusionogram, the "
                                   "splint, the Wits chart, three views of the planned skeleton, the face before, "
                                   "predicted and its displacement map (3 views each), the uncertainty band (2), the "
                                   "validation's error maps (3) and profiles expected";
@@ -131,6 +131,25 @@ TEST_F(DemoTest, ReportHasTheOcclusionSectionAndItsArtefacts) {
       run_command(std::string(MAXILLO_BINARY) + " --json --archive " + quote(archive) + " show case:1 2>/dev/null");
   for (const char* kind : {"\"occlusion\"", "\"occlusionogram\"", "\"splint\""})
     EXPECT_NE(show.output.find(kind), std::string::npos) << kind << " missing in " << show.output;
+}
+
+// Issue 30: the sample's intraoral scans, each in a scanner's frame of its own, placed onto the
+// CT's teeth without hands, in the report with each arch's fit pictured.
+TEST_F(DemoTest, ReportHasTheDentalScansPlacedIntoTheCt) {
+  ASSERT_EQ(demo_.exit_code, 0) << demo_.output;
+  EXPECT_NE(demo_.output.find("dental scans placed into the CT without hands"), std::string::npos) << demo_.output;
+  auto text = testing::pdf_text(report());
+  for (const char* expected : {"Dental scans", "upper.stl (v1)", "lower.stl (v1)", "P95 mm", "confidence", "landmarks",
+                               "The upper arch's scan", "The lower arch's scan"})
+    EXPECT_NE(text.find(expected), std::string::npos) << "missing text: " << expected;
+  auto show = run_command(std::string(MAXILLO_BINARY) + " --json --archive " +
+                          quote(folder_->path() / "out" / "archive") + " dental show case:1 2>/dev/null");
+  ASSERT_EQ(show.exit_code, 0) << show.output;
+  const Json shown = Json::parse(show.output);
+  for (const char* arch : {"upper", "lower"}) {
+    ASSERT_TRUE(shown.at(arch).contains("registration")) << arch;
+    EXPECT_GT(shown.at(arch).at("registration").at("on_teeth_share").get<double>(), 0.6) << arch;
+  }
 }
 
 // Issue 4: the must-show plan (10 mm advancement, 6 mm widening by two trans-sinusal
@@ -260,6 +279,10 @@ TEST_F(DemoTest, SecondRunIsIdempotent) {
   EXPECT_EQ(summary.at("received_over_dicom"), 0);
   EXPECT_GT(summary.at("already_archived").get<int>(), 100);
   EXPECT_EQ(summary.at("surfaces_reused"), true);
+  // The dental scans' fits are the stored ones, and lie where the scans were taken: within a
+  // third of the phantom's 1 mm voxel (tests/casework/case_dental_scans_test.cpp says why).
+  for (const char* arch : {"upper", "lower"})
+    EXPECT_LT(summary.at("dental_scans").at(arch).at("distance_from_truth_mm").get<double>(), 0.35) << arch;
   auto series = run_command(std::string(MAXILLO_BINARY) + " --json --archive " +
                             quote(folder_->path() / "out" / "archive") + " list series 2>/dev/null");
   int ct_series = 0;

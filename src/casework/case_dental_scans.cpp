@@ -1,0 +1,315 @@
+#include "casework/case_dental_scans.h"
+
+#include <algorithm>
+#include <chrono>
+#include <span>
+
+#include "ceph/landmark_frame.h"
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "core/log.h"
+#include "core/temporary_folder.h"
+#include "dental/arch_registration.h"
+#include "geometry/aabb_tree.h"
+#include "geometry/mesh_measures.h"
+#include "geometry/mesh_transform.h"
+#include "imaging/hounsfield_reading.h"
+#include "imaging/label_crop.h"
+#include "imaging/segmentation.h"
+#include "mesh/mesh_io.h"
+#include "mesh/surface_extraction.h"
+#include "records/archived_series.h"
+#include "records/case_landmarks.h"
+#include "records/derivation.h"
+#include "records/stored_artefact.h"
+#include "report/number_text.h"
+#include "render/anatomical_views.h"
+#include "render/render_views.h"
+#include "sample/phantom.h"
+
+namespace maxillo::casework {
+namespace {
+
+using records::DentalArch;
+
+constexpr double kSmallestArchMm = 20, kLargestArchMm = 150;
+constexpr double kFitMapRangeMm = 1.0;  // the pictures' colour scale: 0 (on the CT's teeth) to this
+
+int64_t degenerate_triangles(const TriangleMesh& mesh) {
+  int64_t count = 0;
+  for (Eigen::Index f = 0; f < mesh.face_count(); ++f) {
+    const Eigen::Vector3d a = mesh.vertices.row(mesh.faces(f, 0)).transpose();
+    const Eigen::Vector3d b = mesh.vertices.row(mesh.faces(f, 1)).transpose();
+    const Eigen::Vector3d c = mesh.vertices.row(mesh.faces(f, 2)).transpose();
+    count += (b - a).cross(c - a).norm() < 1e-12;
+  }
+  return count;
+}
+
+// The arch's landmarks in the CT, when the set has the incisor and both first molars.
+std::optional<dental::ArchLandmarks> arch_landmarks(const LandmarkSet& landmarks, DentalArch arch) {
+  const bool upper = arch == DentalArch::kUpper;
+  const auto incisor = find_landmark(landmarks, upper ? "U1" : "L1");
+  const auto right = find_landmark(landmarks, upper ? "U6R" : "L6R");
+  const auto left = find_landmark(landmarks, upper ? "U6L" : "L6L");
+  if (!incisor || !right || !left) return std::nullopt;
+  return dental::ArchLandmarks{*incisor, *right, *left};
+}
+
+// The pose search for one arch: the landmarks' starts when there are any, the global search always.
+struct PoseSearch {
+  dental::ArchRegistration registration;
+  std::string start;
+};
+
+PoseSearch search_pose(const TriangleMesh& scan, const TriangleMesh& teeth, const LandmarkSet& landmarks,
+                       DentalArch arch) {
+  std::vector<Eigen::Isometry3d> starts;
+  std::string start = "principal axes";
+  if (const auto points = arch_landmarks(landmarks, arch)) try {
+      starts = dental::landmark_starts(scan, *points);
+      start = "dental landmarks and principal axes";
+    } catch (const Error& e) {
+      log::warning("dental landmarks of the ", name_of(arch), " arch not used: ", e.reason());
+    }
+  return {dental::register_arch(scan, teeth, starts), start};
+}
+
+// How much of the scan lies on the other jaw's teeth when registered onto them; nullopt when it
+// does not fit there either.
+std::optional<double> share_on_other_jaw(const TriangleMesh& scan, const CtTeeth& teeth, const LandmarkSet& landmarks,
+                                         DentalArch other) {
+  try {
+    return search_pose(scan, teeth.of(other), landmarks, other).registration.fit.on_teeth_share;
+  } catch (const Error& e) {
+    if (e.code() != ErrorCode::kProcessing) throw;
+    return std::nullopt;
+  }
+}
+
+std::string swapped_reason(DentalArch arch, DentalArch other, const std::string& own_share, double other_share) {
+  return "it fits the CT's " + std::string(name_of(other)) + " teeth (" + report::fixed(100 * other_share, 0) +
+         " % of it on them) better than its " + std::string(name_of(arch)) + " teeth (" + own_share +
+         "): were the upper and lower scans swapped? Import them again with --upper and --lower the other way round";
+}
+
+// The registration of one arch, or an error naming it: its file, what went wrong, and whether the
+// scan fits the other jaw's teeth better (the two scans swapped). Both jaws are always tried: an
+// arch turned over may lie on the other jaw's teeth well enough to pass for a fit.
+PoseSearch register_or_explain(const records::StoredDentalScan& stored, const TriangleMesh& scan, const CtTeeth& teeth,
+                               const LandmarkSet& landmarks) {
+  const DentalArch other = stored.arch == DentalArch::kUpper ? DentalArch::kLower : DentalArch::kUpper;
+  const std::string subject = std::string(name_of(stored.arch)) + " arch scan " + stored.source;
+  const std::optional<double> other_share = share_on_other_jaw(scan, teeth, landmarks, other);
+  try {
+    PoseSearch own = search_pose(scan, teeth.of(stored.arch), landmarks, stored.arch);
+    if (other_share && *other_share > own.registration.fit.on_teeth_share)
+      throw Error(ErrorCode::kProcessing, subject,
+                  swapped_reason(stored.arch, other, report::fixed(100 * own.registration.fit.on_teeth_share, 0) + " %",
+                                 *other_share));
+    return own;
+  } catch (const Error& e) {
+    if (e.code() != ErrorCode::kProcessing || e.subject() == subject) throw;
+    if (other_share)
+      throw Error(ErrorCode::kProcessing, subject, swapped_reason(stored.arch, other, "no fit", *other_share));
+    throw Error(ErrorCode::kProcessing, subject, e.reason());
+  }
+}
+
+// Each scan point's distance to the CT's teeth (capped at twice the colour scale).
+std::vector<double> distances_to(const TriangleMesh& placed, const TriangleMesh& teeth) {
+  const AabbTree tree(teeth);
+  std::vector<double> distances(size_t(placed.vertex_count()), 2 * kFitMapRangeMm);
+  for (Eigen::Index v = 0; v < placed.vertex_count(); ++v) {
+    const auto nearest = tree.nearest(placed.vertices.row(v).transpose(), 2 * kFitMapRangeMm);
+    if (nearest.face >= 0) distances[size_t(v)] = nearest.distance;
+  }
+  return distances;
+}
+
+// The placed scan from the occlusal side (the upper arch seen from below, the lower from above),
+// the front of the arch up, coloured by each point's distance to the CT's teeth.
+void render_fit(const TriangleMesh& placed, const TriangleMesh& teeth, DentalArch arch, const AnatomicalFrame& frame,
+                const std::filesystem::path& png) {
+  render::Scene scene;
+  render::VertexScalars scalars{distances_to(placed, teeth), 0, kFitMapRangeMm, render::ColourMap::Sequential,
+                                "distance to the CT's teeth (mm)"};
+  scene.meshes.push_back({&placed, render::kTeethWhite, 1.0, scalars});
+  // The frontal view of a frame turned so that its "front" is the occlusal side and its "up" the
+  // patient's front (right-handed: anterior x left = superior).
+  AnatomicalFrame occlusal = frame;
+  const double side = arch == DentalArch::kUpper ? -1 : 1;
+  occlusal.anterior = side * frame.superior;
+  occlusal.superior = frame.anterior;
+  occlusal.left = side * frame.left * -1;
+  const render::Camera camera =
+      render::standard_camera(render::StandardView::Frontal, occlusal, render::scene_bounds(scene), 1.0);
+  render::RenderSettings settings;
+  settings.size = {700, 700};
+  render::write_png(render::render_scene(scene, std::span(&camera, 1), settings).front(), png);
+}
+
+records::DentalRegistrationRecord to_record(const records::StoredDentalScan& scan, int64_t series,
+                                            const PoseSearch& search, double seconds) {
+  const dental::ArchFit& fit = search.registration.fit;
+  records::DentalRegistrationRecord record;
+  record.arch = scan.arch;
+  record.scan_artefact_id = scan.artefact_id;
+  record.series_id = series;
+  record.scan_to_ct = fit.transform;
+  record.on_teeth_share = fit.on_teeth_share;
+  record.rms_mm = fit.rms_mm;
+  record.p95_mm = fit.p95_mm;
+  record.within_0_3_share = fit.within_0_3_share;
+  record.confidence = search.registration.confidence;
+  record.start = search.start;
+  record.seconds = seconds;
+  return record;
+}
+
+// What a registration depends on: the scan, the CT and the landmarks its starts came from.
+std::string registration_key(const records::StoredDentalScan& scan, const std::string& ct_hash,
+                             const LandmarkSet& landmarks) {
+  Json starts = Json::array();
+  if (const auto points = arch_landmarks(landmarks, scan.arch))
+    for (const Eigen::Vector3d& p : {points->incisor, points->right_molar, points->left_molar})
+      starts.push_back({p.x(), p.y(), p.z()});
+  return records::derivation_key({scan.object_sha256, ct_hash},
+                                 {{"arch", name_of(scan.arch)}, {"landmark_starts", starts}});
+}
+
+}  // namespace
+
+std::vector<std::string> check_arch_scan(const TriangleMesh& scan, const std::string& subject) {
+  if (scan.face_count() == 0 || scan.vertex_count() < 3)
+    throw Error(ErrorCode::kBadValue, subject, "it holds no triangles: not a dental scan");
+  const Eigen::Vector3d extent = scan.vertices.colwise().maxCoeff() - scan.vertices.colwise().minCoeff();
+  const double across = extent.maxCoeff();
+  if (across < kSmallestArchMm)
+    throw Error(ErrorCode::kBadValue, subject,
+                "it spans only " + report::fixed(across, 1) +
+                    " units across, and a dental arch spans 35-80 mm: is it in centimetres? maxillo reads dental "
+                    "scans in millimetres");
+  if (across > kLargestArchMm)
+    throw Error(ErrorCode::kBadValue, subject,
+                "it spans " + report::fixed(across, 0) +
+                    " units across, and a dental arch spans 35-80 mm: is it in micrometres, or not a dental scan? "
+                    "maxillo reads dental scans in millimetres");
+  std::vector<std::string> warnings;
+  const EdgeCounts edges = count_edges(scan);
+  if (edges.non_manifold > 0)
+    warnings.push_back(std::to_string(edges.non_manifold) + " non-manifold edges (shared by three or more triangles)");
+  if (edges.inconsistent > 0)
+    warnings.push_back(std::to_string(edges.inconsistent) + " edges between triangles facing opposite ways");
+  if (const int64_t degenerate = degenerate_triangles(scan); degenerate > 0)
+    warnings.push_back(std::to_string(degenerate) + " triangles without area");
+  return warnings;
+}
+
+std::vector<records::StoredDentalScan> import_dental_scans(Archive& archive, int64_t case_id,
+                                                           const std::vector<DentalScanFile>& files) {
+  struct Checked {
+    DentalArch arch;
+    TriangleMesh scan;
+    std::string source;
+    std::vector<std::string> warnings;
+  };
+  std::vector<Checked> checked;
+  for (const DentalScanFile& file : files) {
+    TriangleMesh scan = read_mesh(file.file);
+    auto warnings = check_arch_scan(scan, file.file.string());
+    checked.push_back({file.arch, std::move(scan), file.file.filename().string(), std::move(warnings)});
+  }
+  std::vector<records::StoredDentalScan> stored;
+  for (const Checked& c : checked)
+    stored.push_back(records::store_dental_scan(archive, case_id, c.arch, c.scan, c.source, c.warnings));
+  return stored;
+}
+
+CtTeeth ct_teeth_surfaces(const Volume& scan, const CaseTissues& tissues) {
+  const auto upper = uint8_t(Tissue::kUpperTooth), lower = uint8_t(Tissue::kLowerTooth);
+  const VoxelBox box = box_of_labels(tissues.jaws, {upper, lower}, 2, "the CT's teeth");
+  const std::optional<Volume> converted = in_hounsfield_units(scan);  // a cone-beam scan's grey values as HU
+  const Volume ct = cropped(converted ? *converted : scan, box);
+  const LabelVolume jaws = cropped(tissues.jaws, box);
+  SurfaceOptions options;
+  options.keep_largest_components = 0;  // every tooth
+  options.grid = SurfaceGrid::Native;   // the CT's own voxels: a tooth is a few of them across
+  const double teeth_hu = SegmentationOptions{}.teeth_hu;
+  return {extract_region_surface(ct, jaws, {upper, upper}, teeth_hu, options),
+          extract_region_surface(ct, jaws, {lower, lower}, teeth_hu, options)};
+}
+
+CaseDentalRegistration register_case_dental_scans(Archive& archive, int64_t case_id, const CaseTissues* tissues) {
+  std::vector<records::StoredDentalScan> scans;
+  for (DentalArch arch : records::kBothArches)
+    if (auto scan = records::latest_dental_scan(archive, case_id, arch)) scans.push_back(*scan);
+  if (scans.empty())
+    throw Error(ErrorCode::kNotFound, "case " + std::to_string(case_id),
+                "it has no dental scans: import them first with `maxillo dental import`");
+  const LandmarkSet landmarks = records::latest_landmarks(archive, case_id);
+  if (landmarks.empty())
+    throw Error(ErrorCode::kNotFound, "case " + std::to_string(case_id),
+                "it has no landmarks to tell the CT's upper teeth from the lower: find them first with `maxillo "
+                "landmarks detect` (--store)");
+  const int64_t series = records::primary_series(archive.case_contents(case_id));
+  const std::string ct_hash = records::series_content_hash(archive, series);
+  const auto artefacts = archive.artefacts(case_id);
+
+  // The fits stored already under the same inputs; the CT is read and traced only for the others.
+  CaseDentalRegistration result;
+  std::vector<const records::StoredDentalScan*> to_register;
+  for (const records::StoredDentalScan& stored : scans) {
+    const std::string key = registration_key(stored, ct_hash, landmarks);
+    const ArtefactRecord* done = records::newest_with_key(artefacts, ArtefactKind::kDentalRegistration, key);
+    if (!done) {
+      to_register.push_back(&stored);
+      continue;
+    }
+    ArchRegistrationOutcome outcome{
+        stored,
+        records::read_dental_registration(records::artefact_json(archive, *done), records::artefact_source(*done)),
+        {},
+        true};
+    if (outcome.record.scan_artefact_id != stored.artefact_id) {
+      // The same mesh imported again as a newer version after another one: the fit holds for it.
+      outcome.record.scan_artefact_id = stored.artefact_id;
+      records::store_dental_registration(archive, case_id, outcome.record, key);
+    }
+    outcome.placed = transformed(records::load_dental_scan(archive, stored), outcome.record.scan_to_ct);
+    result.arches.push_back(std::move(outcome));
+  }
+  if (to_register.empty()) return result;
+
+  const Volume ct = records::load_archived_series(archive, series);
+  const CtTeeth teeth = ct_teeth_surfaces(ct, tissues ? *tissues : segment_case_tissues(ct, landmarks));
+  const AnatomicalFrame frame = anatomical_frame(landmarks);
+  std::vector<Error> failures;
+  for (const records::StoredDentalScan* stored : to_register) {
+    const TriangleMesh scan = records::load_dental_scan(archive, *stored);
+    const auto clock = std::chrono::steady_clock::now();
+    ArchRegistrationOutcome outcome{*stored, {}, {}, false};
+    try {
+      const PoseSearch search = register_or_explain(*stored, scan, teeth, landmarks);
+      outcome.record = to_record(*stored, series, search,
+                                 std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count());
+    } catch (const Error& e) {
+      failures.push_back(e);
+      continue;
+    }
+    outcome.placed = transformed(scan, outcome.record.scan_to_ct);
+    const std::string key = registration_key(*stored, ct_hash, landmarks);
+    TemporaryFolder scratch("maxillo-dental");
+    const auto png = scratch / (records::fit_picture_name(stored->arch) + ".png");
+    render_fit(outcome.placed, teeth.of(stored->arch), stored->arch, frame, png);
+    records::store_picture(archive, case_id, ArtefactKind::kDentalRender, key, png);
+    records::store_dental_registration(archive, case_id, outcome.record, key);  // last: it marks a complete set
+    result.arches.push_back(std::move(outcome));
+  }
+  std::sort(result.arches.begin(), result.arches.end(),
+            [](const auto& a, const auto& b) { return a.scan.arch < b.scan.arch; });  // upper first
+  if (!failures.empty()) throw failures.front();
+  return result;
+}
+
+}  // namespace maxillo::casework

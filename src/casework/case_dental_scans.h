@@ -1,0 +1,66 @@
+#pragma once
+// A patient's dental scans in the case (issue 30): `maxillo dental import` and `maxillo dental
+// register`. An arch's scan (an intraoral scan's crowns and gingiva, or a digitised cast's crowns
+// and base; STL, PLY or OBJ in mm) is checked and stored as it came (records/dental_scans.h),
+// then placed onto the CT's teeth of its own jaw without hands (dental/arch_registration.h):
+// from the dental landmarks where the case has them, and from the principal axes' global search
+// always. The CT's teeth are traced through the CT's grey values where the segmentation says
+// teeth, told apart by jaw with the case's landmarks (planning/jaw_separation.h). Each arch's fit
+// is stored with a picture of it: the placed scan over the CT's teeth, coloured by how far each
+// point lies from them.
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "archive/archive.h"
+#include "casework/case_tissues.h"
+#include "core/triangle_mesh.h"
+#include "records/dental_scans.h"
+
+namespace maxillo::casework {
+
+struct DentalScanFile {
+  records::DentalArch arch = records::DentalArch::kUpper;
+  std::filesystem::path file;
+};
+
+// Throws Error(kBadValue, subject, reason) for a scan that cannot be an arch in millimetres (no
+// triangles; spanning less than 20 or more than 150 units: centimetres, micrometres, or not an
+// arch); returns the warnings of what it lets pass (non-manifold edges, inconsistently oriented
+// faces, degenerate triangles: the fit uses the surface's points, which these do not spoil).
+std::vector<std::string> check_arch_scan(const TriangleMesh& scan, const std::string& subject);
+
+// Reads and checks every file first, then stores each as its arch's newest scan: a bad file
+// stores nothing, not even the good one beside it.
+std::vector<records::StoredDentalScan> import_dental_scans(Archive& archive, int64_t case_id,
+                                                           const std::vector<DentalScanFile>& files);
+
+// The CT's upper and lower teeth (LPS mm, closed surfaces, every tooth kept).
+struct CtTeeth {
+  TriangleMesh upper, lower;
+  const TriangleMesh& of(records::DentalArch arch) const { return arch == records::DentalArch::kUpper ? upper : lower; }
+};
+CtTeeth ct_teeth_surfaces(const Volume& ct, const CaseTissues& tissues);
+
+struct ArchRegistrationOutcome {
+  records::StoredDentalScan scan;
+  records::DentalRegistrationRecord record;
+  TriangleMesh placed;  // the scan in the CT's frame
+  bool reused = false;  // found stored under the same inputs, not registered again
+};
+
+struct CaseDentalRegistration {
+  std::vector<ArchRegistrationOutcome> arches;  // upper first, for the arches the case has scans of
+};
+
+// Registers each arch's newest scan onto the CT's teeth of its jaw and stores the fit and its
+// picture (unless stored already for the same scan, CT and program). Throws Error(kNotFound) for
+// a case without dental scans or landmarks, Error(kProcessing) naming the arch and its file for
+// a poor or ambiguous fit, saying so when the scan fits the other jaw's teeth (upper and lower
+// swapped). An arch that fails stores nothing; the other arch's fit is stored before the error.
+CaseDentalRegistration register_case_dental_scans(Archive& archive, int64_t case_id,
+                                                  const CaseTissues* tissues = nullptr);
+
+}  // namespace maxillo::casework
