@@ -10,12 +10,16 @@
 #include <string>
 
 #include "archive_fixture.h"
+#include "casework/augmented_model.h"
 #include "casework/case_dental_scans.h"
 #include "casework/phantom_dental_scans.h"
 #include "casework/sample_case.h"
 #include "core/error.h"
 #include "dental/arch_registration.h"
+#include "geometry/aabb_tree.h"
+#include "geometry/mesh_measures.h"
 #include "geometry/mesh_transform.h"
+#include "validation/distance_statistics.h"
 #include "mesh/mesh_io.h"
 #include "records/archived_series.h"
 #include "records/case_landmarks.h"
@@ -269,6 +273,61 @@ TEST(CaseDentalScans, RegisteringWithoutScansOrLandmarksSaysWhatIsMissing) {
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), ErrorCode::kNotFound);
     EXPECT_NE(e.reason().find("dental import"), std::string::npos) << e.reason();
+  }
+}
+
+}  // namespace
+}  // namespace maxillo::casework
+
+namespace maxillo::casework {
+namespace {
+
+// The augmented model: the CT's teeth with the scanned crowns in place of their own. Its crowns
+// must be the true crowns far better than the CT's (the scan's source is the analytic teeth the
+// CT was painted from), it must be closed (the occlusion and the splints need inside and
+// outside), and it must keep the CT's roots.
+TEST(AugmentedModel, TheCrownsAreTheScansAndTheSolidIsClosed) {
+  DentalCase& c = dental_case();
+  const Volume ct =
+      records::load_archived_series(*c.archive, records::primary_series(c.archive->case_contents(c.case_id)));
+  const CaseTissues tissues = segment_case_tissues(ct, c.sample.landmarks);
+  const CtTeeth teeth = ct_teeth_surfaces(ct, tissues);
+  for (DentalArch arch : records::kBothArches) {
+    const DentalArch other = arch == DentalArch::kUpper ? DentalArch::kLower : DentalArch::kUpper;
+    const TriangleMesh truth = transformed(c.of(arch).scan, c.of(arch).scan_to_ct);  // the scan where it was taken
+    const AugmentedArch augmented = augmented_arch(ct, tissues, arch, teeth.of(arch), teeth.of(other), truth);
+    EXPECT_TRUE(is_watertight(augmented.surface)) << name_of(arch);
+    EXPECT_GT(augmented.ct_voxels_kept, 0) << name_of(arch);
+    EXPECT_GT(augmented.ct_voxels_cut, 0) << name_of(arch);
+    // As much tooth as the CT's: its crowns swapped for the scan's, its roots kept.
+    EXPECT_NEAR(signed_volume(augmented.surface) / signed_volume(teeth.of(arch)), 1.0, 0.1) << name_of(arch);
+    // Over the true crowns' biting surfaces (the scan's faces turned towards the other jaw: what
+    // the occlusion and the splints rest on): how far the augmented model and the CT's teeth lie.
+    const AabbTree model(augmented.surface), ct_surface(teeth.of(arch));
+    const Eigen::Vector3d towards_other =
+        (teeth.of(other).vertices.colwise().mean() - teeth.of(arch).vertices.colwise().mean()).transpose().normalized();
+    std::vector<double> to_model, to_ct;
+    for (Eigen::Index f = 0; f < truth.face_count(); f += 5) {
+      const Eigen::Vector3d a = truth.vertices.row(truth.faces(f, 0)).transpose(),
+                            b = truth.vertices.row(truth.faces(f, 1)).transpose(),
+                            c = truth.vertices.row(truth.faces(f, 2)).transpose();
+      if ((b - a).cross(c - a).normalized().dot(towards_other) < 0.7) continue;
+      const Eigen::Vector3d p = (a + b + c) / 3;
+      to_ct.push_back(ct_surface.nearest(p, 5).distance);
+      to_model.push_back(model.nearest(p, 5).distance);
+    }
+    ASSERT_GT(to_model.size(), 1000u);
+    const double model_median = validation::percentile(to_model, 50), ct_median = validation::percentile(to_ct, 50);
+    const double model_p95 = validation::percentile(to_model, 95), ct_p95 = validation::percentile(to_ct, 95);
+    std::printf(
+        "%s arch, biting surfaces from the augmented model: median %.3f, P95 %.3f mm; from the CT's teeth: "
+        "median %.3f, P95 %.3f mm\n",
+        std::string(name_of(arch)).c_str(), model_median, model_p95, ct_median, ct_p95);
+    // Measured: 0.014-0.015 and 0.29-0.40 mm against 0.28 and 1.4-1.5 mm (the CT's teeth are cut
+    // where the jaws meet): the model's tail is the fissures its 0.25 mm grid closes.
+    EXPECT_LT(model_median, 0.05) << name_of(arch);
+    EXPECT_LT(model_p95, 0.5) << name_of(arch);
+    EXPECT_LT(model_p95, ct_p95 / 3) << name_of(arch);
   }
 }
 
