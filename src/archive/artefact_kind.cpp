@@ -5,7 +5,7 @@
 namespace maxillo {
 
 // kAllArtefactKinds lists every kind: the last enumerator closes the list.
-static_assert(std::size(kAllArtefactKinds) == size_t(ArtefactKind::kDentalRender) + 1);
+static_assert(std::size(kAllArtefactKinds) == size_t(ArtefactKind::kAugmentedDentition) + 1);
 
 std::string kind_name(ArtefactKind kind) {
   switch (kind) {
@@ -36,6 +36,7 @@ std::string kind_name(ArtefactKind kind) {
     case ArtefactKind::kDentalScan: return "dental-scan";
     case ArtefactKind::kDentalRegistration: return "dental-registration";
     case ArtefactKind::kDentalRender: return "dental-render";
+    case ArtefactKind::kAugmentedDentition: return "augmented-dentition";
   }
   return "unknown";
 }

@@ -36,6 +36,7 @@ enum class ArtefactKind {
   kDentalScan,           // a dental arch scan as imported, in its scanner's frame (PLY)
   kDentalRegistration,   // an arch scan placed onto the CT's teeth: its pose and fit (JSON)
   kDentalRender,         // the augmented dentition and each arch's fit, pictured (PNG)
+  kAugmentedDentition,   // a jaw's CT teeth with the scanned crowns in their place (PLY)
 };
 
 // Every kind, in the order above (for tables and tests).
@@ -53,7 +54,7 @@ inline constexpr ArtefactKind kAllArtefactKinds[] = {
     ArtefactKind::kChartWits,           ArtefactKind::kReport,
     ArtefactKind::kOrientation,         ArtefactKind::kLandmarkRender,
     ArtefactKind::kDentalScan,          ArtefactKind::kDentalRegistration,
-    ArtefactKind::kDentalRender};
+    ArtefactKind::kDentalRender,        ArtefactKind::kAugmentedDentition};
 
 // The name the index stores: "landmarks", "plan-result", "render-skin-frontal", ...
 std::string kind_name(ArtefactKind kind);

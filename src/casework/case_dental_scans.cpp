@@ -2,12 +2,15 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <span>
 
+#include "casework/augmented_model.h"
 #include "ceph/landmark_frame.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/log.h"
+#include "core/parallel_slabs.h"
 #include "core/temporary_folder.h"
 #include "dental/arch_registration.h"
 #include "geometry/aabb_tree.h"
@@ -21,10 +24,12 @@
 #include "records/archived_series.h"
 #include "records/case_landmarks.h"
 #include "records/derivation.h"
+#include "records/mesh_artefact.h"
 #include "records/stored_artefact.h"
 #include "report/number_text.h"
 #include "render/anatomical_views.h"
 #include "render/render_views.h"
+#include "render/view_files.h"
 #include "sample/phantom.h"
 
 namespace maxillo::casework {
@@ -34,6 +39,7 @@ using records::DentalArch;
 
 constexpr double kSmallestArchMm = 20, kLargestArchMm = 150;
 constexpr double kFitMapRangeMm = 1.0;  // the pictures' colour scale: 0 (on the CT's teeth) to this
+constexpr render::ColourRGB kScannedCrownColour{0.35, 0.6, 0.95};
 
 int64_t degenerate_triangles(const TriangleMesh& mesh) {
   int64_t count = 0;
@@ -167,6 +173,70 @@ records::DentalRegistrationRecord to_record(const records::StoredDentalScan& sca
   return record;
 }
 
+// One arch registered (or an error naming it) and its jaw's augmented dentition made.
+ArchRegistrationOutcome register_and_augment(const records::StoredDentalScan& stored, const TriangleMesh& scan,
+                                             const CtTeeth& teeth, const LandmarkSet& landmarks, int64_t series,
+                                             const Volume& ct, const CaseTissues& jaws) {
+  const auto clock = std::chrono::steady_clock::now();
+  ArchRegistrationOutcome outcome;
+  outcome.scan = stored;
+  const PoseSearch search = register_or_explain(stored, scan, teeth, landmarks);
+  outcome.record = to_record(stored, series, search,
+                             std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count());
+  outcome.placed = transformed(scan, outcome.record.scan_to_ct);
+  const DentalArch other = stored.arch == DentalArch::kUpper ? DentalArch::kLower : DentalArch::kUpper;
+  outcome.augmented =
+      augmented_arch(ct, jaws, stored.arch, teeth.of(stored.arch), teeth.of(other), outcome.placed).surface;
+  return outcome;
+}
+
+// The augmented model's surface split in two: the faces whose corners all lie on a scanned crown
+// (within 0.05 mm of the placed scan) and the others, the CT's.
+std::pair<TriangleMesh, TriangleMesh> crowns_and_ct(const TriangleMesh& augmented, const TriangleMesh& placed) {
+  const AabbTree scan(placed);
+  std::vector<uint8_t> on_scan(size_t(augmented.vertex_count()));
+  for (Eigen::Index v = 0; v < augmented.vertex_count(); ++v)
+    on_scan[size_t(v)] = scan.nearest(augmented.vertices.row(v).transpose(), 0.05).face >= 0;
+  TriangleMesh crowns{augmented.vertices, {}}, ct{augmented.vertices, {}};
+  std::vector<Eigen::Vector3i> crown_faces, ct_faces;
+  for (Eigen::Index f = 0; f < augmented.face_count(); ++f) {
+    const Eigen::Vector3i face = augmented.faces.row(f).transpose();
+    (on_scan[size_t(face(0))] && on_scan[size_t(face(1))] && on_scan[size_t(face(2))] ? crown_faces : ct_faces)
+        .push_back(face);
+  }
+  for (auto [mesh, faces] : {std::pair{&crowns, &crown_faces}, {&ct, &ct_faces}}) {
+    mesh->faces.resize(Eigen::Index(faces->size()), 3);
+    for (size_t f = 0; f < faces->size(); ++f) mesh->faces.row(Eigen::Index(f)) = (*faces)[f].transpose();
+  }
+  return {std::move(crowns), std::move(ct)};
+}
+
+// Both jaws' augmented dentitions, the scanned crowns in blue and the CT's teeth in ivory, from
+// the front and the right: "augmented-frontal", "augmented-lateral" (dental-render pictures).
+void store_augmented_pictures(Archive& archive, int64_t case_id, const CaseDentalRegistration& registered,
+                              const AnatomicalFrame& frame) {
+  std::vector<std::pair<TriangleMesh, TriangleMesh>> parts;
+  std::vector<std::string> keys;
+  for (const auto& arch : registered.arches)
+    if (arch.augmented.face_count() > 0) {
+      parts.push_back(crowns_and_ct(arch.augmented, arch.placed));
+      keys.push_back(arch.scan.object_sha256);
+    }
+  if (parts.empty()) return;
+  render::Scene scene;
+  for (const auto& [crowns, ct] : parts) {
+    scene.meshes.push_back({&crowns, kScannedCrownColour, 1.0, std::nullopt});
+    scene.meshes.push_back({&ct, render::kBoneIvory, 1.0, std::nullopt});
+  }
+  TemporaryFolder scratch("maxillo-augmented");
+  render::RenderSettings settings;
+  settings.size = {700, 700};
+  const render::StandardView views[] = {render::StandardView::Frontal, render::StandardView::Lateral};
+  const std::string key = records::derivation_key(keys, {{"pictures", "augmented"}});
+  for (const auto& view : render::render_view_files(scene, frame, views, scratch.path(), "augmented-", settings))
+    records::store_picture(archive, case_id, ArtefactKind::kDentalRender, key, view.png);
+}
+
 // What a registration depends on: the scan, the CT and the landmarks its starts came from.
 std::string registration_key(const records::StoredDentalScan& scan, const std::string& ct_hash,
                              const LandmarkSet& landmarks) {
@@ -226,11 +296,10 @@ std::vector<records::StoredDentalScan> import_dental_scans(Archive& archive, int
   return stored;
 }
 
-CtTeeth ct_teeth_surfaces(const Volume& scan, const CaseTissues& tissues) {
+CtTeeth ct_teeth_surfaces(const Volume& hu, const CaseTissues& tissues) {
   const auto upper = uint8_t(Tissue::kUpperTooth), lower = uint8_t(Tissue::kLowerTooth);
   const VoxelBox box = box_of_labels(tissues.jaws, {upper, lower}, 2, "the CT's teeth");
-  const std::optional<Volume> converted = in_hounsfield_units(scan);  // a cone-beam scan's grey values as HU
-  const Volume ct = cropped(converted ? *converted : scan, box);
+  const Volume ct = cropped(hu, box);
   const LabelVolume jaws = cropped(tissues.jaws, box);
   SurfaceOptions options;
   options.keep_largest_components = 0;  // every tooth
@@ -266,48 +335,67 @@ CaseDentalRegistration register_case_dental_scans(Archive& archive, int64_t case
       to_register.push_back(&stored);
       continue;
     }
-    ArchRegistrationOutcome outcome{
-        stored,
-        records::read_dental_registration(records::artefact_json(archive, *done), records::artefact_source(*done)),
-        {},
-        true};
+    ArchRegistrationOutcome outcome;
+    outcome.scan = stored;
+    outcome.record =
+        records::read_dental_registration(records::artefact_json(archive, *done), records::artefact_source(*done));
+    outcome.reused = true;
     if (outcome.record.scan_artefact_id != stored.artefact_id) {
       // The same mesh imported again as a newer version after another one: the fit holds for it.
       outcome.record.scan_artefact_id = stored.artefact_id;
       records::store_dental_registration(archive, case_id, outcome.record, key);
     }
     outcome.placed = transformed(records::load_dental_scan(archive, stored), outcome.record.scan_to_ct);
+    if (const ArtefactRecord* augmented = records::newest_with_key(artefacts, ArtefactKind::kAugmentedDentition, key))
+      outcome.augmented = records::load_mesh_artefact(archive, *augmented);
     result.arches.push_back(std::move(outcome));
   }
   if (to_register.empty()) return result;
 
-  const Volume ct = records::load_archived_series(archive, series);
-  const CtTeeth teeth = ct_teeth_surfaces(ct, tissues ? *tissues : segment_case_tissues(ct, landmarks));
+  const Volume scan_volume = records::load_archived_series(archive, series);
+  const std::optional<Volume> converted = in_hounsfield_units(scan_volume);  // a cone-beam scan's grey values as HU
+  const Volume& ct = converted ? *converted : scan_volume;
+  const CaseTissues segmented = tissues ? CaseTissues{} : segment_case_tissues(scan_volume, landmarks);
+  const CaseTissues& jaws = tissues ? *tissues : segmented;
+  const CtTeeth teeth = ct_teeth_surfaces(ct, jaws);
   const AnatomicalFrame frame = anatomical_frame(landmarks);
   std::vector<Error> failures;
-  for (const records::StoredDentalScan* stored : to_register) {
-    const TriangleMesh scan = records::load_dental_scan(archive, *stored);
-    const auto clock = std::chrono::steady_clock::now();
-    ArchRegistrationOutcome outcome{*stored, {}, {}, false};
-    try {
-      const PoseSearch search = register_or_explain(*stored, scan, teeth, landmarks);
-      outcome.record = to_record(*stored, series, search,
-                                 std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count());
-    } catch (const Error& e) {
-      failures.push_back(e);
+  // Each arch's registration and augmented dentition touch no archive: the arches run at once.
+  std::vector<TriangleMesh> loaded;
+  for (const records::StoredDentalScan* stored : to_register)
+    loaded.push_back(records::load_dental_scan(archive, *stored));
+  std::vector<ArchRegistrationOutcome> computed(to_register.size());
+  std::vector<std::optional<Error>> failed(to_register.size());
+  std::vector<std::function<void()>> tasks;
+  for (size_t a = 0; a < to_register.size(); ++a)
+    tasks.push_back([&, a] {
+      try {
+        computed[a] = register_and_augment(*to_register[a], loaded[a], teeth, landmarks, series, ct, jaws);
+      } catch (const Error& e) {
+        failed[a] = e;
+      }
+    });
+  run_concurrently(tasks);
+  for (size_t a = 0; a < to_register.size(); ++a) {
+    if (failed[a]) {
+      failures.push_back(*failed[a]);
       continue;
     }
-    outcome.placed = transformed(scan, outcome.record.scan_to_ct);
-    const std::string key = registration_key(*stored, ct_hash, landmarks);
+    ArchRegistrationOutcome& outcome = computed[a];
+    const DentalArch arch = outcome.scan.arch;
+    const std::string key = registration_key(outcome.scan, ct_hash, landmarks);
     TemporaryFolder scratch("maxillo-dental");
-    const auto png = scratch / (records::fit_picture_name(stored->arch) + ".png");
-    render_fit(outcome.placed, teeth.of(stored->arch), stored->arch, frame, png);
+    const auto png = scratch / (records::fit_picture_name(arch) + ".png");
+    render_fit(outcome.placed, teeth.of(arch), arch, frame, png);
     records::store_picture(archive, case_id, ArtefactKind::kDentalRender, key, png);
+    records::store_mesh_artefact(archive, case_id, kind_name(ArtefactKind::kAugmentedDentition), key,
+                                 Json{{"arch", name_of(arch)}}, outcome.augmented);
     records::store_dental_registration(archive, case_id, outcome.record, key);  // last: it marks a complete set
     result.arches.push_back(std::move(outcome));
   }
   std::sort(result.arches.begin(), result.arches.end(),
             [](const auto& a, const auto& b) { return a.scan.arch < b.scan.arch; });  // upper first
+  store_augmented_pictures(archive, case_id, result, frame);
   if (!failures.empty()) throw failures.front();
   return result;
 }

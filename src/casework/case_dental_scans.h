@@ -7,7 +7,9 @@
 // always. The CT's teeth are traced through the CT's grey values where the segmentation says
 // teeth, told apart by jaw with the case's landmarks (planning/jaw_separation.h). Each arch's fit
 // is stored with a picture of it: the placed scan over the CT's teeth, coloured by how far each
-// point lies from them.
+// point lies from them; and so is the augmented model, the CT's teeth of each jaw with the
+// scanned crowns in place of their own (casework/augmented_model.h), pictured with the crowns
+// coloured apart.
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -37,26 +39,29 @@ std::vector<std::string> check_arch_scan(const TriangleMesh& scan, const std::st
 std::vector<records::StoredDentalScan> import_dental_scans(Archive& archive, int64_t case_id,
                                                            const std::vector<DentalScanFile>& files);
 
-// The CT's upper and lower teeth (LPS mm, closed surfaces, every tooth kept).
+// The CT's upper and lower teeth (LPS mm, closed surfaces, every tooth kept). `hu`: the CT in
+// Hounsfield units (a cone-beam scan converted first: imaging/hounsfield_reading.h).
 struct CtTeeth {
   TriangleMesh upper, lower;
   const TriangleMesh& of(records::DentalArch arch) const { return arch == records::DentalArch::kUpper ? upper : lower; }
 };
-CtTeeth ct_teeth_surfaces(const Volume& ct, const CaseTissues& tissues);
+CtTeeth ct_teeth_surfaces(const Volume& hu, const CaseTissues& tissues);
 
 struct ArchRegistrationOutcome {
   records::StoredDentalScan scan;
   records::DentalRegistrationRecord record;
-  TriangleMesh placed;  // the scan in the CT's frame
-  bool reused = false;  // found stored under the same inputs, not registered again
+  TriangleMesh placed;     // the scan in the CT's frame
+  TriangleMesh augmented;  // the jaw's CT teeth with this scan's crowns in their place (augmented_model.h)
+  bool reused = false;     // found stored under the same inputs, not registered again
 };
 
 struct CaseDentalRegistration {
   std::vector<ArchRegistrationOutcome> arches;  // upper first, for the arches the case has scans of
 };
 
-// Registers each arch's newest scan onto the CT's teeth of its jaw and stores the fit and its
-// picture (unless stored already for the same scan, CT and program). Throws Error(kNotFound) for
+// Registers each arch's newest scan onto the CT's teeth of its jaw and stores the fit, its
+// picture and the jaw's augmented dentition (unless stored already for the same scan, CT and
+// program), then pictures of the augmented model (both jaws, frontal and lateral). Throws Error(kNotFound) for
 // a case without dental scans or landmarks, Error(kProcessing) naming the arch and its file for
 // a poor or ambiguous fit, saying so when the scan fits the other jaw's teeth (upper and lower
 // swapped). An arch that fails stores nothing; the other arch's fit is stored before the error.

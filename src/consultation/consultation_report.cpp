@@ -212,7 +212,7 @@ ConsultationResult write_consultation_report(Archive& archive, int64_t case_id, 
                                      landmark_pictures, records::newest_reference_landmarks(archive, case_id)))
     model.sections.push_back(std::move(*landmarks_page));
   model.sections.push_back(sections::case_cephalometry_section(archive, case_id, sex_for_norms(contents.patient.sex)));
-  if (auto dental = sections::dental_section(records::case_dental_arches(archive, case_id)))
+  if (auto dental = sections::dental_section(records::case_dental_scans(archive, case_id)))
     model.sections.push_back(std::move(*dental));
   if (auto plan_result = records::latest_plan_result(archive, case_id))
     model.sections.push_back(sections::planning_section(*plan_result));

@@ -140,8 +140,9 @@ std::optional<StoredDentalRegistration> current_dental_registration(const Archiv
 
 std::string fit_picture_name(DentalArch arch) { return "dental-fit-" + std::string(name_of(arch)); }
 
-std::vector<CaseDentalArch> case_dental_arches(const Archive& archive, int64_t case_id) {
-  std::vector<CaseDentalArch> arches;
+CaseDentalScans case_dental_scans(const Archive& archive, int64_t case_id) {
+  CaseDentalScans out;
+  std::vector<CaseDentalArch>& arches = out.arches;
   const auto artefacts = archive.artefacts(case_id);
   for (DentalArch arch : kBothArches) {
     const auto scan = latest_dental_scan(archive, case_id, arch);
@@ -153,7 +154,14 @@ std::vector<CaseDentalArch> case_dental_arches(const Archive& archive, int64_t c
         entry.fit_picture = archive.object_path(picture->object_sha256);
     arches.push_back(std::move(entry));
   }
-  return arches;
+  // The augmented model's pictures of the newest registration run that made them.
+  for (const char* name : {"augmented-frontal", "augmented-lateral"}) {
+    const ArtefactRecord* newest = nullptr;
+    for (const ArtefactRecord& a : artefacts)
+      if (a.kind == kind_name(ArtefactKind::kDentalRender) && picture_name(a) == name) newest = &a;
+    if (newest && !arches.empty()) out.augmented_pictures.push_back(archive.object_path(newest->object_sha256));
+  }
+  return out;
 }
 
 }  // namespace maxillo::records

@@ -83,7 +83,11 @@ struct CaseDentalArch {
   std::optional<StoredDentalRegistration> registration;
   std::optional<std::filesystem::path> fit_picture;
 };
-std::vector<CaseDentalArch> case_dental_arches(const Archive& archive, int64_t case_id);
+struct CaseDentalScans {
+  std::vector<CaseDentalArch> arches;
+  std::vector<std::filesystem::path> augmented_pictures;  // the augmented model's (object files), frontal first
+};
+CaseDentalScans case_dental_scans(const Archive& archive, int64_t case_id);
 
 // The name the picture of an arch's fit is stored under ("dental-fit-upper").
 std::string fit_picture_name(DentalArch arch);

@@ -39,9 +39,19 @@ report::Table fit_table(const std::vector<records::CaseDentalArch>& arches) {
 
 }  // namespace
 
-std::optional<report::Section> dental_section(const std::vector<records::CaseDentalArch>& arches) {
+std::optional<report::Section> dental_section(const records::CaseDentalScans& dental) {
+  const std::vector<records::CaseDentalArch>& arches = dental.arches;
   if (arches.empty()) return std::nullopt;
   report::Section section{"dental", {}};
+  if (!dental.augmented_pictures.empty()) {
+    report::ImageGrid model;
+    model.per_row = 2;
+    for (size_t i = 0; i < dental.augmented_pictures.size(); ++i)
+      model.figures.push_back({dental.augmented_pictures[i], i == 0 ? "The augmented model from the front: scanned "
+                                                                      "crowns (blue) on the CT's teeth (ivory)"
+                                                                    : "The augmented model from the right"});
+    section.blocks.push_back(model);
+  }
   report::ImageGrid pictures;
   pictures.per_row = 2;
   for (const auto& arch : arches)

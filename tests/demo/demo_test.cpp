@@ -89,8 +89,9 @@ TEST_F(DemoTest, ReportHasRealRenderedViews) {
   ASSERT_TRUE(std::filesystem::exists(report()));
   EXPECT_GE(testing::pdf_page_count(report()), 1);
   auto views = testing::pdf_images(report(), folder_->path() / "images");
-  EXPECT_EQ(views.size(), 32u) << "frontal, lateral and oblique views of skin and of bone, the landmarks drawn in "
-                                  "three views, each dental scan's fit (2), the occlusionogram, the "
+  EXPECT_EQ(views.size(), 34u) << "frontal, lateral and oblique views of skin and of bone, the landmarks drawn in "
+                                  "three views, the augmented model (2) and each dental scan's fit (2), the "
+                                  "occlusionogram, the "
                                   "splint, the Wits chart, three views of the planned skeleton, the face before, "
                                   "predicted and its displacement map (3 views each), the uncertainty band (2), the "
                                   "validation's error maps (3) and profiles expected";
@@ -139,8 +140,9 @@ TEST_F(DemoTest, ReportHasTheDentalScansPlacedIntoTheCt) {
   ASSERT_EQ(demo_.exit_code, 0) << demo_.output;
   EXPECT_NE(demo_.output.find("dental scans placed into the CT without hands"), std::string::npos) << demo_.output;
   auto text = testing::pdf_text(report());
-  for (const char* expected : {"Dental scans", "upper.stl (v1)", "lower.stl (v1)", "P95 mm", "confidence", "landmarks",
-                               "The upper arch's scan", "The lower arch's scan"})
+  for (const char* expected :
+       {"Dental scans", "upper.stl (v1)", "lower.stl (v1)", "P95 mm", "confidence", "landmarks",
+        "The upper arch's scan", "The lower arch's scan", "The augmented model from the front", "scanned crowns"})
     EXPECT_NE(text.find(expected), std::string::npos) << "missing text: " << expected;
   auto show = run_command(std::string(MAXILLO_BINARY) + " --json --archive " +
                           quote(folder_->path() / "out" / "archive") + " dental show case:1 2>/dev/null");
