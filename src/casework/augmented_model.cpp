@@ -1,29 +1,9 @@
 #include "casework/augmented_model.h"
 
-#include "geometry/aabb_tree.h"
-#include "geometry/mesh_measures.h"
 #include "mesh/surface_extraction.h"
 #include "sample/phantom.h"
 
 namespace maxillo::casework {
-namespace {
-
-// The scan's crown triangles (all three corners on a crown) as a mesh of their own.
-TriangleMesh crowns_of(const TriangleMesh& scan, const std::vector<uint8_t>& crown_vertex) {
-  TriangleMesh crowns;
-  crowns.vertices = scan.vertices;
-  std::vector<Eigen::Vector3i> faces;
-  for (Eigen::Index f = 0; f < scan.face_count(); ++f) {
-    const Eigen::Vector3i face = scan.faces.row(f).transpose();
-    if (crown_vertex[size_t(face(0))] && crown_vertex[size_t(face(1))] && crown_vertex[size_t(face(2))])
-      faces.push_back(face);
-  }
-  crowns.faces.resize(Eigen::Index(faces.size()), 3);
-  for (size_t f = 0; f < faces.size(); ++f) crowns.faces.row(Eigen::Index(f)) = faces[f].transpose();
-  return crowns;
-}
-
-}  // namespace
 
 AugmentedArch augmented_arch(const Volume& ct, const CaseTissues& tissues, records::DentalArch arch,
                              const TriangleMesh& ct_teeth, const TriangleMesh& opposing_teeth,
@@ -41,20 +21,10 @@ AugmentedArch augmented_arch(const Volume& ct, const CaseTissues& tissues, recor
   out.ct_voxels_cut = solid.ct_voxels_cut;
   SurfaceOptions surface;
   surface.keep_largest_components = 0;  // every tooth
-  surface.smoothing_iterations = 10;
-  surface.target_triangles = 150000;  // the grid's 0.25 mm steps need no more; the crowns are snapped after
-  out.surface = extract_surface(solid.solid, 1, surface);
-  // The crowns are the scan's: surface points near them are put onto them.
-  const TriangleMesh crowns = crowns_of(placed_scan, solid.crown_vertex);
-  out.from_scan.assign(size_t(out.surface.vertex_count()), 0);
-  if (crowns.face_count() == 0) return out;
-  const AabbTree tree(crowns);
-  for (Eigen::Index v = 0; v < out.surface.vertex_count(); ++v) {
-    const auto nearest = tree.nearest(out.surface.vertices.row(v).transpose(), options.snap_mm);
-    if (nearest.face < 0) continue;
-    out.surface.vertices.row(v) = nearest.point.transpose();
-    out.from_scan[size_t(v)] = 1;
-  }
+  surface.grid = SurfaceGrid::Native;
+  surface.smoothing_iterations = 5;   // the roots' voxel steps; the crowns' zero level is smooth already
+  surface.target_triangles = 150000;  // the grid's 0.25 mm steps need no more
+  out.surface = extract_surface(solid.field, 0, surface);
   return out;
 }
 

@@ -1,9 +1,8 @@
 #pragma once
 // The augmented model of a case (issue 30): each jaw's CT teeth with their crowns replaced by the
 // scanned ones (dental/augmented_dentition.h), as a closed surface the occlusion, the splints and
-// the renders can use. The solid is traced at its grid's voxels and smoothed; then every surface
-// point within snap_mm of a scanned crown is moved onto it, so that the crowns are the scan's to
-// its own accuracy, not the grid's.
+// the renders can use: the zero level of the dentition's field, which puts the crowns where the
+// scan is, to a fraction of the grid's voxel.
 #include <cstdint>
 #include <vector>
 
@@ -16,14 +15,12 @@ namespace maxillo::casework {
 
 struct AugmentedArch {
   records::DentalArch arch = records::DentalArch::kUpper;
-  TriangleMesh surface;            // closed, LPS mm
-  std::vector<uint8_t> from_scan;  // per vertex: 1 where it lies on a scanned crown
+  TriangleMesh surface;  // closed, LPS mm
   int64_t crown_voxels = 0, ct_voxels_kept = 0, ct_voxels_cut = 0;
 };
 
 struct AugmentedModelOptions {
   dental::AugmentedDentitionOptions dentition;
-  double snap_mm = 0.6;  // surface points this close to a crown are put onto it
 };
 
 // `ct` in HU; `tissues.jaws` tell the jaws' teeth apart; `ct_teeth` is this arch's jaw's teeth

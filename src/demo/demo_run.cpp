@@ -104,23 +104,20 @@ Json run_demo(const DemoOptions& options) {
 
   // The phantom arrives as a patient's CT does in a clinic: pushed by the scanner (C-STORE) to
   // `maxillo serve`, here on a loopback port inside this process.
-  // The phantom's occlusion needs no CT and renders nothing until it is written: it is computed
-  // beside the reception, which waits on the network and the disk as much as on the processor.
+  // Beside the reception, which waits on the network and the disk as much as on the processor,
+  // the landmarks are found on the CT without hands (issue 28): the case works with them as with
+  // a patient's, and the phantom's known ones are kept beside them as the truth the report
+  // measures them against.
   const auto archive_dir = options.archive_dir.empty() ? options.out / "archive" : options.archive_dir;
   net::StorageServerCounts received;
-  casework::OcclusionRun occlusion;
-  // Beside them too, the landmarks found on the CT without hands (issue 28): the case works with
-  // them as with a patient's, and the phantom's known ones are kept beside them as the truth the
-  // report measures them against.
   std::optional<landmarking::LandmarkDetection> detected;
   run_concurrently({[&] { received = push_over_dicom(files_in(sample.ct_folder), "DEMO-CT", "MAXILLO", archive_dir); },
-                    [&] { occlusion = compute_phantom_occlusion(options.skeletal_class); },
                     [&] {
                       detected = landmarking::detect_landmarks(load_series_volume(files_in(sample.ct_folder)),
                                                                "the phantom's CT");
                     }});
   auto archive = Archive::open(archive_dir);
-  clock.mark("receive over DICOM, occlusion and landmark detection beside it");
+  clock.mark("receive over DICOM and landmark detection beside it");
 
   auto case_id = archive.resolve_case(casework::kPhantomPatientId);
   // Dated follow-up (the sample cohort's first patient) for the follow-up table and Wits chart.
@@ -133,8 +130,6 @@ Json run_demo(const DemoOptions& options) {
   records::attach_automatic_landmarks(archive, case_id, detected->present(), casework::automatic_facts(*detected));
   records::attach_landmarks(archive, case_id, sample.landmarks, "phantom (analytic)", {}, {},
                             records::LandmarkOrigin::kReference);
-  archive_phantom_occlusion(archive, case_id, std::move(occlusion), sample.landmarks, options.out / "occlusion");
-  clock.mark("occlusion written and archived");
   // The issue #4 must-show plan: two trans-sinusal distractors, 10 mm advancement, 6 mm widening.
   records::store_plan(archive, case_id,
                       planning::distraction_plan({.advancement_mm = 10, .widening_mm = 6},
@@ -149,6 +144,11 @@ Json run_demo(const DemoOptions& options) {
                                  {records::DentalArch::kLower, sample.dental_folder / "lower.stl"}});
   const auto dental = casework::register_case_dental_scans(archive, case_id, &plan.tissues);
   clock.mark("dental scans placed into the CT");
+  // The occlusion and its splint on the augmented model (the scanned crowns on the CT's roots),
+  // in the CT's frame: what the teeth meet with are the crowns the scans show.
+  archive_phantom_occlusion(archive, case_id, compute_phantom_occlusion(augmented_arches(dental)), sample.landmarks,
+                            options.out / "occlusion");
+  clock.mark("occlusion on the augmented model, written and archived");
   // The face for the planned move (issue #3): the plan's maxillary move, mass tensor model. The
   // face's tet model is built once here and serves the synthetic post-operative CT and the
   // validation too.

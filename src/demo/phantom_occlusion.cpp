@@ -1,11 +1,7 @@
 #include "demo/phantom_occlusion.h"
 
-#include <algorithm>
-
 #include "ceph/landmark_frame.h"
 #include "core/error.h"
-#include "imaging/label_crop.h"
-#include "mesh/surface_extraction.h"
 #include "occlusion/arch_contacts.h"
 #include "occlusion/occlusion_benchmark.h"
 #include "casework/archived_occlusion.h"
@@ -17,22 +13,24 @@ namespace {
 // The demo's occlusion settings: the phantom's arches by name, and the splint's clearance.
 casework::OcclusionRunOptions phantom_occlusion_options() {
   casework::OcclusionRunOptions options;
-  options.upper_label = "phantom upper teeth";
-  options.lower_label = "phantom lower teeth";
-  // Surfaces of 1 mm voxels keep ridges sharper than the splint's 0.25 mm grid resolves; a
-  // wider clearance keeps the imprints off them.
+  options.upper_label = "phantom upper teeth (augmented model)";
+  options.lower_label = "phantom lower teeth (augmented model)";
+  // The scanned crowns keep ridges sharper than the splint's 0.25 mm grid resolves; a wider
+  // clearance keeps the imprints off them.
   options.splint_options.clearance_mm = 0.2;
   return options;
 }
 
 }  // namespace
 
-PhantomArches phantom_arches(const Phantom& phantom) {
-  const auto upper = uint8_t(Tissue::kUpperTooth), lower = uint8_t(Tissue::kLowerTooth);
-  const LabelVolume teeth = crop_to_labels(phantom.labels, {upper, lower}, 2, "the phantom's teeth");
-  SurfaceOptions options;
-  options.keep_largest_components = 0;  // every tooth
-  return {extract_surface(teeth, upper, options), extract_surface(teeth, lower, options)};
+PhantomArches augmented_arches(const casework::CaseDentalRegistration& dental) {
+  PhantomArches arches;
+  for (const auto& arch : dental.arches)
+    (arch.scan.arch == records::DentalArch::kUpper ? arches.upper : arches.lower) = arch.augmented;
+  for (const auto& [mesh, name] : {std::pair{&arches.upper, "upper"}, {&arches.lower, "lower"}})
+    if (mesh->face_count() == 0)
+      throw Error(ErrorCode::kProcessing, "the phantom's dental scans", std::string("no augmented ") + name + " jaw");
+  return arches;
 }
 
 Eigen::Isometry3d phantom_start_pose(const TriangleMesh& upper) {
@@ -47,9 +45,9 @@ Eigen::Isometry3d phantom_start_pose(const TriangleMesh& upper) {
 casework::OcclusionRun compute_phantom_occlusion(const PhantomArches& arches) {
   const DistanceField upper(arches.upper), lower(arches.lower);
   auto pairs = occlusion::contact_spring_pairs(upper, lower, Eigen::Isometry3d::Identity(), 4, 1.0);
-  // Smoothing leaves the phantom's label surfaces up to ~1 mm apart where the teeth touch: each
-  // spring ends where its upper point lies in the phantom's occlusion, not on the lower
-  // surface, so the phantom's occlusion is the springs' rest position.
+  // Where the teeth touch, the arches' surfaces lie up to a few tenths of a millimetre apart: each
+  // spring ends where its upper point lies in the registered occlusion, not on the lower
+  // surface, so the registered occlusion is the springs' rest position.
   for (occlusion::SpringPair& pair : pairs) pair.lower = pair.upper;
   if (pairs.size() < 4)
     throw Error(ErrorCode::kProcessing, "phantom", "the phantom's arches have fewer than 4 contacts");
@@ -61,12 +59,6 @@ casework::OcclusionRun compute_phantom_occlusion(const PhantomArches& arches) {
   const Eigen::Isometry3d start =
       occlusion::place_in_contact(upper, lower, phantom_start_pose(arches.upper), natural_penetration);
   return casework::compute_occlusion(arches.upper, arches.lower, pairs, start, phantom_occlusion_options());
-}
-
-casework::OcclusionRun compute_phantom_occlusion(SkeletalClass skeletal_class) {
-  PhantomSpec spec = phantom_spec_for_class(skeletal_class);
-  spec.noise_sigma_hu = 0;  // only the labels are used
-  return compute_phantom_occlusion(phantom_arches(make_phantom(spec)));
 }
 
 void archive_phantom_occlusion(Archive& archive, int64_t case_id, casework::OcclusionRun run,

@@ -1,14 +1,15 @@
 #pragma once
-// The demo's virtual occlusion on the synthetic phantom (no real data needed): the upper and
-// lower teeth (Tissue::kUpperTooth, kLowerTooth) are extracted as surfaces from the phantom's
-// labels, the phantom's own occlusion is the reference, the upper arch is started from a
-// displaced pose and brought back by guided alignment with 4 spring pairs taken where the teeth
-// touch; the occlusionogram and the splint follow (occlusion_run.h).
+// The demo's virtual occlusion on the phantom's augmented model (issue 30: the scanned crowns
+// on the CT's roots, in the CT's frame; casework/augmented_model.h): the registered occlusion is
+// the reference, the upper arch is started from a displaced pose and brought back by guided
+// alignment with 4 spring pairs taken where the teeth touch; the occlusionogram and the splint
+// follow (occlusion_run.h), in the CT's frame.
 #include <cstdint>
 #include <filesystem>
 
 #include "archive/archive.h"
 #include "ceph/landmark.h"
+#include "casework/case_dental_scans.h"
 #include "casework/occlusion_run.h"
 #include "sample/phantom.h"
 
@@ -18,8 +19,9 @@ struct PhantomArches {
   TriangleMesh upper, lower;  // LPS mm, the phantom's frame (in occlusion as they are)
 };
 
-// Surfaces of the two tooth labels (every tooth kept, as separate closed shells).
-PhantomArches phantom_arches(const Phantom& phantom);
+// The augmented model's two jaws (casework/augmented_model.h), in the CT's frame. Error naming
+// the missing jaw when the registration did not make both.
+PhantomArches augmented_arches(const casework::CaseDentalRegistration& dental);
 
 // The displaced start of the demo: 2 degrees about an oblique axis through the upper arch's
 // centroid and (0.8, -1.0, 1.5) mm. Deterministic.
@@ -28,10 +30,6 @@ Eigen::Isometry3d phantom_start_pose(const TriangleMesh& upper);
 // The occlusion of `arches` from phantom_start_pose, lowered into contact: computed, nothing
 // written (casework::compute_occlusion).
 casework::OcclusionRun compute_phantom_occlusion(const PhantomArches& arches);
-
-// The same for the phantom of `skeletal_class` (1 mm). It renders nothing, so the demo runs it
-// beside the CT's reception.
-casework::OcclusionRun compute_phantom_occlusion(SkeletalClass skeletal_class);
 
 // A computed phantom occlusion written into `folder` and stored with the case with a render of
 // the splint (anatomical frame from `landmarks`), where the consultation report finds it.

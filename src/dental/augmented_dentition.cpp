@@ -6,7 +6,9 @@
 #include <limits>
 
 #include "core/error.h"
+#include "core/parallel_slabs.h"
 #include "geometry/aabb_tree.h"
+#include "geometry/signed_distance.h"
 
 namespace maxillo::dental {
 namespace {
@@ -207,6 +209,74 @@ void flood_outside(LabelVolume& grid) {
   }
 }
 
+// The voxels within `steps` 6-connected steps of a marked one (a breadth-first search).
+std::vector<uint8_t> within_steps(const std::vector<uint8_t>& marked, const VolumeGeometry& g, int steps) {
+  std::vector<uint8_t> near = marked;
+  std::vector<Eigen::Vector3i> front;
+  for (int k = 0; k < g.size.z(); ++k)
+    for (int j = 0; j < g.size.y(); ++j)
+      for (int i = 0; i < g.size.x(); ++i)
+        if (marked[size_t(g.index(i, j, k))]) front.emplace_back(i, j, k);
+  for (int step = 0; step < steps; ++step) {
+    std::vector<Eigen::Vector3i> next;
+    for (const Eigen::Vector3i& v : front)
+      for (const Eigen::Vector3i& d :
+           {Eigen::Vector3i(1, 0, 0), Eigen::Vector3i(-1, 0, 0), Eigen::Vector3i(0, 1, 0), Eigen::Vector3i(0, -1, 0),
+            Eigen::Vector3i(0, 0, 1), Eigen::Vector3i(0, 0, -1)}) {
+        const Eigen::Vector3i q = v + d;
+        if (!g.contains(q.x(), q.y(), q.z())) continue;
+        uint8_t& n = near[size_t(g.index(q.x(), q.y(), q.z()))];
+        if (n) continue;
+        n = 1;
+        next.push_back(q);
+      }
+    front = std::move(next);
+  }
+  return near;
+}
+
+// The scan's triangles whose three corners lie on a crown.
+TriangleMesh crown_triangles(const TriangleMesh& scan, const std::vector<uint8_t>& crown) {
+  TriangleMesh crowns;
+  crowns.vertices = scan.vertices;
+  std::vector<Eigen::Vector3i> faces;
+  for (Eigen::Index f = 0; f < scan.face_count(); ++f) {
+    const Eigen::Vector3i face = scan.faces.row(f).transpose();
+    if (crown[size_t(face(0))] && crown[size_t(face(1))] && crown[size_t(face(2))]) faces.push_back(face);
+  }
+  crowns.faces.resize(Eigen::Index(faces.size()), 3);
+  for (size_t f = 0; f < faces.size(); ++f) crowns.faces.row(Eigen::Index(f)) = faces[f].transpose();
+  return crowns;
+}
+
+// Step 6: the solid as a field (saturated), and near the crowns the scan's signed distance: on the
+// shell's voxels (drawn a voxel beyond the scan, so the solid alone lies too far out), and
+// elsewhere where its side agrees with the solid's (by the crowns' open neck the pseudo-normal's
+// side is not to be trusted, and the solid's is).
+Volume crown_field(const LabelVolume& solid, const std::vector<uint8_t>& shell, const TriangleMesh& scan,
+                   const std::vector<uint8_t>& crown, double band_mm) {
+  Volume field{solid.geometry, std::vector<int16_t>(solid.labels.size())};
+  for (size_t v = 0; v < solid.labels.size(); ++v) field.hu[v] = solid.labels[v] ? kFieldSaturation : -kFieldSaturation;
+  const TriangleMesh crowns = crown_triangles(scan, crown);
+  if (crowns.face_count() == 0) return field;
+  const DistanceField distance(crowns);
+  const VolumeGeometry& g = solid.geometry;
+  const std::vector<uint8_t> near = within_steps(shell, g, int(std::ceil(band_mm / g.spacing.x())) + 1);
+  for_each_slab(0, g.size.z(), [&](int first, int last) {
+    for (int k = first; k < last; ++k)
+      for (int j = 0; j < g.size.y(); ++j)
+        for (int i = 0; i < g.size.x(); ++i) {
+          const size_t v = size_t(g.index(i, j, k));
+          if (!near[v]) continue;  // farther from the crowns than the band: the solid's value stands
+          const auto d = distance.signed_distance(g.world(Eigen::Vector3d(i, j, k)), band_mm);
+          if (!d.found) continue;
+          if (!shell[v] && (d.distance < 0) != (solid.labels[v] != 0)) continue;
+          field.hu[v] = int16_t(std::clamp(-1000.0 * d.distance, -double(kFieldSaturation), double(kFieldSaturation)));
+        }
+  });
+  return field;
+}
+
 }  // namespace
 
 AugmentedDentition augmented_dentition(const Volume& ct, const LabelVolume& jaw_labels, uint8_t jaw_label,
@@ -255,7 +325,10 @@ AugmentedDentition augmented_dentition(const Volume& ct, const LabelVolume& jaw_
       }
   // Step 5: what the outside does not reach is the dentition.
   flood_outside(out.solid);
+  std::vector<uint8_t> shell(out.solid.labels.size());
+  for (size_t v = 0; v < shell.size(); ++v) shell[v] = out.solid.labels[v] == kShell;
   for (uint8_t& l : out.solid.labels) l = l == kOutside ? 0 : 1;
+  out.field = crown_field(out.solid, shell, placed_scan, out.crown_vertex, options.crown_band_mm);
   return out;
 }
 

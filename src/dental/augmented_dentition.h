@@ -15,6 +15,8 @@
 //    against the crown's shell); above it they are cut away, streaks and all.
 // 5. Everything the outside reaches through neither the shell nor the kept CT is outside (a flood
 //    fill from the grid's border); the rest is the augmented dentition.
+// 6. Within crown_band_mm of a crown, where the scan's side agrees with the solid, the scan's
+//    signed distance: a field whose zero level is the scanned crowns to a fraction of a voxel.
 // Plain Eigen and core types, no toolkit.
 #include <Eigen/Core>
 #include <cstdint>
@@ -32,10 +34,18 @@ struct AugmentedDentitionOptions {
   double shell_inward_mm = 0.6;  // the crowns' shell this deep behind the scan's surface (closes the neck)
   double teeth_hu = 1500;        // the CT's teeth: at least this (HU), where the jaw's labels say so
   double margin_mm = 2.0;        // around the jaw's teeth and the scan
+  double crown_band_mm = 0.75;   // step 6's band around the crowns
 };
 
+inline constexpr int16_t kFieldSaturation = 1000;  // µm: the field's value away from the crowns
+
 struct AugmentedDentition {
-  LabelVolume solid;                              // 1 inside the augmented teeth, on a grid aligned with the CT's axes
+  LabelVolume solid;  // 1 inside the augmented teeth, on a grid aligned with the CT's axes
+  // The same as a field whose zero level is the surface (µm, positive inside, saturated at
+  // ±kFieldSaturation): near a crown, minus the signed distance to the scan (step 6); elsewhere
+  // the solid's inside or outside. Its zero level puts the crowns where the scan is, between the
+  // grid's voxels, which the solid alone cannot.
+  Volume field;
   std::vector<uint8_t> crown_vertex;              // per vertex of the placed scan: 1 on a crown (above the level)
   int64_t crown_voxels = 0;                       // voxels of the scan's crowns' shell
   int64_t ct_voxels_kept = 0, ct_voxels_cut = 0;  // the CT's teeth below and above the level

@@ -53,9 +53,4 @@ Volume cropped(const Volume& volume, const VoxelBox& box) {
   return Volume{cropped_geometry(volume.geometry, box), cropped_values(volume.hu, volume.geometry, box)};
 }
 
-LabelVolume crop_to_labels(const LabelVolume& volume, std::initializer_list<uint8_t> labels, int margin,
-                           const std::string& subject) {
-  return cropped(volume, box_of_labels(volume, labels, margin, subject));
-}
-
 }  // namespace maxillo

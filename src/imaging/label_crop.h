@@ -23,8 +23,4 @@ VoxelBox box_of_labels(const LabelVolume& volume, std::initializer_list<uint8_t>
 LabelVolume cropped(const LabelVolume& volume, const VoxelBox& box);
 Volume cropped(const Volume& volume, const VoxelBox& box);
 
-// cropped(volume, box_of_labels(volume, labels, margin, subject)).
-LabelVolume crop_to_labels(const LabelVolume& volume, std::initializer_list<uint8_t> labels, int margin,
-                           const std::string& subject);
-
 }  // namespace maxillo
