@@ -20,6 +20,9 @@
 #include "casework/archived_occlusion.h"
 #include "ceph/landmark_frame.h"
 #include "records/case_landmarks.h"
+#include "records/dental_scans.h"
+#include "geometry/signed_distance.h"
+#include "occlusion/occlusion_benchmark.h"
 
 namespace maxillo::cli {
 namespace {
@@ -56,22 +59,62 @@ void print_summary(const casework::OcclusionRun& run, const OccludeOptions& opti
   std::cout << "wrote " << (options.out / "occlusion.json").string() << "\n";
 }
 
+// The case's augmented jaws (the scanned crowns on the CT's roots, in the CT's frame), for
+// `occlude --case CASE` without arch files. Error naming what is missing.
+std::pair<TriangleMesh, TriangleMesh> case_arches(const Archive& archive, int64_t case_id,
+                                                  const std::string& case_text) {
+  auto upper = records::current_augmented_dentition(archive, case_id, records::DentalArch::kUpper);
+  auto lower = records::current_augmented_dentition(archive, case_id, records::DentalArch::kLower);
+  if (!upper || !lower)
+    throw Error(ErrorCode::kNotFound, "case " + std::to_string(case_id),
+                std::string("it has no augmented ") + (!upper ? "upper" : "lower") +
+                    " jaw: import and register both arches' scans first (`maxillo dental import " + case_text +
+                    " --upper FILE --lower FILE`, `maxillo dental register " + case_text + "`)");
+  return {std::move(*upper), std::move(*lower)};
+}
+
+// The pairs of --pairs, or without it the 4 springs where the arches touch now (the registered
+// occlusion: the engine settles it without the teeth passing through each other).
+std::vector<SpringPair> spring_pairs(const OccludeOptions& options, const TriangleMesh& upper,
+                                     const TriangleMesh& lower) {
+  if (!options.pairs.empty()) return read_spring_pairs(options.pairs);
+  const DistanceField upper_field(upper), lower_field(lower);
+  auto pairs = contact_spring_pairs(upper_field, lower_field, Eigen::Isometry3d::Identity(), 4, 1.0);
+  for (SpringPair& pair : pairs) pair.lower = pair.upper;  // at rest where the arches are
+  if (pairs.size() < 3)
+    throw Error(ErrorCode::kProcessing, "the case's arches",
+                "they touch in fewer than 3 places: give the corresponding points with --pairs");
+  return pairs;
+}
+
 int run_occlude(OccludeOptions options, const GlobalOptions& global) {
-  const std::vector<SpringPair> pairs = read_spring_pairs(options.pairs);
+  const bool from_case = options.upper.empty();
+  std::optional<Archive> archive;
+  int64_t case_id = 0;
+  if (!options.case_text.empty()) {
+    archive.emplace(Archive::open(resolve_archive_dir(global)));
+    case_id = archive->resolve_case(options.case_text);
+  }
+  auto [upper, lower] = from_case ? case_arches(*archive, case_id, options.case_text)
+                                  : std::pair{read_mesh(options.upper), read_mesh(options.lower)};
+  const std::vector<SpringPair> pairs = spring_pairs(options, upper, lower);
   const Eigen::Isometry3d start =
       options.start.empty() ? Eigen::Isometry3d::Identity() : read_upper_transform(options.start);
   options.run.splint = !options.no_splint;
-  options.run.upper_label = options.upper.string();
-  options.run.lower_label = options.lower.string();
-  const casework::OcclusionRun run = casework::run_occlusion(read_mesh(options.upper), read_mesh(options.lower), pairs,
-                                                             start, options.out, options.run);
-  if (!options.case_text.empty()) {
-    auto archive = Archive::open(resolve_archive_dir(global));
-    const std::vector<std::string> inputs = {sha256_hex(read_file(options.upper)), sha256_hex(read_file(options.lower)),
-                                             sha256_hex(read_file(options.pairs))};
-    const int64_t case_id = archive.resolve_case(options.case_text);
-    casework::store_occlusion_run(archive, case_id, run, inputs,
-                                  anatomical_frame(records::latest_landmarks(archive, case_id)));
+  options.run.upper_label = from_case ? "the case's augmented upper jaw (CT frame)" : options.upper.string();
+  options.run.lower_label = from_case ? "the case's augmented lower jaw (CT frame)" : options.lower.string();
+  const casework::OcclusionRun run =
+      casework::run_occlusion(std::move(upper), std::move(lower), pairs, start, options.out, options.run);
+  if (archive) {
+    std::vector<std::string> inputs;
+    if (from_case)  // the registrations the augmented jaws were made with
+      for (records::DentalArch arch : records::kBothArches)
+        inputs.push_back(records::current_dental_registration(*archive, case_id, arch)->key);
+    else
+      inputs = {sha256_hex(read_file(options.upper)), sha256_hex(read_file(options.lower))};
+    if (!options.pairs.empty()) inputs.push_back(sha256_hex(read_file(options.pairs)));
+    casework::store_occlusion_run(*archive, case_id, run, inputs,
+                                  anatomical_frame(records::latest_landmarks(*archive, case_id)));
   }
   if (global.json)
     std::cout << records::to_json(run.record).dump(2) << "\n";
@@ -113,14 +156,19 @@ void attach_occlude(CLI::App& app, CommandContext& ctx) {
       ->capture_default_str();
   app.add_flag("--no-splint", options->no_splint, "do not make the surgical splint (DIR/splint.stl)");
   app.add_option("--case", options->case_text,
-                 "store occlusion.json, the occlusionogram and the splint as artefacts of this archived case");
+                 "store occlusion.json, the occlusionogram and the splint as artefacts of this archived case; "
+                 "without UPPER and LOWER, occlude the case's augmented jaws (maxillo dental register) in its CT's "
+                 "frame, with the springs where they touch unless --pairs is given");
   attach_occlude_compare(app, ctx);
   attach_occlude_autorotate(app, ctx);
   app.callback([options, &ctx, &app] {
     if (!app.get_subcommands().empty()) return;  // a subcommand did the work
-    for (const auto& [missing, name] : {std::pair{options->upper.empty(), "UPPER"},
-                                        {options->lower.empty(), "LOWER"},
-                                        {options->pairs.empty(), "--pairs"},
+    // With --case and no arch files, the case's augmented jaws (and, without --pairs, the springs
+    // where they touch).
+    const bool from_case = !options->case_text.empty() && options->upper.empty() && options->lower.empty();
+    for (const auto& [missing, name] : {std::pair{!from_case && options->upper.empty(), "UPPER"},
+                                        {!from_case && options->lower.empty(), "LOWER"},
+                                        {!from_case && options->pairs.empty(), "--pairs"},
                                         {options->out.empty(), "--out"}})
       if (missing) throw CLI::RequiredError(name);
     ctx.exit_code = run_occlude(*options, ctx.global);

@@ -138,6 +138,15 @@ std::optional<StoredDentalRegistration> current_dental_registration(const Archiv
   return std::nullopt;
 }
 
+std::optional<TriangleMesh> current_augmented_dentition(const Archive& archive, int64_t case_id, DentalArch arch) {
+  const auto registration = current_dental_registration(archive, case_id, arch);
+  if (!registration) return std::nullopt;
+  const auto artefacts = archive.artefacts(case_id);
+  const ArtefactRecord* model = newest_with_key(artefacts, ArtefactKind::kAugmentedDentition, registration->key);
+  if (!model) return std::nullopt;
+  return load_mesh_artefact(archive, *model);
+}
+
 std::string fit_picture_name(DentalArch arch) { return "dental-fit-" + std::string(name_of(arch)); }
 
 CaseDentalScans case_dental_scans(const Archive& archive, int64_t case_id) {

@@ -76,6 +76,10 @@ struct StoredDentalRegistration {
 std::optional<StoredDentalRegistration> current_dental_registration(const Archive& archive, int64_t case_id,
                                                                     DentalArch arch);
 
+// The jaw's augmented dentition (casework/augmented_model.h) made with the arch's current
+// registration, if there is one: the CT's teeth with the scanned crowns, LPS mm, closed.
+std::optional<TriangleMesh> current_augmented_dentition(const Archive& archive, int64_t case_id, DentalArch arch);
+
 // Everything the report shows of a case's dental scans: each arch's newest scan, its current
 // registration and the picture of its fit (object file), when there are.
 struct CaseDentalArch {
