@@ -309,30 +309,32 @@ CtTeeth ct_teeth_surfaces(const Volume& hu, const CaseTissues& tissues) {
           extract_region_surface(ct, jaws, {lower, lower}, teeth_hu, options)};
 }
 
-CaseDentalRegistration register_case_dental_scans(Archive& archive, int64_t case_id, const CaseTissues* tissues) {
+DentalRegistrationJob prepare_dental_registration(Archive& archive, int64_t case_id, const CaseTissues* tissues) {
+  DentalRegistrationJob job;
+  job.case_id = case_id;
+  job.given_tissues = tissues;
   std::vector<records::StoredDentalScan> scans;
   for (DentalArch arch : records::kBothArches)
     if (auto scan = records::latest_dental_scan(archive, case_id, arch)) scans.push_back(*scan);
   if (scans.empty())
     throw Error(ErrorCode::kNotFound, "case " + std::to_string(case_id),
                 "it has no dental scans: import them first with `maxillo dental import`");
-  const LandmarkSet landmarks = records::latest_landmarks(archive, case_id);
-  if (landmarks.empty())
+  job.landmarks = records::latest_landmarks(archive, case_id);
+  if (job.landmarks.empty())
     throw Error(ErrorCode::kNotFound, "case " + std::to_string(case_id),
                 "it has no landmarks to tell the CT's upper teeth from the lower: find them first with `maxillo "
                 "landmarks detect` (--store)");
-  const int64_t series = records::primary_series(archive.case_contents(case_id));
-  const std::string ct_hash = records::series_content_hash(archive, series);
+  job.series = records::primary_series(archive.case_contents(case_id));
+  job.ct_hash = records::series_content_hash(archive, job.series);
   const auto artefacts = archive.artefacts(case_id);
 
   // The fits stored already under the same inputs; the CT is read and traced only for the others.
-  CaseDentalRegistration result;
-  std::vector<const records::StoredDentalScan*> to_register;
   for (const records::StoredDentalScan& stored : scans) {
-    const std::string key = registration_key(stored, ct_hash, landmarks);
+    const std::string key = registration_key(stored, job.ct_hash, job.landmarks);
     const ArtefactRecord* done = records::newest_with_key(artefacts, ArtefactKind::kDentalRegistration, key);
     if (!done) {
-      to_register.push_back(&stored);
+      job.to_register.push_back(stored);
+      job.scans.push_back(records::load_dental_scan(archive, stored));
       continue;
     }
     ArchRegistrationOutcome outcome;
@@ -348,56 +350,68 @@ CaseDentalRegistration register_case_dental_scans(Archive& archive, int64_t case
     outcome.placed = transformed(records::load_dental_scan(archive, stored), outcome.record.scan_to_ct);
     if (const ArtefactRecord* augmented = records::newest_with_key(artefacts, ArtefactKind::kAugmentedDentition, key))
       outcome.augmented = records::load_mesh_artefact(archive, *augmented);
-    result.arches.push_back(std::move(outcome));
+    job.result.arches.push_back(std::move(outcome));
   }
-  if (to_register.empty()) return result;
+  if (!job.to_register.empty()) job.ct = records::load_archived_series(archive, job.series);
+  return job;
+}
 
-  const Volume scan_volume = records::load_archived_series(archive, series);
-  const std::optional<Volume> converted = in_hounsfield_units(scan_volume);  // a cone-beam scan's grey values as HU
-  const Volume& ct = converted ? *converted : scan_volume;
-  const CaseTissues segmented = tissues ? CaseTissues{} : segment_case_tissues(scan_volume, landmarks);
-  const CaseTissues& jaws = tissues ? *tissues : segmented;
-  const CtTeeth teeth = ct_teeth_surfaces(ct, jaws);
-  const AnatomicalFrame frame = anatomical_frame(landmarks);
-  std::vector<Error> failures;
-  // Each arch's registration and augmented dentition touch no archive: the arches run at once.
-  std::vector<TriangleMesh> loaded;
-  for (const records::StoredDentalScan* stored : to_register)
-    loaded.push_back(records::load_dental_scan(archive, *stored));
-  std::vector<ArchRegistrationOutcome> computed(to_register.size());
-  std::vector<std::optional<Error>> failed(to_register.size());
+void compute_dental_registration(DentalRegistrationJob& job) {
+  if (job.to_register.empty()) return;
+  // Segmented before the conversion to HU, as every case is (case_tissues.h converts inside).
+  if (!job.given_tissues) job.segmented = segment_case_tissues(job.ct, job.landmarks);
+  const CaseTissues& jaws = job.given_tissues ? *job.given_tissues : job.segmented;
+  if (std::optional<Volume> converted = in_hounsfield_units(job.ct))  // a cone-beam scan's grey values as HU
+    job.ct = std::move(*converted);
+  job.teeth = ct_teeth_surfaces(job.ct, jaws);
+  // Each arch's registration and augmented dentition touch nothing shared: the arches run at once.
+  job.computed.assign(job.to_register.size(), {});
+  job.failed.assign(job.to_register.size(), std::nullopt);
   std::vector<std::function<void()>> tasks;
-  for (size_t a = 0; a < to_register.size(); ++a)
-    tasks.push_back([&, a] {
+  for (size_t a = 0; a < job.to_register.size(); ++a)
+    tasks.push_back([&job, &jaws, a] {
       try {
-        computed[a] = register_and_augment(*to_register[a], loaded[a], teeth, landmarks, series, ct, jaws);
+        job.computed[a] =
+            register_and_augment(job.to_register[a], job.scans[a], job.teeth, job.landmarks, job.series, job.ct, jaws);
       } catch (const Error& e) {
-        failed[a] = e;
+        job.failed[a] = e;
       }
     });
   run_concurrently(tasks);
-  for (size_t a = 0; a < to_register.size(); ++a) {
-    if (failed[a]) {
-      failures.push_back(*failed[a]);
+}
+
+CaseDentalRegistration store_dental_registration(Archive& archive, DentalRegistrationJob& job) {
+  CaseDentalRegistration result = std::move(job.result);
+  const AnatomicalFrame frame = anatomical_frame(job.landmarks);
+  std::optional<Error> failure;
+  for (size_t a = 0; a < job.computed.size(); ++a) {
+    if (job.failed[a]) {
+      if (!failure) failure = job.failed[a];
       continue;
     }
-    ArchRegistrationOutcome& outcome = computed[a];
+    ArchRegistrationOutcome& outcome = job.computed[a];
     const DentalArch arch = outcome.scan.arch;
-    const std::string key = registration_key(outcome.scan, ct_hash, landmarks);
+    const std::string key = registration_key(outcome.scan, job.ct_hash, job.landmarks);
     TemporaryFolder scratch("maxillo-dental");
     const auto png = scratch / (records::fit_picture_name(arch) + ".png");
-    render_fit(outcome.placed, teeth.of(arch), arch, frame, png);
-    records::store_picture(archive, case_id, ArtefactKind::kDentalRender, key, png);
-    records::store_mesh_artefact(archive, case_id, kind_name(ArtefactKind::kAugmentedDentition), key,
+    render_fit(outcome.placed, job.teeth.of(arch), arch, frame, png);
+    records::store_picture(archive, job.case_id, ArtefactKind::kDentalRender, key, png);
+    records::store_mesh_artefact(archive, job.case_id, kind_name(ArtefactKind::kAugmentedDentition), key,
                                  Json{{"arch", name_of(arch)}}, outcome.augmented);
-    records::store_dental_registration(archive, case_id, outcome.record, key);  // last: it marks a complete set
+    records::store_dental_registration(archive, job.case_id, outcome.record, key);  // last: it marks a complete set
     result.arches.push_back(std::move(outcome));
   }
   std::sort(result.arches.begin(), result.arches.end(),
             [](const auto& a, const auto& b) { return a.scan.arch < b.scan.arch; });  // upper first
-  store_augmented_pictures(archive, case_id, result, frame);
-  if (!failures.empty()) throw failures.front();
+  if (!job.computed.empty()) store_augmented_pictures(archive, job.case_id, result, frame);
+  if (failure) throw *failure;
   return result;
+}
+
+CaseDentalRegistration register_case_dental_scans(Archive& archive, int64_t case_id, const CaseTissues* tissues) {
+  DentalRegistrationJob job = prepare_dental_registration(archive, case_id, tissues);
+  compute_dental_registration(job);
+  return store_dental_registration(archive, job);
 }
 
 }  // namespace maxillo::casework

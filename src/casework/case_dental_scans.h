@@ -18,6 +18,9 @@
 
 #include "archive/archive.h"
 #include "casework/case_tissues.h"
+#include "ceph/landmark.h"
+#include "core/error.h"
+#include "core/volume.h"
 #include "core/triangle_mesh.h"
 #include "records/dental_scans.h"
 
@@ -67,5 +70,29 @@ struct CaseDentalRegistration {
 // swapped). An arch that fails stores nothing; the other arch's fit is stored before the error.
 CaseDentalRegistration register_case_dental_scans(Archive& archive, int64_t case_id,
                                                   const CaseTissues* tissues = nullptr);
+
+// register_case_dental_scans in its three steps, for a caller that runs the work beside other
+// work (the demo beside the face prediction): prepare reads the archive (the scans, the stored
+// fits, the CT), compute touches nothing but the job (any thread; no archive, no rendering),
+// store renders the pictures and writes. The job holds what passes between them.
+struct DentalRegistrationJob {
+  int64_t case_id = 0, series = 0;
+  std::string ct_hash;
+  LandmarkSet landmarks;
+  CaseDentalRegistration result;  // the reused arches (prepare), then all (store)
+  std::vector<records::StoredDentalScan> to_register;
+  std::vector<TriangleMesh> scans;  // of to_register, in their scanners' frames
+  Volume ct;                        // in HU, when an arch is to be registered
+  const CaseTissues* given_tissues = nullptr;
+  CaseTissues segmented;                          // compute's, when no tissues were given
+  CtTeeth teeth;                                  // compute's
+  std::vector<ArchRegistrationOutcome> computed;  // compute's, one per to_register
+  std::vector<std::optional<Error>> failed;       // compute's
+};
+DentalRegistrationJob prepare_dental_registration(Archive& archive, int64_t case_id,
+                                                  const CaseTissues* tissues = nullptr);
+void compute_dental_registration(DentalRegistrationJob& job);
+// Throws the first arch's failure after storing the others.
+CaseDentalRegistration store_dental_registration(Archive& archive, DentalRegistrationJob& job);
 
 }  // namespace maxillo::casework

@@ -142,24 +142,30 @@ Json run_demo(const DemoOptions& options) {
   casework::import_dental_scans(archive, case_id,
                                 {{records::DentalArch::kUpper, sample.dental_folder / "upper.stl"},
                                  {records::DentalArch::kLower, sample.dental_folder / "lower.stl"}});
-  const auto dental = casework::register_case_dental_scans(archive, case_id, &plan.tissues);
-  clock.mark("dental scans placed into the CT");
-  // The occlusion and its splint on the augmented model (the scanned crowns on the CT's roots),
-  // in the CT's frame: what the teeth meet with are the crowns the scans show.
-  archive_phantom_occlusion(archive, case_id, compute_phantom_occlusion(augmented_arches(dental)), sample.landmarks,
-                            options.out / "occlusion");
-  clock.mark("occlusion on the augmented model, written and archived");
+  auto dental_job = casework::prepare_dental_registration(archive, case_id, &plan.tissues);
   // The face for the planned move (issue #3): the plan's maxillary move, mass tensor model. The
   // face's tet model is built once here and serves the synthetic post-operative CT and the
-  // validation too.
+  // validation too. Beside the prediction, which holds the archive, the scans' registration and
+  // the augmented model are computed, and the occlusion and its splint on the augmented jaws (the
+  // scanned crowns on the CT's roots, in the CT's frame: what the teeth meet with are the crowns
+  // the scans show); they are stored after.
   const auto planned = casework::load_planned_case(archive, case_id, &plan.tissues);
   casework::SimulationRequest simulation;
   simulation.plan = plan.plan.plan;
   simulation.out = options.out / "soft-tissue";
   simulation.uncertainty = true;
   simulation.face_model = planned.face_model(simulation.options);
-  auto predicted = casework::simulate_case(archive, case_id, simulation, &plan.tissues);
-  clock.mark("soft tissue");
+  std::optional<casework::SimulationResult> predicted;
+  casework::OcclusionRun occlusion;
+  run_concurrently({[&] { predicted = casework::simulate_case(archive, case_id, simulation, &plan.tissues); },
+                    [&] {
+                      casework::compute_dental_registration(dental_job);
+                      occlusion = compute_phantom_occlusion(augmented_arches(dental_job));
+                    }});
+  clock.mark("soft tissue; beside it the dental scans placed and occluded");
+  const auto dental = casework::store_dental_registration(archive, dental_job);
+  archive_phantom_occlusion(archive, case_id, std::move(occlusion), sample.landmarks, options.out / "occlusion");
+  clock.mark("dental scans and occlusion stored");
   // Validation (issue #7): a synthetic post-operative CT with a known error, registered, the
   // bone moves found by ICP, the face predicted for them and compared; then the nightly summary.
   auto postop = casework::make_synthetic_postop_case(archive, case_id, {}, options.out / "postop", true, "", &planned);
@@ -220,7 +226,7 @@ Json run_demo(const DemoOptions& options) {
                {"cohort_pages", cohort_pages},
                {"plan_result", plan.result_json.string()},
                {"plan_feasible", plan.result.feasible},
-               {"soft_tissue_max_displacement_mm", predicted.views.max_displacement_mm},
+               {"soft_tissue_max_displacement_mm", predicted->views.max_displacement_mm},
                {"validation", validation.summary},
                {"validation_truth", postop.truth},
                {"nightly_summary", nightly_run.summary_pdf.string()},

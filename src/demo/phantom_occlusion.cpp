@@ -33,6 +33,13 @@ PhantomArches augmented_arches(const casework::CaseDentalRegistration& dental) {
   return arches;
 }
 
+PhantomArches augmented_arches(const casework::DentalRegistrationJob& job) {
+  casework::CaseDentalRegistration computed = job.result;
+  for (size_t a = 0; a < job.computed.size(); ++a)
+    if (!job.failed[a]) computed.arches.push_back(job.computed[a]);
+  return augmented_arches(computed);
+}
+
 Eigen::Isometry3d phantom_start_pose(const TriangleMesh& upper) {
   const Eigen::Vector3d centre = upper.vertices.colwise().mean().transpose();
   Eigen::Isometry3d start = Eigen::Isometry3d::Identity();

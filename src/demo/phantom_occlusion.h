@@ -22,6 +22,8 @@ struct PhantomArches {
 // The augmented model's two jaws (casework/augmented_model.h), in the CT's frame. Error naming
 // the missing jaw when the registration did not make both.
 PhantomArches augmented_arches(const casework::CaseDentalRegistration& dental);
+// The same from a computed registration job (casework::compute_dental_registration), before it is stored.
+PhantomArches augmented_arches(const casework::DentalRegistrationJob& job);
 
 // The displaced start of the demo: 2 degrees about an oblique axis through the upper arch's
 // centroid and (0.8, -1.0, 1.5) mm. Deterministic.
