@@ -14,9 +14,10 @@ set(maxillo_allowed_links_validation core geometry)
 set(maxillo_allowed_links_dental core geometry validation)
 set(maxillo_allowed_links_planning core geometry ceph)
 set(maxillo_allowed_links_sample core geometry ceph)
-set(maxillo_allowed_links_archive core geometry ceph)
-set(maxillo_allowed_links_net core geometry ceph archive)
-set(maxillo_allowed_links_imaging core geometry ceph archive)
+set(maxillo_allowed_links_dicom core)
+set(maxillo_allowed_links_archive core geometry ceph dicom)
+set(maxillo_allowed_links_net core geometry ceph dicom archive)
+set(maxillo_allowed_links_imaging core geometry ceph dicom)
 set(maxillo_allowed_links_landmarking core geometry ceph archive imaging)
 set(maxillo_allowed_links_mesh core geometry)
 set(maxillo_allowed_links_render core geometry)
@@ -24,8 +25,8 @@ set(maxillo_allowed_links_report core)
 set(maxillo_allowed_links_tetmesh core geometry softtissue)
 # The workflows above the toolkits: the stored records, the casework shared by the three jobs,
 # the report sections, then the jobs themselves, the benchmarks and the demo.
-set(maxillo_below_records core geometry ceph occlusion softtissue validation dental planning sample archive net imaging landmarking mesh
-                          render report tetmesh)
+set(maxillo_below_records core geometry ceph occlusion softtissue validation dental planning sample dicom archive net imaging
+                          landmarking mesh render report tetmesh)
 set(maxillo_allowed_links_records core geometry ceph archive imaging landmarking mesh occlusion planning softtissue validation)
 set(maxillo_allowed_links_casework ${maxillo_below_records} records)
 set(maxillo_allowed_links_sections ${maxillo_allowed_links_casework} casework)
@@ -78,7 +79,7 @@ function(maxillo_link_closure target out_var)
 endfunction()
 
 function(maxillo_check_module_layers)
-  foreach(module IN ITEMS core geometry ceph occlusion softtissue validation dental planning sample archive net
+  foreach(module IN ITEMS core geometry ceph occlusion softtissue validation dental planning sample dicom archive net
                           imaging landmarking mesh render report tetmesh records casework sections consultation followup
                           nightly bench demo)
     if(NOT TARGET maxillo_${module})

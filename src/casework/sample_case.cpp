@@ -4,11 +4,11 @@
 
 #include <cstdio>
 
-#include "archive/dicom_uid.h"
 #include "ceph/landmark_io.h"
 #include "core/error.h"
 #include "core/log.h"
 #include "core/progress.h"
+#include "dicom/dicom_uid.h"
 #include "sample/phantom_variation.h"
 
 namespace maxillo::casework {

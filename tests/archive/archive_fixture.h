@@ -6,7 +6,7 @@
 #include <string>
 
 #include "archive/archive.h"
-#include "archive/dicom_series_writer.h"
+#include "dicom/dicom_series_writer.h"
 #include "support/temporary_folder.h"
 #include "support/test_archive.h"
 

@@ -8,10 +8,10 @@
 #include <span>
 
 #include "archive/archive.h"
-#include "archive/dicom_deidentify.h"
-#include "archive/dicom_encapsulated_pdf.h"
-#include "archive/dicom_slice_reader.h"
 #include "archive_fixture.h"
+#include "dicom/dicom_deidentify.h"
+#include "dicom/dicom_encapsulated_pdf.h"
+#include "dicom/dicom_slice_reader.h"
 
 namespace maxillo {
 namespace {

@@ -7,12 +7,12 @@
 #include <chrono>
 
 #include "archive/archive.h"
-#include "archive/dicom_header.h"
-#include "archive/dicom_slice_reader.h"
-#include "archive/dicom_structure.h"
 #include "archive_fixture.h"
 #include "core/atomic_file.h"
 #include "core/utf8.h"
+#include "dicom/dicom_header.h"
+#include "dicom/dicom_slice_reader.h"
+#include "dicom/dicom_structure.h"
 #include "support/bad_dicom_files.h"
 
 namespace maxillo {

@@ -11,11 +11,11 @@
 #include <dcmtk/dcmdata/dcfilefo.h>
 
 #include "archive/archive.h"
-#include "archive/dicom_header.h"
-#include "archive/dicom_slice_reader.h"
-#include "archive/dicom_uid.h"
 #include "archive_fixture.h"
 #include "core/atomic_file.h"
+#include "dicom/dicom_header.h"
+#include "dicom/dicom_slice_reader.h"
+#include "dicom/dicom_uid.h"
 #include "support/run_command.h"
 
 namespace maxillo {

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "archive/dicom_slice_reader.h"
 #include "core/volume.h"
+#include "dicom/dicom_slice_reader.h"
 
 namespace maxillo::testing {
 
