@@ -17,7 +17,7 @@
 #include <set>
 
 #include "core/error.h"
-#include "archive_fixture.h"
+#include "dicom/dicom_fixture.h"
 #include "support/temporary_folder.h"
 
 namespace maxillo {

@@ -18,9 +18,9 @@
 #include "core/error.h"
 #include "dicom/dicom_series_writer.h"
 #include "support/bad_dicom_files.h"
+#include "support/oblique_axes.h"
 #include "support/run_command.h"
 #include "support/temporary_folder.h"
-#include "synthetic_slices.h"
 
 namespace maxillo {
 namespace {
