@@ -3,7 +3,10 @@
 # Each module may link only the maxillo modules its row allows (a module links nothing above
 # it), and the numerical modules may not reach a toolkit through any link, direct or inherited:
 # they build and test with Eigen, nlohmann-json, OpenSSL (core's SHA-256), OpenMP and CHOLMOD
-# only. A violation stops the configuration with the module and the offending link named.
+# only. DCMTK is linked by dicom and net alone, and dicom and imaging reach neither index engine
+# (SQLite, libpq) through any link (issue 33; scripts/check-dicom-apart checks the sources and
+# the programs' link lines). A violation stops the configuration with the module and the
+# offending link named.
 
 set(maxillo_allowed_links_core "")
 set(maxillo_allowed_links_geometry core)
@@ -14,9 +17,10 @@ set(maxillo_allowed_links_validation core geometry)
 set(maxillo_allowed_links_dental core geometry validation)
 set(maxillo_allowed_links_planning core geometry ceph)
 set(maxillo_allowed_links_sample core geometry ceph)
-set(maxillo_allowed_links_archive core geometry ceph)
-set(maxillo_allowed_links_net core geometry ceph archive)
-set(maxillo_allowed_links_imaging core geometry ceph archive)
+set(maxillo_allowed_links_dicom core)
+set(maxillo_allowed_links_archive core geometry ceph dicom)
+set(maxillo_allowed_links_net core geometry ceph dicom archive)
+set(maxillo_allowed_links_imaging core geometry ceph dicom)
 set(maxillo_allowed_links_landmarking core geometry ceph archive imaging)
 set(maxillo_allowed_links_mesh core geometry)
 set(maxillo_allowed_links_render core geometry)
@@ -24,8 +28,8 @@ set(maxillo_allowed_links_report core)
 set(maxillo_allowed_links_tetmesh core geometry softtissue)
 # The workflows above the toolkits: the stored records, the casework shared by the three jobs,
 # the report sections, then the jobs themselves, the benchmarks and the demo.
-set(maxillo_below_records core geometry ceph occlusion softtissue validation dental planning sample archive net imaging landmarking mesh
-                          render report tetmesh)
+set(maxillo_below_records core geometry ceph occlusion softtissue validation dental planning sample dicom archive net imaging
+                          landmarking mesh render report tetmesh)
 set(maxillo_allowed_links_records core geometry ceph archive imaging landmarking mesh occlusion planning softtissue validation)
 set(maxillo_allowed_links_casework ${maxillo_below_records} records)
 set(maxillo_allowed_links_sections ${maxillo_allowed_links_casework} casework)
@@ -38,6 +42,10 @@ set(maxillo_allowed_links_demo ${maxillo_allowed_links_sections} sections consul
 set(maxillo_numerical_modules core geometry ceph occlusion softtissue validation dental planning)
 # Anything whose name matches is a toolkit the numerical modules must not link.
 set(maxillo_toolkit_pattern "VTK|vtk|ITK|itk|OSMesa|OSMESA|CGAL|DCMTK|hpdf|SQLite|PostgreSQL|CURL")
+# Issue 33: DCMTK is linked by the file codec and the network node alone, and the modules that
+# read DICOM files without the archive reach neither index engine through any link.
+set(maxillo_dcmtk_modules dicom net)
+set(maxillo_index_free_modules dicom imaging)
 
 # Every link item of `target`, followed through maxillo targets (both the libraries it links
 # and those it passes on), generator expressions such as $<LINK_ONLY:x> unwrapped.
@@ -77,8 +85,20 @@ function(maxillo_link_closure target out_var)
   set(${out_var} ${items} PARENT_SCOPE)
 endfunction()
 
+# The first link item of `target`'s closure whose name matches `pattern`, or "" when none does.
+function(maxillo_reached_link target pattern out_var)
+  maxillo_link_closure(${target} closure)
+  foreach(link IN LISTS closure)
+    if(link MATCHES "${pattern}")
+      set(${out_var} ${link} PARENT_SCOPE)
+      return()
+    endif()
+  endforeach()
+  set(${out_var} "" PARENT_SCOPE)
+endfunction()
+
 function(maxillo_check_module_layers)
-  foreach(module IN ITEMS core geometry ceph occlusion softtissue validation dental planning sample archive net
+  foreach(module IN ITEMS core geometry ceph occlusion softtissue validation dental planning sample dicom archive net
                           imaging landmarking mesh render report tetmesh records casework sections consultation followup
                           nightly bench demo)
     if(NOT TARGET maxillo_${module})
@@ -95,16 +115,24 @@ function(maxillo_check_module_layers)
           message(FATAL_ERROR "ModuleLayers: maxillo_${module} links maxillo_${other}, which its row in "
                               "docs/ARCHITECTURE.md does not allow (allowed: ${maxillo_allowed_links_${module}})")
         endif()
+      elseif(link MATCHES "DCMTK" AND NOT module IN_LIST maxillo_dcmtk_modules)
+        message(FATAL_ERROR "ModuleLayers: maxillo_${module} links '${link}'; DCMTK belongs to the dicom "
+                            "and net modules alone: read and write DICOM files through maxillo_dicom")
       endif()
     endforeach()
   endforeach()
+  foreach(module IN LISTS maxillo_index_free_modules)
+    maxillo_reached_link(maxillo_${module} "SQLite|PostgreSQL" link)
+    if(link)
+      message(FATAL_ERROR "ModuleLayers: maxillo_${module} reaches the index engine '${link}'; it reads "
+                          "DICOM files through maxillo_dicom and may not link the archive or its engines")
+    endif()
+  endforeach()
   foreach(module IN LISTS maxillo_numerical_modules)
-    maxillo_link_closure(maxillo_${module} closure)
-    foreach(link IN LISTS closure)
-      if(link MATCHES "${maxillo_toolkit_pattern}")
-        message(FATAL_ERROR "ModuleLayers: the numerical module maxillo_${module} reaches the toolkit "
-                            "'${link}'; it must build and link without VTK, ITK, OSMesa or the other toolkits")
-      endif()
-    endforeach()
+    maxillo_reached_link(maxillo_${module} "${maxillo_toolkit_pattern}" link)
+    if(link)
+      message(FATAL_ERROR "ModuleLayers: the numerical module maxillo_${module} reaches the toolkit "
+                          "'${link}'; it must build and link without VTK, ITK, OSMesa or the other toolkits")
+    endif()
   endforeach()
 endfunction()

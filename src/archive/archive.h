@@ -311,7 +311,7 @@ class Archive {
   size_t purge_quarantine();
   // Writes the series' files into out_dir (created), named <instance number>_<SOP UID>.dcm:
   // Original = the archived bytes; Deidentified = copies without identifying attributes, with
-  // pseudonyms and new UIDs (archive/dicom_deidentify.h) keyed by deidentification_secret().
+  // pseudonyms and new UIDs (dicom/dicom_deidentify.h) keyed by deidentification_secret().
   // Returns the written paths in instance order. Throws Error(NotFound / WriteFailed / ArchiveCorrupt).
   std::vector<std::filesystem::path> export_series(int64_t series, const std::filesystem::path& out_dir,
                                                    ExportProfile profile = ExportProfile::Original) const;

@@ -8,10 +8,10 @@
 #include <random>
 
 #include "archive/archive_state.h"
-#include "archive/dicom_deidentify.h"
 #include "core/atomic_file.h"
 #include "core/log.h"
 #include "core/sha256.h"
+#include "dicom/dicom_deidentify.h"
 
 namespace maxillo {
 namespace {

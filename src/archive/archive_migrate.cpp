@@ -1,7 +1,6 @@
 // Archive::migrate: an embedded archive copied into another archive (a PostgreSQL index with
 // its shared object folder) by copying the objects and replaying the index journal.
 #include "archive/archive_health.h"
-#include "archive/dicom_header.h"
 #include "archive/archive_state.h"
 #include "archive/index_comparison.h"
 #include "archive/journal_replay.h"
@@ -9,6 +8,7 @@
 #include "core/atomic_file.h"
 #include "core/log.h"
 #include "core/sha256.h"
+#include "dicom/dicom_header.h"
 
 namespace maxillo {
 namespace {

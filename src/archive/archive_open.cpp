@@ -14,10 +14,10 @@
 #include "archive/archive_state.h"
 #include "archive/journal_replay.h"
 #include "archive/journalled_transaction.h"
-#include "archive/dicom_header.h"
 #include "archive/postgres.h"
 #include "core/log.h"
 #include "core/resources.h"
+#include "dicom/dicom_header.h"
 
 namespace maxillo {
 namespace {

@@ -7,27 +7,9 @@
 #include <string_view>
 #include <vector>
 
+#include "dicom/patient_study_records.h"  // PatientRecord, StudyRecord
+
 namespace maxillo {
-
-struct PatientRecord {
-  int64_t id = 0;
-  std::string patient_id;  // protected health information: log at debug level only
-  std::string name;        // DICOM person name, UTF-8
-  std::string birth_date;  // YYYYMMDD or empty
-  std::string sex;
-  int64_t study_count = 0;
-};
-
-struct StudyRecord {
-  int64_t id = 0;
-  int64_t patient = 0;
-  std::string study_uid;
-  std::string date;  // YYYYMMDD
-  std::string time;
-  std::string description;
-  std::string accession;
-  int64_t series_count = 0;
-};
 
 struct SeriesRecord {
   int64_t id = 0;

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "archive/archive_location.h"
-#include "archive/dicom_header.h"
 #include "core/error.h"
+#include "dicom/dicom_header.h"
 
 namespace maxillo {
 

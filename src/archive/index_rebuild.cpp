@@ -2,14 +2,14 @@
 // (the journal and the objects), built beside the old one and swapped in only when complete.
 #include "archive/archive_health.h"
 #include "archive/archive_state.h"
-#include "archive/dicom_header.h"
-#include "archive/object_adoption.h"
 #include "archive/journal_replay.h"
 #include "archive/journalled_transaction.h"
+#include "archive/object_adoption.h"
 #include "core/atomic_file.h"
 #include "core/log.h"
 #include "core/sha256.h"
 #include "core/utc_time.h"
+#include "dicom/dicom_header.h"
 
 namespace maxillo {
 namespace {

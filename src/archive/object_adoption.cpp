@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <optional>
 
-#include "archive/dicom_header.h"
 #include "archive/import_batch.h"
 #include "core/atomic_file.h"
 #include "core/sha256.h"
+#include "dicom/dicom_header.h"
 
 namespace maxillo {
 namespace {

@@ -6,11 +6,11 @@
 #include <vector>
 
 #include "archive/archive.h"
-#include "archive/dicom_series_writer.h"
 #include "bench/formatted.h"
 #include "bench/scratch_archive.h"
 #include "bench/timing.h"
 #include "core/error.h"
+#include "dicom/dicom_series_writer.h"
 
 namespace maxillo::bench {
 namespace {

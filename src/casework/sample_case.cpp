@@ -4,13 +4,13 @@
 
 #include <cstdio>
 
-#include "archive/dicom_uid.h"
 #include "ceph/landmark_io.h"
 #include "casework/phantom_dental_scans.h"
 #include "core/error.h"
 #include "core/parallel_slabs.h"
 #include "core/log.h"
 #include "core/progress.h"
+#include "dicom/dicom_uid.h"
 #include "sample/phantom_variation.h"
 
 namespace maxillo::casework {

@@ -3,8 +3,8 @@
 // analytic landmarks, ready to be imported like a patient's scan.
 #include <filesystem>
 
-#include "archive/dicom_series_writer.h"
 #include "ceph/landmark.h"
+#include "dicom/dicom_series_writer.h"
 #include "sample/phantom.h"
 
 namespace maxillo::casework {

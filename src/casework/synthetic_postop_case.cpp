@@ -1,13 +1,13 @@
 #include "casework/synthetic_postop_case.h"
 
-#include "archive/dicom_series_writer.h"
-#include "archive/dicom_uid.h"
+#include "casework/case_validation.h"
+#include "casework/validation_json.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "dicom/dicom_series_writer.h"
+#include "dicom/dicom_uid.h"
 #include "occlusion/occlusion_files.h"
-#include "casework/case_validation.h"
 #include "records/derivation.h"
-#include "casework/validation_json.h"
 #include "validation/region_statistics.h"
 
 namespace maxillo::casework {

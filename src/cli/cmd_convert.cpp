@@ -6,11 +6,11 @@
 
 #include <Eigen/LU>  // determinant()
 
-#include "archive/dicom_series_writer.h"
 #include "cli/command.h"
 #include "core/error.h"
 #include "core/json.h"
 #include "core/log.h"
+#include "dicom/dicom_series_writer.h"
 #include "imaging/head_orientation.h"
 #include "imaging/volume_file.h"
 

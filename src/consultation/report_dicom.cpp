@@ -1,9 +1,9 @@
 #include "consultation/report_dicom.h"
 
-#include "archive/dicom_encapsulated_pdf.h"
-#include "archive/dicom_uid.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "dicom/dicom_encapsulated_pdf.h"
+#include "dicom/dicom_uid.h"
 #include "records/derivation.h"
 
 namespace maxillo::consultation {

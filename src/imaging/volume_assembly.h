@@ -1,6 +1,6 @@
 #pragma once
 // DICOM slices of one series -> one Volume in Hounsfield units on a regular grid in patient LPS.
-// Pure C++/Eigen: no ITK, no DCMTK here (slices come from archive/dicom_slice_reader.h).
+// Pure C++/Eigen: no ITK, no DCMTK here (slices come from dicom/dicom_slice_reader.h).
 //
 // Geometry of the result (see core/volume.h):
 //   direction columns = (row direction, column direction, slice normal = row x column), so the
@@ -23,8 +23,8 @@
 #include <filesystem>
 #include <vector>
 
-#include "archive/dicom_slice_reader.h"
 #include "core/volume.h"
+#include "dicom/dicom_slice_reader.h"
 
 namespace maxillo {
 

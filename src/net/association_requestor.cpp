@@ -1,7 +1,7 @@
 #include "net/association_requestor.h"
 
-#include "archive/dicom_header.h"
 #include "core/error.h"
+#include "dicom/dicom_header.h"
 #include "net/no_nagle_delay.h"
 
 namespace maxillo::net {

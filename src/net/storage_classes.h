@@ -1,7 +1,7 @@
 #pragma once
 // What `maxillo serve` accepts over the network: the storage SOP classes a head CT, a cone-beam
 // CT, an MR or a report arrive in, each with the transfer syntaxes the archive's slice reader can
-// decode (archive/dicom_slice_reader.h). A peer proposing anything else is refused at association
+// decode (dicom/dicom_slice_reader.h). A peer proposing anything else is refused at association
 // negotiation for that presentation context, which DCMTK logs with the reason.
 #include <string>
 #include <vector>

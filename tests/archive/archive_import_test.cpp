@@ -6,6 +6,7 @@
 
 #include "archive/archive.h"
 #include "archive_fixture.h"
+#include "core/utf8.h"
 #include "support/bad_dicom_files.h"
 
 namespace maxillo {
@@ -14,6 +15,8 @@ namespace {
 using testing::TemporaryFolder;
 
 using testing::quiet;
+
+const std::filesystem::path kBadInputs = std::filesystem::path(MAXILLO_SOURCE_DIR) / "tests/data/bad-inputs";
 
 TEST(ArchiveImport, IndexesPatientStudySeriesAndInstances) {
   TemporaryFolder folder;
@@ -168,6 +171,32 @@ TEST(ArchiveImport, EveryBadInputIsNamedWithItsReasonWhileTheRestImports) {
   EXPECT_EQ(by_name["missing-folder"].code, ErrorCode::kFileNotFound);
   for (const auto& p : seen) EXPECT_FALSE(p.reason.empty());
   EXPECT_EQ(archive.series().size(), 1u);
+}
+
+// The files that broke the import (tests/data/bad-inputs, refused one by one by the structure
+// walk: tests/dicom/dicom_structure_test.cpp) among good ones: each refused, the rest imported.
+TEST(DicomStructure, OneBadFileNeverEndsTheBatch) {
+  TemporaryFolder folder;
+  testing::write_series(folder / "in" / "good", 3);
+  for (const auto& bad : std::filesystem::directory_iterator(kBadInputs))
+    if (bad.path().extension() == ".dcm") std::filesystem::copy_file(bad.path(), folder / "in" / bad.path().filename());
+  {  // 100 GiB of (sparse) nothing named like a DICOM file: refused unread, not std::bad_alloc
+    std::ofstream(folder / "in" / "huge.dcm").close();
+    std::filesystem::resize_file(folder / "in" / "huge.dcm", uintmax_t(100) << 30);
+  }
+  Archive archive = Archive::open(folder / "archive", OpenMode::CreateIfMissing);
+  ImportOptions options;
+  options.progress = ProgressDisplay::Never;
+  ImportReport report = archive.import_paths({folder / "in"}, options);
+  EXPECT_EQ(report.imported, 3u);
+  EXPECT_EQ(report.failed, 4u);
+  for (const auto& problem : report.problems) {
+    EXPECT_TRUE(is_valid_utf8(problem.reason)) << problem.reason;
+    if (problem.path.filename() == "huge.dcm") {
+      EXPECT_EQ(problem.code, ErrorCode::kBadValue);
+      EXPECT_NE(problem.reason.find("100.0 GiB"), std::string::npos) << problem.reason;
+    }
+  }
 }
 
 // Issue 29, fault 8: a folder holding only a symbolic link to a series imported nothing and

@@ -40,7 +40,7 @@ size_t files_below(const std::filesystem::path& folder) {
   return count;
 }
 
-ErrorCode open_error(const std::filesystem::path& archive) {
+ErrorCode open_error_pointing_to_rebuild(const std::filesystem::path& archive) {
   try {
     Archive::open(archive);
   } catch (const Error& e) {
@@ -102,12 +102,12 @@ TEST(IndexLoss, AMissingEmptyOrDamagedIndexIsRefusedAndNothingIsRecreated) {
   std::filesystem::copy_file(index_of(archive), folder / "original.sqlite");
 
   std::filesystem::remove(index_of(archive));
-  EXPECT_EQ(open_error(archive), ErrorCode::kIndexDamaged);
+  EXPECT_EQ(open_error_pointing_to_rebuild(archive), ErrorCode::kIndexDamaged);
   EXPECT_THROW(Archive::open(archive, OpenMode::CreateIfMissing), Error);  // not even to import
   EXPECT_FALSE(std::filesystem::exists(index_of(archive)));
 
   std::ofstream(index_of(archive)).close();  // truncated to 0 bytes
-  EXPECT_EQ(open_error(archive), ErrorCode::kIndexDamaged);
+  EXPECT_EQ(open_error_pointing_to_rebuild(archive), ErrorCode::kIndexDamaged);
 
   // 4 KiB of random bytes in the middle of the index.
   std::filesystem::copy_file(folder / "original.sqlite", index_of(archive),
@@ -121,7 +121,7 @@ TEST(IndexLoss, AMissingEmptyOrDamagedIndexIsRefusedAndNothingIsRecreated) {
     file.seekp(std::streamoff(size / 2 / 4096 * 4096));
     file.write(noise.data(), std::streamsize(noise.size()));
   }
-  EXPECT_EQ(open_error(archive), ErrorCode::kIndexDamaged);
+  EXPECT_EQ(open_error_pointing_to_rebuild(archive), ErrorCode::kIndexDamaged);
   EXPECT_EQ(files_below(archive / "objects"), objects);  // nothing touched
 }
 
@@ -196,7 +196,7 @@ std::filesystem::path archive_with_old_index(const TemporaryFolder& folder, int 
 TEST(IndexLoss, AnIndexOneCommitBehindItsJournalIsRefusedAndRebuilt) {
   TemporaryFolder folder;
   auto path = archive_with_old_index(folder, 1);
-  EXPECT_EQ(open_error(path), ErrorCode::kIndexDamaged);
+  EXPECT_EQ(open_error_pointing_to_rebuild(path), ErrorCode::kIndexDamaged);
   Archive::rebuild_index(path, quiet_rebuild());
   expect_same_tables(folder / "newest.sqlite", index_of(path));
 }
@@ -267,7 +267,7 @@ TEST(IndexLoss, AWriterThatWaitedForARebuildWritesIntoTheRebuiltIndex) {
 TEST(IndexLoss, AnIndexTwoCommitsBehindItsJournalIsRefusedAndRebuilt) {
   TemporaryFolder folder;
   auto path = archive_with_old_index(folder, 2);
-  EXPECT_EQ(open_error(path), ErrorCode::kIndexDamaged);
+  EXPECT_EQ(open_error_pointing_to_rebuild(path), ErrorCode::kIndexDamaged);
   Archive::rebuild_index(path, quiet_rebuild());
   expect_same_tables(folder / "newest.sqlite", index_of(path));
 }

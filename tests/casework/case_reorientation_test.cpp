@@ -4,12 +4,12 @@
 // original series stays; the landmarks are mapped back onto the anatomy they were placed on.
 #include <gtest/gtest.h>
 
-#include "archive/dicom_series_writer.h"
 #include "archive_fixture.h"
 #include "casework/case_orientation.h"
 #include "casework/case_reorientation.h"
 #include "casework/sample_case.h"
 #include "core/error.h"
+#include "dicom/dicom_series_writer.h"
 #include "imaging/axis_flip.h"
 #include "imaging/volume_assembly.h"
 #include "records/archived_series.h"

@@ -4,12 +4,12 @@
 
 #include <string>
 
-#include "archive/dicom_header.h"
-#include "archive/dicom_slice_reader.h"
 #include "ceph/follow_up.h"
 #include "ceph/landmark_io.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "dicom/dicom_header.h"
+#include "dicom/dicom_slice_reader.h"
 #include "mesh/mesh_io.h"
 #include "planning/plan.h"
 

@@ -9,11 +9,11 @@
 #include <fstream>
 #include <iostream>
 
-#include "archive/dicom_series_writer.h"
+#include "dicom/dicom_series_writer.h"
+#include "geometry/mesh_measures.h"
 #include "imaging/segmentation.h"
 #include "imaging/volume_assembly.h"
 #include "imaging/volume_file.h"
-#include "geometry/mesh_measures.h"
 #include "mesh/surface_extraction.h"
 #include "support/run_command.h"
 #include "support/temporary_folder.h"

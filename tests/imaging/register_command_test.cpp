@@ -3,8 +3,8 @@
 // one's inverse (same tolerance as rigid_registration_test.cpp: 0.2 mm, a tenth of a voxel).
 #include <gtest/gtest.h>
 
-#include "archive/dicom_series_writer.h"
 #include "core/json.h"
+#include "dicom/dicom_series_writer.h"
 #include "imaging/synthetic_head.h"
 #include "imaging/volume_resample.h"
 #include "support/run_maxillo.h"

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <random>
 
-#include "archive/dicom_series_writer.h"
+#include "dicom/dicom_series_writer.h"
 #include "imaging/volume_assembly.h"
 #include "support/temporary_folder.h"
 #include "synthetic_slices.h"

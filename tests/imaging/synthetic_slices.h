@@ -6,8 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "archive/dicom_slice_reader.h"
 #include "core/volume.h"
+#include "dicom/dicom_slice_reader.h"
+#include "support/oblique_axes.h"
 
 namespace maxillo::testing {
 
@@ -45,12 +46,6 @@ inline std::vector<DicomSlice> make_stack(const std::vector<double>& along,
   for (size_t k = 0; k < along.size(); ++k)
     slices.push_back(make_slice("slice" + std::to_string(k) + ".dcm", start + axes.col(2) * along[k], along[k], axes));
   return slices;
-}
-
-inline Eigen::Matrix3d oblique_axes() {
-  return (Eigen::AngleAxisd(0.35, Eigen::Vector3d(1, 2, 3).normalized()) *
-          Eigen::AngleAxisd(-0.6, Eigen::Vector3d::UnitX()))
-      .toRotationMatrix();
 }
 
 }  // namespace maxillo::testing

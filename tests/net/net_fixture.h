@@ -17,7 +17,7 @@
 #include <string>
 #include <thread>
 
-#include "archive/dicom_series_writer.h"
+#include "dicom/dicom_series_writer.h"
 #include "support/run_command.h"
 
 namespace maxillo::testing {

@@ -8,8 +8,8 @@
 #include <fstream>
 
 #include "archive/archive.h"
-#include "archive/dicom_encapsulated_pdf.h"
 #include "core/json.h"
+#include "dicom/dicom_encapsulated_pdf.h"
 #include "net_fixture.h"
 #include "support/run_maxillo.h"
 #include "support/temporary_folder.h"

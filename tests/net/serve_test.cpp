@@ -19,14 +19,14 @@
 #include <thread>
 
 #include "archive/archive.h"
-#include "archive/dicom_encapsulated_pdf.h"
-#include "archive/dicom_header.h"
-#include "archive/dicom_series_writer.h"
 #include "core/atomic_file.h"
+#include "dicom/dicom_encapsulated_pdf.h"
+#include "dicom/dicom_header.h"
+#include "dicom/dicom_series_writer.h"
+#include "net_fixture.h"
 #include "support/run_command.h"
 #include "support/run_maxillo.h"
 #include "support/temporary_folder.h"
-#include "net_fixture.h"
 
 namespace maxillo {
 namespace {

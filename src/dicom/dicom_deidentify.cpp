@@ -1,12 +1,12 @@
-#include "archive/dicom_deidentify.h"
+#include "dicom/dicom_deidentify.h"
 
 #include <dcmtk/dcmdata/dctk.h>
 
-#include "archive/dicom_header.h"
-#include "archive/dicom_uid.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/sha256.h"
+#include "dicom/dicom_header.h"
+#include "dicom/dicom_uid.h"
 
 namespace maxillo {
 namespace {
@@ -58,7 +58,9 @@ const DcmTagKey kEmptied[] = {DCM_PatientBirthDate, DCM_ReferringPhysicianName, 
 const DcmTagKey kReplacedUids[] = {DCM_StudyInstanceUID, DCM_SeriesInstanceUID, DCM_SOPInstanceUID,
                                    DCM_FrameOfReferenceUID};
 
-std::string text_of(DcmItem& item, const DcmTagKey& tag) {
+// The value's bytes as stored, unrepaired (unlike dicom_header.cpp's text_of, which makes text
+// valid UTF-8 for the index): the originals keyed here are UIDs and the Patient ID.
+std::string raw_text_of(DcmItem& item, const DcmTagKey& tag) {
   OFString value;
   return item.findAndGetOFStringArray(tag, value).good() ? std::string(value.c_str()) : std::string();
 }
@@ -70,16 +72,16 @@ void remove_private_attributes(DcmDataset& dataset) {
 
 std::string replace_uids(DcmDataset& dataset, DcmMetaInfo& meta, std::string_view secret) {
   for (const auto& tag : kReplacedUids) {
-    std::string original = text_of(dataset, tag);
+    std::string original = raw_text_of(dataset, tag);
     if (!original.empty()) dataset.putAndInsertString(tag, pseudonymous_uid(secret, original).c_str());
   }
-  std::string sop = text_of(dataset, DCM_SOPInstanceUID);
+  std::string sop = raw_text_of(dataset, DCM_SOPInstanceUID);
   meta.putAndInsertString(DCM_MediaStorageSOPInstanceUID, sop.c_str());
   return sop;
 }
 
 void replace_identity(DcmDataset& dataset, std::string_view secret) {
-  std::string pseudonym = pseudonym_for(secret, text_of(dataset, DCM_PatientID));
+  std::string pseudonym = pseudonym_for(secret, raw_text_of(dataset, DCM_PatientID));
   dataset.putAndInsertString(DCM_PatientID, pseudonym.c_str());
   dataset.putAndInsertString(DCM_PatientName, pseudonym.c_str());
   for (const auto& tag : kRemoved) delete dataset.remove(tag);
@@ -98,9 +100,9 @@ void replace_identity(DcmDataset& dataset, std::string_view secret) {
 void refuse_identity_beyond_reach(DcmDataset& dataset, const std::filesystem::path& source) {
   if (dataset.tagExists(DCM_EncapsulatedDocument))
     throw Error(ErrorCode::kCannotDeidentify, source.string(),
-                "an encapsulated document (" + text_of(dataset, DCM_MIMETypeOfEncapsulatedDocument) +
+                "an encapsulated document (" + raw_text_of(dataset, DCM_MIMETypeOfEncapsulatedDocument) +
                     ") carries the patient's identity inside the document, where de-identification cannot reach it");
-  if (text_of(dataset, DCM_BurnedInAnnotation) == "YES")
+  if (raw_text_of(dataset, DCM_BurnedInAnnotation) == "YES")
     throw Error(ErrorCode::kCannotDeidentify, source.string(),
                 "Burned In Annotation is YES: the pixels carry text that de-identification does not remove");
 }

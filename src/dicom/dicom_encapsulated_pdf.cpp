@@ -1,4 +1,4 @@
-#include "archive/dicom_encapsulated_pdf.h"
+#include "dicom/dicom_encapsulated_pdf.h"
 
 #include <dcmtk/dcmdata/dctk.h>
 
@@ -7,20 +7,16 @@
 #include <cctype>
 #include <cstring>
 
-#include "archive/dicom_uid.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/sha256.h"
 #include "core/utc_time.h"
 #include "core/version.h"
+#include "dicom/dicom_uid.h"
+#include "dicom/put_attribute.h"
 
 namespace maxillo {
 namespace {
-
-void put(DcmDataset& dataset, const DcmTagKey& tag, const std::string& value) {
-  [[maybe_unused]] OFCondition status = dataset.putAndInsertString(tag, value.c_str());
-  assert(status.good() && "cannot insert a DICOM attribute");
-}
 
 // DICOM DA and TM of the document's own /CreationDate (D:YYYYMMDDHHmmSS), or empty (both are
 // type 2): never the clock, so the same PDF always gives the same file, as it gives the same SOP

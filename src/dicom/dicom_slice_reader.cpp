@@ -3,7 +3,7 @@
 // decoders (JPEG, JPEG-LS, RLE) for encapsulated syntaxes and copies native data otherwise; the
 // result is in host byte order with BitsAllocated bits per sample. Stored bits are then masked,
 // sign-extended when PixelRepresentation = 1, inverted for MONOCHROME1, and rescaled to HU.
-#include "archive/dicom_slice_reader.h"
+#include "dicom/dicom_slice_reader.h"
 
 #include <dcmtk/config/osconfig.h>
 #include <dcmtk/dcmdata/dccodec.h>
@@ -19,11 +19,11 @@
 #include <cstring>
 #include <limits>
 
-#include "archive/dicom_header.h"
-#include "archive/dicom_pixel_data.h"
-#include "archive/dicom_structure.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "dicom/dicom_header.h"
+#include "dicom/dicom_pixel_data.h"
+#include "dicom/dicom_structure.h"
 
 namespace maxillo {
 namespace {

@@ -1,4 +1,4 @@
-#include "archive/dicom_structure.h"
+#include "dicom/dicom_structure.h"
 
 #include <dcmtk/config/osconfig.h>
 #include <dcmtk/dcmdata/dctag.h>
@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "archive/dicom_uid.h"
 #include "core/error.h"
+#include "dicom/dicom_uid.h"
 
 namespace maxillo {
 namespace {

@@ -1,7 +1,7 @@
 #pragma once
 // The attributes the archive indexes, read from a DICOM Part 10 file held in memory.
-// This is the archive's bridge to DCMTK (with dicom_series_writer.cpp): the struct holds
-// plain strings and numbers, so nothing outside dicom_header.cpp sees DCMTK.
+// The import's bridge to DCMTK in the dicom module, the only module besides net that knows
+// DCMTK: the struct holds plain strings and numbers, so nothing outside dicom_header.cpp sees it.
 #include <cstddef>
 #include <filesystem>
 #include <optional>

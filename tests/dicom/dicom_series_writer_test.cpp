@@ -1,7 +1,7 @@
 // The CT series writer: files readable by dcmdump and DCMTK, geometry attributes that
 // reproduce the volume's LPS placement, UTF-8 names intact, and fast enough for samples.
-#include "archive/dicom_series_writer.h"
-#include "archive/dicom_uid.h"
+#include "dicom/dicom_series_writer.h"
+#include "dicom/dicom_uid.h"
 
 #include <dcmtk/config/osconfig.h>
 #include <dcmtk/dcmdata/dcdatset.h>
@@ -17,7 +17,7 @@
 #include <set>
 
 #include "core/error.h"
-#include "archive_fixture.h"
+#include "dicom/dicom_fixture.h"
 #include "support/temporary_folder.h"
 
 namespace maxillo {

@@ -1,4 +1,4 @@
-#include "archive/dicom_uid.h"
+#include "dicom/dicom_uid.h"
 
 #include "core/sha256.h"
 

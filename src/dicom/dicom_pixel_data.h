@@ -1,7 +1,7 @@
 #pragma once
 // How many bytes of pixels a DICOM data set really holds, native or encapsulated, shared by
 // the import's check (an image without its pixels is refused) and the slice reader (a frame is
-// allocated only for what is stored). Private to the archive module: it speaks DCMTK's types.
+// allocated only for what is stored). Private to the dicom module: it speaks DCMTK's types.
 #include <dcmtk/config/osconfig.h>
 #include <dcmtk/dcmdata/dcdatset.h>
 #include <dcmtk/dcmdata/dcpixel.h>

@@ -7,7 +7,7 @@
 #include <span>
 #include <string>
 
-#include "archive/archive_records.h"
+#include "dicom/patient_study_records.h"
 
 namespace maxillo {
 

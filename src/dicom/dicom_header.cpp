@@ -1,4 +1,4 @@
-#include "archive/dicom_header.h"
+#include "dicom/dicom_header.h"
 
 #include <dcmtk/config/osconfig.h>
 #include <dcmtk/dcmdata/dccodec.h>
@@ -18,11 +18,11 @@
 #include <cstring>
 #include <mutex>
 
-#include "archive/dicom_pixel_data.h"
-#include "archive/dicom_structure.h"
-#include "archive/dicom_uid.h"
 #include "core/error.h"
 #include "core/utf8.h"
+#include "dicom/dicom_pixel_data.h"
+#include "dicom/dicom_structure.h"
+#include "dicom/dicom_uid.h"
 
 namespace maxillo {
 namespace {

@@ -1,7 +1,7 @@
 // read_dicom_slice on real DICOM files: series written by write_ct_series, hand-made pixel
 // encodings (8/16 bit, signed, BitsStored, MONOCHROME1, rescale), files compressed by DCMTK's
 // own tools (JPEG lossless, JPEG-LS, RLE), and the refusals.
-#include "archive/dicom_slice_reader.h"
+#include "dicom/dicom_slice_reader.h"
 
 #include <dcmtk/config/osconfig.h>
 #include <dcmtk/dcmdata/dcdatset.h>
@@ -15,12 +15,12 @@
 
 #include <fstream>
 
-#include "archive/dicom_series_writer.h"
 #include "core/error.h"
-#include "support/run_command.h"
+#include "dicom/dicom_series_writer.h"
 #include "support/bad_dicom_files.h"
+#include "support/oblique_axes.h"
+#include "support/run_command.h"
 #include "support/temporary_folder.h"
-#include "synthetic_slices.h"
 
 namespace maxillo {
 namespace {

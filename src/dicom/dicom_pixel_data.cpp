@@ -1,4 +1,4 @@
-#include "archive/dicom_pixel_data.h"
+#include "dicom/dicom_pixel_data.h"
 
 #include <cstdint>
 #include <variant>
