@@ -290,10 +290,15 @@ AugmentedDentition augmented_dentition(const Volume& ct, const LabelVolume& jaw_
   Eigen::Vector2d low = Eigen::Vector2d::Constant(kNoLevel), high = -low;
   for (Eigen::Index i = 0; i < placed_scan.vertex_count(); ++i) {
     const Eigen::Vector3d p = placed_scan.vertices.row(i).transpose();
-    low = low.cwiseMin(frame.plane(p));
-    high = high.cwiseMax(frame.plane(p));
     if (teeth.nearest(p, options.on_teeth_mm).face >= 0) on_teeth.push_back(p);
   }
+  // The map covers the CT's teeth too: a streak beside the scan's outline must find its level.
+  for (const TriangleMesh* mesh : {&placed_scan, &ct_teeth})
+    for (Eigen::Index i = 0; i < mesh->vertex_count(); ++i) {
+      const Eigen::Vector2d q = frame.plane(mesh->vertices.row(i).transpose());
+      low = low.cwiseMin(q);
+      high = high.cwiseMax(q);
+    }
   if (on_teeth.empty())
     throw Error(ErrorCode::kProcessing, "dental scan",
                 "no point of it lies on the CT's teeth: it is not placed on them");
