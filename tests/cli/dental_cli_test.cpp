@@ -76,6 +76,9 @@ TEST_F(DentalCli, ImportRegisterShowAndOccludeTheCaseInItsCtFrame) {
   const Json occlusion = Json::parse(occluded.out);
   EXPECT_EQ(occlusion.at("penetration_mm").get<double>(), 0.0);
   EXPECT_TRUE(occlusion.at("splint").at("watertight").get<bool>());
+  EXPECT_EQ(occlusion.at("splint").at("intersecting_pairs_upper"), 0);  // the splint crosses no tooth
+  EXPECT_EQ(occlusion.at("splint").at("intersecting_pairs_lower"), 0);
+  EXPECT_DOUBLE_EQ(occlusion.at("splint").at("clearance_mm").get<double>(), 0.2);
   const auto& transform = occlusion.at("upper_transform");
   for (int r = 0; r < 3; ++r) EXPECT_NEAR(transform[r][3].get<double>(), 0.0, 0.05) << transform;
   EXPECT_TRUE(std::filesystem::exists(out / "splint.stl"));
