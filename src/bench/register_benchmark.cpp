@@ -7,7 +7,7 @@
 #include "bench/registration_benchmark.h"
 #include "bench/shared_data.h"
 #include "core/temporary_folder.h"
-#include "imaging/volume_resample.h"
+#include "core/volume_resample.h"
 #include "validation/distance_statistics.h"
 
 namespace maxillo::bench {

@@ -9,7 +9,7 @@
 #include "core/log.h"
 #include "core/parallel_slabs.h"
 #include "imaging/segmentation.h"
-#include "imaging/volume_resample.h"
+#include "core/volume_resample.h"
 #include "mesh/surface_extraction.h"
 #include "geometry/vertex_normals.h"
 #include "geometry/signed_distance.h"

@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "core/parallel_slabs.h"
+#include "core/volume_resample.h"
 #include "geometry/aabb_tree.h"
 #include "geometry/signed_distance.h"
 
@@ -105,21 +106,6 @@ LabelVolume grid_around(const std::vector<const TriangleMesh*>& meshes, double v
   grid.geometry.size = ((high - low + Eigen::Vector3d::Constant(2 * margin)) / voxel).array().ceil().cast<int>() + 1;
   grid.labels.assign(size_t(grid.geometry.voxel_count()), 0);
   return grid;
-}
-
-// Trilinear HU at an LPS point (-1024 outside the CT).
-double hu_at(const Volume& ct, const Eigen::Vector3d& p) {
-  const Eigen::Vector3d x = ct.geometry.continuous_index(p);
-  const Eigen::Vector3i base = x.array().floor().cast<int>();
-  const Eigen::Vector3d t = x - base.cast<double>();
-  double value = 0;
-  for (int corner = 0; corner < 8; ++corner) {
-    const Eigen::Vector3i c = base + Eigen::Vector3i(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
-    const double w = ((corner & 1) ? t.x() : 1 - t.x()) * (((corner >> 1) & 1) ? t.y() : 1 - t.y()) *
-                     (((corner >> 2) & 1) ? t.z() : 1 - t.z());
-    value += w * (ct.geometry.contains(c.x(), c.y(), c.z()) ? double(ct.at(c.x(), c.y(), c.z())) : -1024.0);
-  }
-  return value;
 }
 
 // Whether one of the CT voxels around p carries the label.
@@ -320,7 +306,7 @@ AugmentedDentition augmented_dentition(const Volume& ct, const LabelVolume& jaw_
       for (int i = 0; i < g.size.x(); ++i) {
         uint8_t& l = out.solid.labels[size_t(g.index(i, j, k))];
         const Eigen::Vector3d p = g.world(Eigen::Vector3d(i, j, k));
-        if (!near_label(jaw_labels, p, jaw_label) || hu_at(ct, p) < options.teeth_hu) continue;
+        if (!near_label(jaw_labels, p, jaw_label) || sample_trilinear(ct, p) < options.teeth_hu) continue;
         if (frame.height(p) > level.cut(p) + options.seal_mm) {
           ++out.ct_voxels_cut;
           continue;

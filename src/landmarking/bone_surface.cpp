@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "core/parallel_slabs.h"
-#include "imaging/volume_resample.h"
+#include "core/volume_resample.h"
 
 namespace maxillo::landmarking {
 namespace {

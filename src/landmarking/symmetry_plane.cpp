@@ -10,7 +10,7 @@
 #include "core/angles.h"
 #include "core/parallel_slabs.h"
 #include "imaging/distance_morphology.h"
-#include "imaging/volume_resample.h"
+#include "core/volume_resample.h"
 
 namespace maxillo::landmarking {
 namespace {

@@ -6,7 +6,7 @@
 #include "core/json.h"
 #include "dicom/dicom_series_writer.h"
 #include "imaging/synthetic_head.h"
-#include "imaging/volume_resample.h"
+#include "core/volume_resample.h"
 #include "support/run_maxillo.h"
 #include "support/temporary_folder.h"
 

@@ -8,7 +8,7 @@
 
 #include "imaging/converted_copy.h"
 #include "imaging/rigid_registration.h"
-#include "imaging/volume_resample.h"
+#include "core/volume_resample.h"
 #include "bench/registration_benchmark.h"
 #include "support/temporary_folder.h"
 

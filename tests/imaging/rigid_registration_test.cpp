@@ -15,7 +15,7 @@
 #include "imaging/rigid_registration.h"
 #include "imaging/converted_copy.h"
 #include "imaging/synthetic_head.h"
-#include "imaging/volume_resample.h"
+#include "core/volume_resample.h"
 #include "support/temporary_folder.h"
 
 namespace maxillo {

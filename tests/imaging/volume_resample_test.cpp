@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "imaging/volume_resample.h"
+#include "core/volume_resample.h"
 
 namespace maxillo {
 namespace {

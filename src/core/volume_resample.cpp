@@ -1,7 +1,7 @@
 // Rigid resampling (see volume_resample.h). Each result voxel is mapped back into the source's
 // continuous voxel coordinates by one affine map (result ijk -> source ijk), computed once, so
 // the inner loop is a matrix-vector step and an interpolation.
-#include "imaging/volume_resample.h"
+#include "core/volume_resample.h"
 
 #include <algorithm>
 #include <cmath>
