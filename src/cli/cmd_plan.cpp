@@ -118,6 +118,7 @@ void print_result(const planning::PlanResult& r) {
         std::string(planning::side_name(v->side)).c_str(), v->entry.x(), v->entry.y(), v->entry.z(), v->axis.x(),
         v->axis.y(), v->axis.z(), v->outward_deg, v->elevation_deg, v->activation_mm);
   std::printf("divergence %.2f deg (3D angle %.2f deg)\n", d.vectors.divergence_deg, d.vectors.angle_deg);
+  for (const auto& note : d.sinus_notes) std::printf("sinus: %s\n", note.c_str());
   for (const auto& c : d.checks)
     std::printf("check %-5s %-18s %-11s value %.1f mm limit %.1f mm %s\n",
                 std::string(planning::side_name(c.side)).c_str(), c.name.c_str(),

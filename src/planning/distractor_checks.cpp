@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "core/error.h"
+#include "planning/maxillary_sinus.h"
 
 namespace maxillo::planning {
 namespace {
@@ -27,10 +28,6 @@ std::string mm(double value) {
   return text;
 }
 
-bool has(const std::vector<uint8_t>& set, uint8_t label) {
-  return std::find(set.begin(), set.end(), label) != set.end();
-}
-
 // Label of the voxel nearest to p; 0 outside the grid.
 uint8_t label_at(const LabelVolume& volume, const Vector3d& p) {
   const Vector3d c = volume.geometry.continuous_index(p);
@@ -41,35 +38,6 @@ uint8_t label_at(const LabelVolume& volume, const Vector3d& p) {
   return volume.labels[volume.geometry.index(i, j, k)];
 }
 
-double side_sign(Side side) { return side == Side::Left ? 1.0 : -1.0; }
-
-// Where a maxillary sinus lies: heights (along frame.superior) from 5 mm below the palatal
-// plane to the orbitales, and depths (along frame.anterior) from 5 mm behind PNS to 5 mm in front
-// of ANS. Unbounded where those landmarks are missing. On a real CT the enclosed air also holds
-// the pharynx, the mastoid air cells and the ear canals, all behind PNS and some at the
-// sinus' height; the phantom has none of them.
-struct Interval {
-  double low = -std::numeric_limits<double>::infinity(), high = std::numeric_limits<double>::infinity();
-  bool contains(double value) const { return value >= low && value <= high; }
-};
-struct SinusBox {
-  Interval height, depth;
-};
-
-SinusBox sinus_box(const PlanningFrame& frame, const LandmarkSet& landmarks) {
-  SinusBox box;
-  const auto ans = find_landmark(landmarks, "ANS"), pns = find_landmark(landmarks, "PNS");
-  if (ans && pns) {
-    box.height.low = std::min(ans->dot(frame.superior), pns->dot(frame.superior)) - 5;
-    box.depth = {pns->dot(frame.anterior) - 5, ans->dot(frame.anterior) + 5};
-  }
-  for (const char* label : {"OrR", "OrL", "Or"})
-    if (auto o = find_landmark(landmarks, label))
-      box.height.high =
-          std::isinf(box.height.high) ? o->dot(frame.superior) : std::max(box.height.high, o->dot(frame.superior));
-  return box;
-}
-
 std::optional<Vector3d> sinus_centroid(const LabelVolume& volume, const PlanningFrame& frame,
                                        const AnatomyLabels& anatomy, Side side, const SinusBox& box) {
   const VolumeGeometry& g = volume.geometry;
@@ -78,7 +46,7 @@ std::optional<Vector3d> sinus_centroid(const LabelVolume& volume, const Planning
   for (int k = 0; k < g.size.z(); ++k)
     for (int j = 0; j < g.size.y(); ++j)
       for (int i = 0; i < g.size.x(); ++i) {
-        if (!has(anatomy.sinus_air, volume.labels[g.index(i, j, k)])) continue;
+        if (!is_labelled(anatomy.sinus_air, volume.labels[g.index(i, j, k)])) continue;
         const Vector3d p = g.world(Vector3d(i, j, k));
         if (side_sign(side) * (p - frame.origin).dot(frame.left) <= 0) continue;
         if (!box.height.contains(p.dot(frame.superior)) || !box.depth.contains(p.dot(frame.anterior))) continue;
@@ -95,10 +63,10 @@ Vector3d exit_point(const LabelVolume& volume, const AnatomyLabels& anatomy, con
                     const Vector3d& direction) {
   const double step = 0.25;
   Vector3d p = start;
-  for (int n = 0; n < 400 && has(anatomy.sinus_air, label_at(volume, p)); ++n) p += step * direction;
+  for (int n = 0; n < 400 && is_labelled(anatomy.sinus_air, label_at(volume, p)); ++n) p += step * direction;
   for (int n = 0; n < 80; ++n) {
     const uint8_t label = label_at(volume, p);
-    if (!has(anatomy.bone, label) && !has(anatomy.teeth, label)) break;
+    if (!is_labelled(anatomy.bone, label) && !is_labelled(anatomy.teeth, label)) break;
     p += step * direction;
   }
   return p;
@@ -115,10 +83,10 @@ std::optional<AxisProfile> axis_profile(const LabelVolume& volume, const Anatomy
   const double step = 0.25;
   AxisProfile profile;
   double s = 0;
-  while (s <= kMaxWallMm && !has(anatomy.sinus_air, label_at(volume, v.entry - s * v.axis))) s += step;
+  while (s <= kMaxWallMm && !is_labelled(anatomy.sinus_air, label_at(volume, v.entry - s * v.axis))) s += step;
   if (s > kMaxWallMm) return std::nullopt;
   profile.wall_mm = s;
-  while (s < 200 && has(anatomy.sinus_air, label_at(volume, v.entry - s * v.axis))) s += step;
+  while (s < 200 && is_labelled(anatomy.sinus_air, label_at(volume, v.entry - s * v.axis))) s += step;
   profile.depth_mm = s - profile.wall_mm;
   return profile;
 }
@@ -152,8 +120,8 @@ DistractorCheck fail(DistractorCheck check, std::string reason) {
 }
 
 std::string tissue_word(const AnatomyLabels& anatomy, uint8_t label) {
-  if (has(anatomy.teeth, label)) return "a tooth";
-  if (has(anatomy.bone, label)) return "bone";
+  if (is_labelled(anatomy.teeth, label)) return "a tooth";
+  if (is_labelled(anatomy.bone, label)) return "bone";
   return "soft tissue or air outside the sinus";
 }
 
@@ -173,7 +141,7 @@ DistractorCheck check_in_sinus(const LabelVolume& volume, const AnatomyLabels& a
       }
     for (const Vector3d& p : samples) {
       const uint8_t label = label_at(volume, p);
-      if (has(anatomy.sinus_air, label)) continue;
+      if (is_labelled(anatomy.sinus_air, label)) continue;
       check.value = s;
       return fail(check, "the screw body (with " + mm(limits.sinus_clearance_mm) + " clearance) leaves the sinus air " +
                              mm(s) + " behind the entry point and meets " + tissue_word(anatomy, label));
@@ -215,7 +183,7 @@ DistractorCheck check_teeth(const LabelVolume& volume, const AnatomyLabels& anat
   for (int k = from.z(); k <= to.z(); ++k)
     for (int j = from.y(); j <= to.y(); ++j)
       for (int i = from.x(); i <= to.x(); ++i)
-        if (has(anatomy.teeth, volume.labels[g.index(i, j, k)]))
+        if (is_labelled(anatomy.teeth, volume.labels[g.index(i, j, k)]))
           nearest = std::min(nearest, point_segment_distance(g.world(Vector3d(i, j, k)), a, b));
   const double clearance = nearest - device.screw_diameter_mm / 2;
   DistractorCheck check = make_check("tooth distance", v.side, clearance, limits.tooth_distance_mm);
@@ -255,6 +223,10 @@ DistractorCheck check_nerve(const DistractionVector& v, const LandmarkSet& landm
 }
 
 }  // namespace
+
+bool is_labelled(const std::vector<uint8_t>& set, uint8_t label) {
+  return std::find(set.begin(), set.end(), label) != set.end();
+}
 
 AnatomyLabels segmentation_anatomy_labels() { return AnatomyLabels{{2}, {4}, {3}}; }
 

@@ -37,8 +37,12 @@ struct AnatomyLabels {
   std::vector<uint8_t> sinus_air{4};
   std::vector<uint8_t> teeth{3};
   std::vector<uint8_t> bone{2};
+  std::vector<uint8_t> open_air{0};  // the outside's air and the airways open to it
 };
 AnatomyLabels segmentation_anatomy_labels();  // enclosed air 2, bone 3, teeth 4
+
+// Whether `label` is one of `set` (one of AnatomyLabels' lists).
+bool is_labelled(const std::vector<uint8_t>& set, uint8_t label);
 
 struct DistractorDevice {
   double screw_length_mm = 25;

@@ -312,9 +312,33 @@ Json plan_to_json(const Plan& plan) {
 
 std::string serialise_plan(const Plan& plan) { return plan_to_json(plan).dump(2) + "\n"; }
 
+namespace {
+
+// The target in one line, for a plan created without a description of its own.
+std::string target_text(const MaxillaryTarget& target) {
+  std::string text = "TS-MD distraction";
+  const char* separator = ": ";
+  auto add = [&](double value, const char* what, const char* unit) {
+    if (value == 0) return;
+    char part[64];
+    std::snprintf(part, sizeof part, "%s%g %s %s", separator, value, unit, what);
+    text += part;
+    separator = ", ";
+  };
+  add(target.advancement_mm, "advancement", "mm");
+  add(target.vertical_mm, "vertical move", "mm");
+  add(target.widening_mm, "widening", "mm");
+  add(target.midline_shift_mm, "midline shift", "mm");
+  add(target.rotation_deg, "rotation", "degrees");
+  add(target.counter_rotation_deg, "counter-rotation", "degrees");
+  return text;
+}
+
+}  // namespace
+
 Plan distraction_plan(const MaxillaryTarget& target, const std::string& description) {
   Plan plan;
-  plan.description = description;
+  plan.description = description.empty() ? target_text(target) : description;
   plan.osteotomies.le_fort_i = CutSpec{};  // default, high: the source's TS-MD cases (ch. 4a, 4b)
   plan.osteotomies.pterygomaxillary = CutSpec{};
   SegmentMove maxilla;

@@ -111,7 +111,8 @@ inline Json point_json(const Eigen::Vector3d& p) { return Json::array({p.x(), p.
 std::string serialise_plan(const Plan& plan);  // indented JSON text, newline-terminated
 
 // The plan `maxillo plan create` makes for a distraction: default high Le Fort I and
-// pterygomaxillary cuts, the maxilla's common move about PNS, and the distraction.
+// pterygomaxillary cuts, the maxilla's common move about PNS, and the distraction. Without a
+// description, the target's in one line ("TS-MD distraction: 6 mm advancement").
 Plan distraction_plan(const MaxillaryTarget& target, const std::string& description = "");
 
 // Osteotomy cut planes of the plan, defaults resolved from the landmarks.

@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "core/json_reader.h"
+#include "planning/maxillary_sinus.h"
 
 namespace maxillo::planning {
 namespace {
@@ -20,11 +21,14 @@ DistractionResult plan_distraction(const DistractionSpec& spec, const PlanningFr
   result.target = spec.target;
   result.reference.pivot = require_landmark(landmarks, "PNS", "distraction");
   result.reference.incisor = require_landmark(landmarks, "U1", "distraction");
-  EntryPoints entries = find_entry_points(labels, frame, anatomy, landmarks);
+  SinusAirReading sinus_reading;
+  const LabelVolume with_sinuses = with_open_sinus_air(labels, frame, anatomy, landmarks, sinus_reading);
+  result.sinus_notes = sinus_reading.notes;
+  EntryPoints entries = find_entry_points(with_sinuses, frame, anatomy, landmarks);
   if (spec.entry_right) entries.right = *spec.entry_right;
   if (spec.entry_left) entries.left = *spec.entry_left;
   result.vectors = distraction_vectors(frame, spec.target, result.reference, entries.right, entries.left);
-  result.checks = check_distractors(labels, result.vectors, landmarks, frame, anatomy, spec.device, spec.limits);
+  result.checks = check_distractors(with_sinuses, result.vectors, landmarks, frame, anatomy, spec.device, spec.limits);
   result.schedule =
       activation_schedule(result.vectors.right.activation_mm, result.vectors.left.activation_mm, spec.schedule);
   LandmarkSet points;
@@ -122,6 +126,7 @@ Json plan_result_json(const PlanResult& r) {
                              {"divergence_deg", d.vectors.divergence_deg},
                              {"angle_deg", d.vectors.angle_deg}}},
                            {"checks", checks},
+                           {"sinus_notes", d.sinus_notes},
                            {"schedule",
                             {{"latency_days", d.schedule.settings.latency_days},
                              {"rate_mm_per_day", d.schedule.settings.rate_mm_per_day},

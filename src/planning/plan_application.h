@@ -31,6 +31,9 @@ struct DistractionResult {
   std::vector<DistractorCheck> checks;
   ActivationSchedule schedule;
   ForwardSimulation simulation;
+  // A side whose sinus the scan shows open into the nasal cavity (maxillary_sinus.h): how its
+  // air was taken. Empty when both sinuses are closed air.
+  std::vector<std::string> sinus_notes;
 };
 
 struct PlanResult {

@@ -62,6 +62,8 @@ Record::Distraction read_distraction(JsonReader r) {
                             p.required_number("error_mm")});
   }
   d.max_error_mm = simulation.required_number("max_error_mm");
+  // Results stored before the open-sinus reading have no notes: both sinuses were closed air.
+  if (r.has("sinus_notes")) d.sinus_notes = r.required_texts("sinus_notes");
   return d;
 }
 

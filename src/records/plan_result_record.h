@@ -53,6 +53,7 @@ struct PlanResultRecord {
     Schedule schedule;
     std::vector<SimulatedPoint> simulation;
     double max_error_mm = 0;
+    std::vector<std::string> sinus_notes;  // a sinus taken open to the nose (planning/maxillary_sinus.h)
   };
   struct Segment {
     std::string segment;

@@ -106,6 +106,7 @@ void add_distraction(report::Section& section, const Record::Distraction& d) {
   }});
   section.blocks.push_back(report::Paragraph{"Distractor checks"});
   section.blocks.push_back(checks_table(d.checks));
+  for (const std::string& note : d.sinus_notes) section.blocks.push_back(report::Note{"The " + note + "."});
   section.blocks.push_back(report::Paragraph{"Activation schedule"});
   section.blocks.push_back(report::KeyValueBlock{{
       {"Latency", std::to_string(schedule.latency_days) + " days"},

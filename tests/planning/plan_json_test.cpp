@@ -54,6 +54,13 @@ TEST(PlanJson, RoundTripsEveryField) {
   EXPECT_EQ(back.occlusion.pairs_file, "pairs.csv");
 }
 
+TEST(PlanJson, APlanWithoutADescriptionIsDescribedByItsTarget) {
+  EXPECT_EQ(distraction_plan({.advancement_mm = 6}).description, "TS-MD distraction: 6 mm advancement");
+  EXPECT_EQ(distraction_plan({.advancement_mm = 10, .widening_mm = 6.5}).description,
+            "TS-MD distraction: 10 mm advancement, 6.5 mm widening");
+  EXPECT_EQ(distraction_plan({.advancement_mm = 6}, "mine").description, "mine");
+}
+
 TEST(PlanJson, MinimalPlanTakesTheDefaults) {
   const Plan plan = parse_plan(R"({"format_version": 1, "distraction": {"target": {"advancement_mm": 8}}})", "p");
   ASSERT_TRUE(plan.distraction);
