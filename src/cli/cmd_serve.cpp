@@ -15,6 +15,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "net/serve_config.h"
+#include "casework/case_orientation.h"
 #include "net/storage_server.h"
 
 namespace maxillo::cli {
@@ -90,6 +91,9 @@ net::StorageServerOptions server_options(const ServeArguments& a, const GlobalOp
   if (a.config.empty() || a.on_command_line("--on-stable-study")) options.on_stable_study = a.on_stable_study;
   if (a.config.empty() || a.on_command_line("--stable-seconds")) options.stable_seconds = a.stable_seconds;
   if (a.on_command_line("--spool")) options.spool = a.spool;
+  // Each study, once it has arrived, has its case's CT header checked against the anatomy, as
+  // `maxillo import` does (casework/case_orientation.h): a contradiction is recorded and logged.
+  options.check_stable_case = [](Archive& archive, int64_t case_id) { casework::case_orientation(archive, case_id); };
   if (a.on_command_line("--tls-cert")) {
     options.tls = {.enabled = true, .certificate = a.tls.certificate, .private_key = a.tls.private_key, .trusted = {}};
     if (!a.on_command_line("--tls-key")) throw Error(ErrorCode::kUsage, "--tls-cert", "needs --tls-key");
@@ -155,7 +159,10 @@ void attach_serve(CLI::App& app, CommandContext& ctx) {
       "shell command run once a study has had nothing new for --stable-seconds (again after each change); "
       "environment: MAXILLO_ARCHIVE, MAXILLO_STUDY_UID, MAXILLO_CASE");
   given["--stable-seconds"] =
-      app.add_option("--stable-seconds", a->stable_seconds, "quiet time after which a study is stable")
+      app.add_option(
+             "--stable-seconds", a->stable_seconds,
+             "quiet time after which a study is stable: its case's CT header is then checked against the anatomy "
+             "(as at import), and --on-stable-study run")
           ->check(CLI::Range(1, 86400))
           ->capture_default_str();
   given["--spool"] = app.add_option("--spool", a->spool,

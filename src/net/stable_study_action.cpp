@@ -12,26 +12,23 @@
 extern char** environ;
 
 namespace maxillo::net {
-namespace {
-
-std::string default_case_of(const std::filesystem::path& folder, const std::string& study_uid) {
+std::optional<int64_t> default_case_of_study(const std::filesystem::path& folder, const std::string& study_uid) {
   try {
     const Archive archive = Archive::open(folder);
     const ResolvedItem item = archive.resolve(study_uid);
-    if (item.kind != ItemKind::Study) return {};
+    if (item.kind != ItemKind::Study) return std::nullopt;
     const auto found = archive.case_of_patient(archive.study(item.id)->patient);
-    return found ? std::to_string(found->id) : std::string();
+    return found ? std::optional<int64_t>(found->id) : std::nullopt;
   } catch (const std::exception& error) {
     log::warning("serve: stable study: no case found: ", error.what());
-    return {};
+    return std::nullopt;
   }
 }
 
-}  // namespace
-
 int run_stable_study_action(const std::string& command, const std::filesystem::path& archive,
                             const std::string& study_uid) {
-  const std::string case_id = default_case_of(archive, study_uid);
+  const auto found = default_case_of_study(archive, study_uid);
+  const std::string case_id = found ? std::to_string(*found) : std::string();
   std::vector<std::string> variables = {"MAXILLO_ARCHIVE=" + std::filesystem::absolute(archive).string(),
                                         "MAXILLO_STUDY_UID=" + study_uid, "MAXILLO_CASE=" + case_id};
   std::vector<char*> environment;

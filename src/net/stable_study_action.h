@@ -1,6 +1,8 @@
 #pragma once
 // The command `maxillo serve --on-stable-study` runs for a study that has become stable.
+#include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 namespace maxillo::net {
@@ -9,6 +11,9 @@ namespace maxillo::net {
 // MAXILLO_STUDY_UID and MAXILLO_CASE (the archive id of the study's patient's default case, empty
 // when there is none), and waits for it. Returns its exit status (128 + signal when killed, -1
 // when it could not be started). Logs the start and the outcome, naming no patient.
+// The archive id of the study's patient's default case; nullopt when there is none (logged).
+std::optional<int64_t> default_case_of_study(const std::filesystem::path& archive, const std::string& study_uid);
+
 int run_stable_study_action(const std::string& command, const std::filesystem::path& archive,
                             const std::string& study_uid);
 

@@ -242,6 +242,19 @@ void clear_incoming(const std::filesystem::path& incoming) {
   for (const auto& entry : std::filesystem::directory_iterator(incoming)) std::filesystem::remove(entry.path());
 }
 
+// The server's own check of a stable study's case (options.check_stable_case). A study with no
+// case, or whose case has no volume to check, is no error of the server's.
+void check_stable_case(const StorageServerOptions& options, const std::string& study_uid) {
+  const auto case_id = default_case_of_study(options.archive, study_uid);
+  if (!case_id) return;
+  try {
+    Archive archive = Archive::open(options.archive);
+    options.check_stable_case(archive, *case_id);
+  } catch (const std::exception& error) {
+    log::debug("serve: case:", *case_id, ": not checked: ", error.what());
+  }
+}
+
 // DCMTK binds the port inside its listening loop, with no word before: try the bind here first
 // (with SO_REUSEADDR, as DCMTK does), so that a taken port is an error before anything says
 // "listening". Another process could take it in between; the loop then fails as before.
@@ -279,7 +292,7 @@ StorageServer::StorageServer(StorageServerOptions options) : shared_(std::make_u
                   "received and owed stable-study actions");
     options.spool = options.archive;
   }
-  if (!options.on_stable_study.empty()) {
+  if (!options.on_stable_study.empty() || options.check_stable_case) {
     if (options.stable_seconds < 1 || options.stable_seconds > 86400)
       throw Error(ErrorCode::kUsage, "--stable-seconds", "from 1 to 86400 seconds");
     shared_->stable = std::make_unique<StableStudies>(std::chrono::seconds(options.stable_seconds));
@@ -317,10 +330,13 @@ void StorageServer::run(const std::function<void()>& on_listening) {
     if (!shared_->stable) return;
     while (listening) {
       for (const auto& study : shared_->stable->take_due(StableStudies::Clock::now())) {
-        const int status = run_stable_study_action(shared_->options.on_stable_study, shared_->options.archive, study);
+        if (shared_->options.check_stable_case) check_stable_case(shared_->options, study);
+        if (!shared_->options.on_stable_study.empty()) {
+          const int status = run_stable_study_action(shared_->options.on_stable_study, shared_->options.archive, study);
+          ++shared_->stable_actions;
+          if (status != 0) ++shared_->failed_actions;
+        }
         shared_->pending->remove_if_settled(study, [&] { return shared_->stable->changed_since_due(study); });
-        ++shared_->stable_actions;
-        if (status != 0) ++shared_->failed_actions;
       }
       for (int tick = 0; tick < 10 && listening; ++tick) std::this_thread::sleep_for(std::chrono::milliseconds(100));
     }

@@ -14,6 +14,7 @@
 // stable_seconds (net/stable_studies.h) and runs the command for each, one at a time. The studies
 // whose action is owed are kept in ARCHIVE/serve/ (net/pending_studies.h): after a stop or a
 // crash, a restarted server runs them after a full quiet period.
+// options.check_stable_case runs first for each of them, in the server.
 //
 // With TLS (options.tls) every association is TLS; a caller that does not speak it, or whose
 // certificate is not trusted, fails the handshake and never reaches the AE title checks.
@@ -29,6 +30,7 @@
 #include <string>
 #include <vector>
 
+#include "archive/archive.h"
 #include "net/dicom_peer.h"
 #include "net/tls_options.h"
 
@@ -50,6 +52,12 @@ struct StorageServerOptions {
   // archive id of the patient's default case) in its environment. Empty: no action.
   std::string on_stable_study;
   int stable_seconds = 60;
+  // Run in the server for each stable study's case (the patient's default case), before the
+  // command: `maxillo serve` checks the CT's header against the anatomy here (issue 28), so a
+  // contradiction is recorded and said when the study has arrived, as at import. Its errors
+  // (a study with no volume: a report, a single slice) are logged at debug level and go no
+  // further. Set, it turns the stable-study watch on without a command.
+  std::function<void(Archive& archive, int64_t case_id)> check_stable_case;
   // DICOM TLS (net/tls_options.h): on when there is a certificate; callers must then present a
   // certificate signed by a trusted one when `trusted` is not empty.
   TlsOptions tls;

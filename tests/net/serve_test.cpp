@@ -25,6 +25,7 @@
 #include "dicom/dicom_series_writer.h"
 #include "net_fixture.h"
 #include "support/run_command.h"
+#include "support/cthead_metaimage.h"
 #include "support/run_maxillo.h"
 #include "support/temporary_folder.h"
 
@@ -438,6 +439,38 @@ TEST_F(ServeWithStableAction, RunsOncePerChangeOfAStudy) {
   EXPECT_EQ(lines[1], lines[0]);
   EXPECT_EQ(stop_server(), 0);
   EXPECT_NE(server_output().find("2 stable-study actions (0 failed)"), std::string::npos) << server_output();
+}
+
+// Issue 28: a study received is checked like one imported, once it has arrived. The cadaver head
+// converted with its raw axes (the vertex inferior: a header that contradicts the anatomy) is
+// pushed as a scanner would; with no other command run on the case, `list cases` then shows the
+// flag the server recorded.
+class ServeStableAfterASecond : public Serve {
+ protected:
+  std::vector<std::string> extra_arguments() override { return {"--stable-seconds", "1"}; }
+};
+
+TEST_F(ServeStableAfterASecond, ChecksTheOrientationOfWhatItReceived) {
+  if (!std::filesystem::exists(testing::cthead_slices() / "CThead.113"))
+    GTEST_SKIP() << "real data absent: " << testing::cthead_slices();
+  testing::write_cthead_metaimage(folder_.path(), "raw.mhd");
+  const std::string maxillo = std::string(MAXILLO_BINARY) + " --archive " + quote(folder_ / "elsewhere");
+  const auto converted =
+      run_command(maxillo + " convert " + quote(folder_ / "raw.mhd") + " --out " + quote(folder_ / "dicom") + " 2>&1");
+  ASSERT_EQ(converted.exit_code, 0) << converted.output;
+  ASSERT_EQ(run_command("storescu +sd -aet STORESCU -aec MAXILLO 127.0.0.1 " + std::to_string(port_) + " " +
+                        quote(folder_ / "dicom") + " 2>&1")
+                .exit_code,
+            0);
+  const std::string list = std::string(MAXILLO_BINARY) + " --archive " + quote(archive()) + " list cases";
+  std::string cases;
+  for (int waited = 0; waited < 300 && cases.find("CONTRADICTS") == std::string::npos; ++waited) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    cases = run_command(list).output;
+  }
+  EXPECT_NE(cases.find("CONTRADICTS"), std::string::npos) << cases;
+  EXPECT_EQ(stop_server(), 0);
+  EXPECT_NE(server_errors().find("the header contradicts the anatomy"), std::string::npos) << server_errors();
 }
 
 // A server killed before a study's quiet period ended still owes its action: the restarted server
