@@ -13,7 +13,11 @@ namespace {
 constexpr double kSpacingMm = 1.0;
 constexpr double kPitchReachDeg = 30, kPitchStepDeg = 5;
 constexpr double kMaxCanalMismatchMm = 15;  // the two canals' heights and depths differ by less
-constexpr double kMaxMisplacementMm = 5;    // an orbitale this far from where its pitch put it is another edge
+constexpr double kMaxMisplacementMm = 5;
+// The sizes tried when the canals' distance gives none: steps of 6 mm in the porion-orbitale
+// distance, so that with the pitch's step an orbitale lies within kMaxMisplacementMm of one try.
+constexpr double kMinScale = 0.8, kMaxScale = 1.3,
+                 kScaleStep = 0.08;  // an orbitale this far from where its pitch put it is another edge
 
 struct Porions {
   Eigen::Vector3d left, right;
@@ -21,18 +25,29 @@ struct Porions {
 };
 
 // Both ear canals, each sought over its side's lateral third from 40 to 150 mm behind the
-// skull's front and over 130 mm below its top.
+// skull's front and over 130 mm below its top. A cone-beam field's cylinder, off the head's
+// centre, may cut one canal: the other one mirrored across the midsagittal plane (x = 0 in the
+// sagittal frame) stands in for it, for the frame only (the canal is not reported).
 std::optional<Porions> find_porions_anywhere(const HeadVolume& v, const MidlineExtent& extent, std::string& why) {
   const double y_centre = extent.y_front + 95, z_centre = extent.z_top - 65;
-  Porions p;
+  std::optional<Eigen::Vector3d> found[2];
+  std::string missing;
   for (int side : {-1, 1}) {
     const RuleFinding f = find_porion(v, {side * 62.0, y_centre, z_centre}, side, {55, 65});
-    if (!f.position) {
-      why = std::string("no ") + (side > 0 ? "left" : "right") + " ear canal: " + f.note;
-      return std::nullopt;
-    }
-    (side > 0 ? p.left : p.right) = *f.position;
+    if (f.position)
+      found[side > 0] = *f.position;
+    else
+      missing += std::string(missing.empty() ? "" : ", and ") + "no " + (side > 0 ? "left" : "right") +
+                 " ear canal: " + f.note;
   }
+  if (!found[0] && !found[1]) {
+    why = missing;
+    return std::nullopt;
+  }
+  const auto mirrored = [](const Eigen::Vector3d& p) { return Eigen::Vector3d(-p.x(), p.y(), p.z()); };
+  Porions p;
+  p.left = found[1] ? *found[1] : mirrored(*found[0]);
+  p.right = found[0] ? *found[0] : mirrored(*found[1]);
   if ((p.left - p.right).tail<2>().norm() > kMaxCanalMismatchMm) {
     why = "the two ear canals found do not face each other across the midsagittal plane";
     return std::nullopt;
@@ -79,6 +94,16 @@ std::optional<Orbitales> orbitales_at_pitch(const HeadVolume& v, const Porions& 
   return o;
 }
 
+// The orbitales over every pitch within +-kPitchReachDeg, for a head of `scale`: the best found.
+std::optional<Orbitales> orbitales_over_pitches(const HeadVolume& v, const Porions& po, double scale) {
+  std::optional<Orbitales> best;
+  for (double pitch = -kPitchReachDeg; pitch <= kPitchReachDeg + 1e-9; pitch += kPitchStepDeg) {
+    const auto o = orbitales_at_pitch(v, po, scale, pitch);
+    if (o && (!best || o->better_than(*best))) best = o;
+  }
+  return best;
+}
+
 }  // namespace
 
 std::optional<EarOrbitFrame> frame_from_ears_and_orbits(const Volume& ct, const GreyCalibration& grey,
@@ -89,12 +114,17 @@ std::optional<EarOrbitFrame> frame_from_ears_and_orbits(const Volume& ct, const 
   const auto po = find_porions_anywhere(v, extent, why);
   if (!po) return std::nullopt;
   const double width = 2 * expected_position("PoL", 1).x();
-  const double scale = std::clamp((po->left - po->right).norm() / width, 0.8, 1.3);
-  std::optional<Orbitales> best;
-  for (double pitch = -kPitchReachDeg; pitch <= kPitchReachDeg + 1e-9; pitch += kPitchStepDeg) {
-    const auto o = orbitales_at_pitch(v, *po, scale, pitch);
-    if (o && (!best || o->better_than(*best))) best = o;
-  }
+  double scale = std::clamp((po->left - po->right).norm() / width, 0.8, 1.3);
+  std::optional<Orbitales> best = orbitales_over_pitches(v, *po, scale);
+  // The canals' distance gives no size when a canal's lateral opening lies at the field's wall
+  // (read too medial) or was mirrored from the other side: the sizes the detector accepts are
+  // tried in turn, each placing the rims at its distance in front of the porions; the size whose
+  // rims are found nearest to where it put them wins.
+  if (!best)
+    for (double size = kMinScale; size <= kMaxScale + 1e-9; size += kScaleStep) {
+      const auto o = orbitales_over_pitches(v, *po, size);
+      if (o && (!best || o->better_than(*best))) best = o, scale = size;
+    }
   if (!best) {
     why = "no inferior orbital rims in front of the ear canals";
     return std::nullopt;

@@ -27,9 +27,11 @@ constexpr double kSecondStartScale = 1.04;
 constexpr double kSnAboveFrankfortDeg = 7;      // adult mean: S-N rises this much anteriorly over Frankfort
 constexpr double kSurfaceSpacingMm = 1.5;       // the symmetry search's grid
 constexpr double kCoarseSpacingMm = 1.0;        // the frame-finding head volumes
+constexpr double kNasionSpacingMm = 0.5;        // the nasion's when it sets the head's size
 constexpr double kMinBoneCm3 = 40;              // less is not a skull
 constexpr double kMinSnMm = 56, kMaxSnMm = 91;  // the scales the detector accepts (0.8-1.3) times 70 mm
 constexpr double kFieldEdgeMarginMm = 3;        // a landmark needs the field around it this far
+constexpr double kSellaBehindFrontMm = 115;     // the front's most anterior bone to sella, a large head's and more
 constexpr double kSizeChangeToRefind = 0.03;  // S-N found again longer or shorter than this share: the first was wrong
 
 // A frame (frame -> LPS) with the given axes (columns) and origin.
@@ -154,10 +156,13 @@ std::optional<SellaNasion> find_sella_and_nasion(const Volume& ct, const GreyCal
   // The sella lies 55-135 mm below the vertex. A field that ends at the skull's top (a cone-beam
   // scan cut above the orbits) shows no vertex: the sella, if scanned, lies within 70 mm of the
   // field's edge (a window 135 mm below the edge would reach the neck, whose recesses then pass
-  // for a fossa). A head without it gets its frame from the ears and orbits.
+  // for a fossa). A head without it gets its frame from the ears and orbits. Front to back, the
+  // sella lies within the middle of the skull's length, or, where a cone-beam field's cylinder
+  // cuts the back of the skull off (the midline 130 mm long instead of 180), within
+  // kSellaBehindFrontMm of its front: the fraction of a cut length says nothing.
   auto window_below_top = [&](double nearest, double farthest) {
     return FrameBox{{0, e.y_front + 0.2 * length, e.z_top - farthest},
-                    {0, e.y_front + 0.7 * length, e.z_top - nearest}};
+                    {0, e.y_front + std::max(0.7 * length, kSellaBehindFrontMm), e.z_top - nearest}};
   };
   const auto sella =
       e.vertex_scanned ? find_sella(section, window_below_top(55, 135)) : find_sella(section, window_below_top(2, 70));
@@ -198,6 +203,29 @@ Eigen::Isometry3d with_sella_and_nasion_found_again(const Volume& ct, const Grey
   return pitched(frame, *n.position - s->centre, kSnAboveFrankfortDeg, s->centre);
 }
 
+// A frame from the ears and orbits has its origin where the template puts sella over the
+// porions, and its size from their distance or from where the orbits lie, which a porion read at
+// a cone-beam field's wall (or mirrored from the other side) misplaces by several millimetres.
+// When the field holds the sella, the frame is moved onto it, so that every landmark's window is
+// placed from the real one; when it holds the nasion too (in the frame, where the forehead above
+// it is sought along the head's own axis, not the scan's), S-N gives the size.
+Eigen::Isometry3d centred_on_sella(const Volume& ct, const GreyCalibration& grey, const Eigen::Isometry3d& frame,
+                                   double& scale) {
+  const HeadVolume coarse(ct, grey, frame, head_box(scale), kCoarseSpacingMm);
+  const auto s = find_sella(coarse, {{0, -14, -14}, {0, 14, 14}});
+  if (!s) return frame;
+  Eigen::Isometry3d moved = frame;
+  moved.translation() = frame * s->centre;
+  // The nasion at the fine spacing, in a box around it: its rule counts samples of the profile,
+  // of which a forehead cut by the field's top leaves too few at a coarse one.
+  const Eigen::Vector3d expected_n = s->centre + expected_position("N", scale);
+  const Eigen::Vector3d reach(15, 45, 35);
+  const HeadVolume around_nasion(ct, grey, frame, {expected_n - reach, expected_n + reach}, kNasionSpacingMm);
+  const RuleFinding n = find_nasion(around_nasion, expected_n);
+  if (n.position) scale = std::clamp((*n.position - s->centre).norm() / 70.0, 0.8, 1.3);
+  return moved;
+}
+
 // A point whose surroundings the field's edge cuts (the chin at a cone-beam field's floor, a
 // porion at its cylinder's wall) cannot be told from the cut: the bone's extreme may be the
 // edge's. Such a point is reported absent rather than invented.
@@ -230,7 +258,7 @@ Findings find_every_landmark(const HeadVolume& head, double scale, const RuleFin
   for (int side : {-1, 1}) {
     const std::string suffix = side > 0 ? "L" : "R";
     found["Po" + suffix] = find_porion(head, expected_position("Po" + suffix, scale), side);
-    found["Or" + suffix] = find_orbitale(head, expected_position("Or" + suffix, scale), side);
+    found["Or" + suffix] = find_orbitale(head, expected_position("Or" + suffix, scale), side, OrbitSearch::kWidening);
   }
   find_maxillary_midline(head, scale, found);
   find_incisors(head, scale, found);
@@ -282,6 +310,7 @@ LandmarkDetection detect_landmarks(const Volume& scan, const std::string& subjec
   result.midsagittal = frames.midsagittal;
   result.asymmetry_mm = frames.asymmetry;
   Eigen::Isometry3d frame = provisional_frame(ct, grey, frames.sagittal, subject, result);
+  const bool origin_at_sella = result.frame_source.starts_with("S-N");
   // Frankfort from porion and orbitale, found in the provisional frame.
   {
     const HeadVolume coarse(ct, grey, frame, head_box(result.scale), kCoarseSpacingMm);
@@ -304,6 +333,7 @@ LandmarkDetection detect_landmarks(const Volume& scan, const std::string& subjec
                                                      result.frame_source + ")";
     }
   }
+  if (!origin_at_sella) frame = centred_on_sella(ct, grey, frame, result.scale);
   result.head_frame = frame;
   // Every landmark, read in the head volume at the fine spacing, and again from a second start.
   const HeadVolume head(ct, grey, frame, head_box(result.scale), options.fine_spacing_mm);

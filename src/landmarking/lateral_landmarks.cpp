@@ -118,7 +118,9 @@ RuleFinding find_porion(const HeadVolume& v, const Eigen::Vector3d& expected, in
                             extent < 12 ? "a short bony ear canal" : "");
 }
 
-RuleFinding find_orbitale(const HeadVolume& v, const Eigen::Vector3d& expected, int side) {
+namespace {
+
+RuleFinding orbitale_across(const HeadVolume& v, const Eigen::Vector3d& expected, int side, double half_width) {
   // In each sagittal section across the orbit, rays from the front end on the face below the
   // rim and on the orbital floor above it; the floor lies far behind for a small rise, so where
   // the depth of the hit starts to grow faster than 2 mm per mm of height, the ray has passed the
@@ -126,7 +128,7 @@ RuleFinding find_orbitale(const HeadVolume& v, const Eigen::Vector3d& expected, 
   const std::string orbit = side > 0 ? "the left orbit" : "the right orbit";
   Profile rim;  // z holds x, y holds the rim's height; the rim's front is kept apart
   std::vector<double> rim_front;
-  for (double dx = -12; dx <= 12.01; dx += 0.5) {
+  for (double dx = -half_width; dx <= half_width + 0.01; dx += 0.5) {
     const double x = expected.x() + dx;
     Profile section = anterior_profile(v, expected.z() + 14, expected.z() - 12, expected.y() - 30, expected.y() + 40,
                                        kBoneHu, x, 0, 0.25);
@@ -175,6 +177,17 @@ RuleFinding find_orbitale(const HeadVolume& v, const Eigen::Vector3d& expected, 
   return RuleFinding::found(
       {x, front ? front->y() : rim_front[size_t(lowest)], z}, at_end ? 0.3 : 1,
       at_end ? "the rim does not rise on both sides of its lowest point within the searched width" : "");
+}
+
+constexpr double kOrbitHalfWidthMm = 12, kWideOrbitHalfWidthMm = 20;
+
+}  // namespace
+
+RuleFinding find_orbitale(const HeadVolume& v, const Eigen::Vector3d& expected, int side, OrbitSearch search) {
+  RuleFinding narrow = orbitale_across(v, expected, side, kOrbitHalfWidthMm);
+  if (search == OrbitSearch::kNarrow || !narrow.position || narrow.evidence >= 1) return narrow;
+  RuleFinding wide = orbitale_across(v, expected, side, kWideOrbitHalfWidthMm);
+  return wide.position && wide.evidence >= 1 ? wide : narrow;
 }
 
 }  // namespace maxillo::landmarking

@@ -19,7 +19,13 @@ RuleFinding find_porion(const HeadVolume& v, const Eigen::Vector3d& expected, in
 
 // Seen from the front, rays below the orbit end on the maxilla and zygoma while rays into the
 // orbit's opening go deep: the rim's lower edge is where that depth jumps, and Or is the lowest
-// point of the edge across the orbit's width.
-RuleFinding find_orbitale(const HeadVolume& v, const Eigen::Vector3d& expected, int side);
+// point of the edge across the orbit's width, sought across 24 mm about the expected place.
+// kWidening: where the edge's bottom does not rise on both sides within those (a head larger
+// than its frame's size says), across 40 mm too, taken when it rises on both sides there. Only
+// for the landmark read in the head frame: the frames' own searches keep the narrow one, as a
+// wider search moves the cadaver head's split rims, and its Frankfort frame with them.
+enum class OrbitSearch { kNarrow, kWidening };
+RuleFinding find_orbitale(const HeadVolume& v, const Eigen::Vector3d& expected, int side,
+                          OrbitSearch search = OrbitSearch::kNarrow);
 
 }  // namespace maxillo::landmarking
