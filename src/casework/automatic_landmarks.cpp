@@ -49,11 +49,18 @@ bool used_for_planning(const std::string& label) {
   return labels.count(label) > 0;
 }
 
-void require_confirmed_landmarks(const records::StoredLandmarks& set, const std::string& subject, bool accept_flagged) {
-  if (!set.automatic || accept_flagged) return;
-  std::string doubts;
+std::vector<std::string> flagged_for_planning(const records::StoredLandmarks& set) {
+  std::vector<std::string> flagged;
+  if (!set.automatic) return flagged;
   for (const auto& [label, why] : set.automatic->flagged)
-    if (used_for_planning(label)) doubts += (doubts.empty() ? "" : "; ") + label + " (" + why + ")";
+    if (used_for_planning(label)) flagged.push_back(label + " (" + why + ")");
+  return flagged;
+}
+
+void require_confirmed_landmarks(const records::StoredLandmarks& set, const std::string& subject, bool accept_flagged) {
+  if (accept_flagged) return;
+  std::string doubts;
+  for (const std::string& doubt : flagged_for_planning(set)) doubts += (doubts.empty() ? "" : "; ") + doubt;
   if (doubts.empty()) return;
   throw Error(ErrorCode::kBadValue, subject,
               "automatic landmarks that failed their checks are not used for planning: " + doubts +

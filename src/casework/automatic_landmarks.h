@@ -26,6 +26,10 @@ std::optional<records::StoredLandmarks> case_landmarks(Archive& archive, int64_t
 // The labels planning reads (bone and teeth; not the soft tissue, not Ar and Go).
 bool used_for_planning(const std::string& label);
 
+// Each flagged landmark of an automatic set that planning uses, as "label (its failed checks)";
+// none for a set given by hand.
+std::vector<std::string> flagged_for_planning(const records::StoredLandmarks& set);
+
 // Error(kBadValue, subject) naming each flagged landmark that planning uses, with its failed
 // checks and how to go on, unless the set was given by hand or `accept_flagged`.
 void require_confirmed_landmarks(const records::StoredLandmarks& set, const std::string& subject, bool accept_flagged);

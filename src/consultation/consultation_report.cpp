@@ -216,6 +216,10 @@ ConsultationResult write_consultation_report(Archive& archive, int64_t case_id, 
     model.sections.push_back(std::move(*dental));
   if (auto plan_result = records::latest_plan_result(archive, case_id))
     model.sections.push_back(sections::planning_section(*plan_result));
+  else if (auto plan = records::latest_plan(archive, case_id))
+    model.sections.push_back(sections::unapplied_plan_section(
+        *plan, case_id,
+        stored_landmarks ? casework::flagged_for_planning(*stored_landmarks) : std::vector<std::string>{}));
   if (auto occlusion = records::latest_occlusion(archive, case_id))
     model.sections.push_back(sections::occlusion_section(*occlusion, anatomical_frame(landmarks)));
   if (auto simulation = records::latest_simulation(archive, case_id))

@@ -133,6 +133,17 @@ void add_renders(report::Section& section, const std::vector<std::pair<std::stri
   if (!grid.figures.empty()) section.blocks.push_back(grid);
 }
 
+report::KeyValueBlock target_block(const planning::MaxillaryTarget& t) {
+  return report::KeyValueBlock{{
+      {"Target advancement", millimetres(t.advancement_mm)},
+      {"Target vertical change (+down)", millimetres(t.vertical_mm)},
+      {"Target widening", millimetres(t.widening_mm)},
+      {"Midline shift (+left)", millimetres(t.midline_shift_mm)},
+      {"Rotation (+anterior up)", degrees(t.rotation_deg)},
+      {"Counter-rotation of the vectors", degrees(t.counter_rotation_deg)},
+  }};
+}
+
 }  // namespace
 
 report::Section planning_section(const records::PlanResultRecord& result) {
@@ -141,17 +152,7 @@ report::Section planning_section(const records::PlanResultRecord& result) {
   if (!plan.description.empty()) section.blocks.push_back(report::Paragraph{plan.description});
   section.blocks.push_back(report::Paragraph{"Planned moves"});
   section.blocks.push_back(moves_table(result.moves));
-  if (plan.distraction) {
-    const planning::MaxillaryTarget& t = plan.distraction->target;
-    section.blocks.push_back(report::KeyValueBlock{{
-        {"Target advancement", millimetres(t.advancement_mm)},
-        {"Target vertical change (+down)", millimetres(t.vertical_mm)},
-        {"Target widening", millimetres(t.widening_mm)},
-        {"Midline shift (+left)", millimetres(t.midline_shift_mm)},
-        {"Rotation (+anterior up)", degrees(t.rotation_deg)},
-        {"Counter-rotation of the vectors", degrees(t.counter_rotation_deg)},
-    }});
-  }
+  if (plan.distraction) section.blocks.push_back(target_block(plan.distraction->target));
   if (result.distraction) add_distraction(section, *result.distraction);
   if (result.feasible)
     section.blocks.push_back(report::Paragraph{"All distractor checks passed."});
@@ -168,6 +169,27 @@ report::Section planning_section(const records::PlanResultRecord& result) {
       " (source ch. 5: origin N, X through N with SN rotated 6\u00b0, transverse axis from Frankfort). "
       "Advance + forward, vertical + down, lateral + patient's left; pitch + anterior end up, roll + left side up, "
       "yaw + anterior end to the left. Widening is the transverse expansion between the two maxillary halves."});
+  return section;
+}
+
+report::Section unapplied_plan_section(const records::StoredPlan& stored, int64_t case_id,
+                                       const std::vector<std::string>& flagged) {
+  report::Section section{"planning", {}};
+  const planning::Plan& plan = stored.plan;
+  if (!plan.description.empty()) section.blocks.push_back(report::Paragraph{plan.description});
+  if (plan.distraction) section.blocks.push_back(target_block(plan.distraction->target));
+  const std::string apply = "maxillo plan apply " + std::to_string(case_id);
+  section.blocks.push_back(report::Paragraph{
+      "Plan version " + std::to_string(stored.version) + ", stored " + stored.created_at + ", not applied yet: `" +
+      apply + "` computes the planned moves, the distractors' vectors and their checks, and the predicted face."});
+  if (!flagged.empty()) {
+    std::string text =
+        "It will be refused until these automatic landmarks, which failed their checks, are confirmed by "
+        "hand (`maxillo ceph add`) or accepted with `" +
+        apply + " --accept-flagged`:";
+    for (size_t i = 0; i < flagged.size(); ++i) text += (i ? "; " : " ") + flagged[i];
+    section.blocks.push_back(report::Note{text + "."});
+  }
   return section;
 }
 

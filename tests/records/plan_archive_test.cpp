@@ -114,6 +114,34 @@ TEST(PlanningSection, ShowsVectorsChecksScheduleAndSimulation) {
   for (const auto& row : simulation->rows) EXPECT_EQ(row[3], "0.00 mm") << row[0];
 }
 
+// A plan created and not applied (a real CT whose automatic landmarks are flagged) is shown with
+// its target and what applying it needs, not left out of the report.
+TEST(PlanningSection, APlanNotAppliedSaysHowToApplyItAndWhatWouldRefuseIt) {
+  records::StoredPlan stored;
+  stored.version = 2;
+  stored.created_at = "2026-11-29T10:00:00Z";
+  stored.plan = planning::distraction_plan({.advancement_mm = 6});
+  auto text_of = [](const report::Section& section) {
+    std::string text;
+    for (const auto& block : section.blocks) {
+      if (const auto* p = std::get_if<report::Paragraph>(&block)) text += p->text + "\n";
+      if (const auto* n = std::get_if<report::Note>(&block)) text += n->text + "\n";
+      if (const auto* kv = std::get_if<report::KeyValueBlock>(&block))
+        for (const auto& [key, value] : kv->pairs) text += key + ": " + value + "\n";
+    }
+    return text;
+  };
+  const std::string flagged = text_of(sections::unapplied_plan_section(stored, 7, {"OrL (mirror: 19.6 mm)"}));
+  EXPECT_NE(flagged.find("TS-MD distraction: 6 mm advancement"), std::string::npos) << flagged;
+  EXPECT_NE(flagged.find("Target advancement: 6.0 mm"), std::string::npos) << flagged;
+  EXPECT_NE(flagged.find("Plan version 2, stored 2026-11-29T10:00:00Z, not applied yet: `maxillo plan apply 7`"),
+            std::string::npos)
+      << flagged;
+  EXPECT_NE(flagged.find("--accept-flagged`: OrL (mirror: 19.6 mm)."), std::string::npos) << flagged;
+  const std::string confirmed = text_of(sections::unapplied_plan_section(stored, 7, {}));
+  EXPECT_EQ(confirmed.find("refused"), std::string::npos) << confirmed;
+}
+
 // Issue 17: a stored plan result is one record read strictly. What the report shows reads back,
 // and a result that lost or garbled a field is an error naming the artefact and the key, never a
 // zero in the report or a plan read as feasible.
