@@ -13,11 +13,10 @@ namespace {
 constexpr double kSpacingMm = 1.0;
 constexpr double kPitchReachDeg = 30, kPitchStepDeg = 5;
 constexpr double kMaxCanalMismatchMm = 15;  // the two canals' heights and depths differ by less
-constexpr double kMaxMisplacementMm = 5;
+constexpr double kMaxMisplacementMm = 5;    // an orbitale this far from where its pitch put it is another edge
 // The sizes tried when the canals' distance gives none: steps of 6 mm in the porion-orbitale
 // distance, so that with the pitch's step an orbitale lies within kMaxMisplacementMm of one try.
-constexpr double kMinScale = 0.8, kMaxScale = 1.3,
-                 kScaleStep = 0.08;  // an orbitale this far from where its pitch put it is another edge
+constexpr double kMinScale = 0.8, kMaxScale = 1.3, kScaleStep = 0.08;
 
 struct Porions {
   Eigen::Vector3d left, right;

@@ -33,8 +33,6 @@ DistractionVector vector_of(const PlanningFrame& frame, const MaxillaryTarget& t
 
 }  // namespace
 
-double side_sign(Side side) { return side == Side::Left ? 1.0 : -1.0; }
-
 std::string_view side_name(Side side) { return side == Side::Right ? "right" : "left"; }
 
 double midline_yaw_deg(const PlanningFrame& frame, const MaxillaryTarget& target, const MaxillaryReference& ref) {

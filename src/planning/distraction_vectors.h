@@ -56,7 +56,6 @@ struct MaxillaryTarget {
 
 enum class Side { Right, Left };
 std::string_view side_name(Side side);  // "right", "left"
-double side_sign(Side side);            // +1 left, -1 right: the sign along PlanningFrame::left
 // +1 for the patient's left half, -1 for the right (the frame's transverse axis points left).
 inline double outward_sign(Side side) { return side == Side::Left ? 1.0 : -1.0; }
 

@@ -48,8 +48,7 @@ std::optional<Vector3d> sinus_centroid(const LabelVolume& volume, const Planning
       for (int i = 0; i < g.size.x(); ++i) {
         if (!is_labelled(anatomy.sinus_air, volume.labels[g.index(i, j, k)])) continue;
         const Vector3d p = g.world(Vector3d(i, j, k));
-        if (side_sign(side) * (p - frame.origin).dot(frame.left) <= 0) continue;
-        if (!box.height.contains(p.dot(frame.superior)) || !box.depth.contains(p.dot(frame.anterior))) continue;
+        if (!box.contains(p, frame, side)) continue;
         sum += p;
         ++count;
       }
@@ -199,7 +198,7 @@ std::optional<Vector3d> orbitale_of(const LandmarkSet& landmarks, const Planning
   if (!single) return std::nullopt;
   // One orbitale (a profile tracing): mirror it to the requested side of the mid-sagittal plane.
   const double lateral = (*single - frame.origin).dot(frame.left);
-  if (lateral * side_sign(side) >= 0) return single;
+  if (lateral * outward_sign(side) >= 0) return single;
   return Vector3d(*single - 2 * lateral * frame.left);
 }
 

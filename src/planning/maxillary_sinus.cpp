@@ -12,18 +12,7 @@ namespace {
 
 using Eigen::Vector3d;
 
-// The box's voxels on one side of the midsagittal plane, as index ranges of the grid: every
-// voxel whose centre lies in the box is within them.
-struct IndexBox {
-  Eigen::Vector3i from, to;
-};
-
 constexpr int kMaxOpenSides = 1;
-
-bool in_box(const Vector3d& p, const SinusBox& box, const PlanningFrame& frame, Side side) {
-  return side_sign(side) * (p - frame.origin).dot(frame.left) > 0 && box.height.contains(p.dot(frame.superior)) &&
-         box.depth.contains(p.dot(frame.anterior));
-}
 
 double enclosed_air_cm3(const LabelVolume& labels, const PlanningFrame& frame, const AnatomyLabels& anatomy, Side side,
                         const SinusBox& box) {
@@ -33,7 +22,7 @@ double enclosed_air_cm3(const LabelVolume& labels, const PlanningFrame& frame, c
     for (int j = 0; j < g.size.y(); ++j)
       for (int i = 0; i < g.size.x(); ++i)
         if (is_labelled(anatomy.sinus_air, labels.labels[g.index(i, j, k)]) &&
-            in_box(g.world(Vector3d(i, j, k)), box, frame, side))
+            box.contains(g.world(Vector3d(i, j, k)), frame, side))
           ++count;
   return count * g.spacing.prod() / 1000;
 }
@@ -62,7 +51,7 @@ bool wall_within_reach(const LabelVolume& labels, const AnatomyLabels& anatomy, 
 std::vector<uint8_t> walled_open_air(const LabelVolume& labels, const PlanningFrame& frame,
                                      const AnatomyLabels& anatomy, Side side, const SinusBox& box) {
   const VolumeGeometry& g = labels.geometry;
-  const Vector3d lateral = side_sign(side) * frame.left;
+  const Vector3d lateral = outward_sign(side) * frame.left;
   const Vector3d other_sides[] = {lateral, -frame.anterior, frame.superior, -frame.superior};
   std::vector<uint8_t> mask(labels.labels.size(), 0);
   for (int k = 0; k < g.size.z(); ++k)
@@ -71,7 +60,7 @@ std::vector<uint8_t> walled_open_air(const LabelVolume& labels, const PlanningFr
         const size_t index = g.index(i, j, k);
         if (!is_labelled(anatomy.open_air, labels.labels[index])) continue;
         const Vector3d p = g.world(Vector3d(i, j, k));
-        if (!in_box(p, box, frame, side) || (p - frame.origin).dot(lateral) < kNasalHalfWidthMm) continue;
+        if (!box.contains(p, frame, side) || (p - frame.origin).dot(lateral) < kNasalHalfWidthMm) continue;
         if (!wall_within_reach(labels, anatomy, p, frame.anterior)) continue;
         int open_sides = 0;
         for (const Vector3d& d : other_sides) open_sides += wall_within_reach(labels, anatomy, p, d) ? 0 : 1;
@@ -87,6 +76,11 @@ std::string cm3(double value) {
 }
 
 }  // namespace
+
+bool SinusBox::contains(const Vector3d& p, const PlanningFrame& frame, Side side) const {
+  return outward_sign(side) * (p - frame.origin).dot(frame.left) > 0 && height.contains(p.dot(frame.superior)) &&
+         depth.contains(p.dot(frame.anterior));
+}
 
 SinusBox sinus_box(const PlanningFrame& frame, const LandmarkSet& landmarks) {
   SinusBox box;

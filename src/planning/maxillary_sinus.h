@@ -25,6 +25,7 @@
 #include "ceph/landmark.h"
 #include "core/volume.h"
 #include "planning/anatomical_moves.h"
+#include "planning/distraction_vectors.h"
 
 namespace maxillo::planning {
 
@@ -49,6 +50,8 @@ struct Interval {
 struct SinusBox {
   Interval height, depth;
   bool bounded() const { return height.bounded() && depth.bounded(); }
+  // Whether `p` (LPS) lies in the box on `side` of the midsagittal plane through frame.origin.
+  bool contains(const Eigen::Vector3d& p, const PlanningFrame& frame, Side side) const;
 };
 SinusBox sinus_box(const PlanningFrame& frame, const LandmarkSet& landmarks);
 
