@@ -89,6 +89,8 @@ SoftTissueOptions model_options(const FaceRealismOptions& variant, SoftTissueMod
   options.nose_root = variant.nose_root;
   options.part_lips = variant.part_lips;
   options.nose_stiffness = variant.nose_stiffness;
+  options.meshing = variant.meshing;
+  options.poisson_ratio = variant.poisson_ratio;
   return options;
 }
 
@@ -113,6 +115,7 @@ Json run_model(const PreparedHead& head, const casework::FaceModel& face, double
     run["fixed_nodes"] = softtissue::count_nodes(prediction.bc, softtissue::NodeConstraint::kFixed);
     run["prescribed_nodes"] = softtissue::count_nodes(prediction.bc, softtissue::NodeConstraint::kPrescribed);
     run["sliding_nodes"] = softtissue::count_nodes(prediction.bc, softtissue::NodeConstraint::kSliding);
+    run["nose_nodes_uncarried"] = prediction.nose_nodes_uncarried;
   } catch (const Error& error) {
     run["seconds"] = seconds_since(start);
     run["error"] = error.what();
@@ -148,6 +151,7 @@ Json run_face_realism_benchmark(const FaceRealismOptions& options) {
                   {"part_lips", options.part_lips},
                   {"lips_parted_faces", face.lips_parted.faces},
                   {"nose_stiffness", options.nose_stiffness},
+                  {"poisson_ratio", options.poisson_ratio},
                   {"nose_tets", face.nose_tets},
                   {"face_model",
                    {{"tets", face.mesh.tet_count()},
@@ -180,8 +184,14 @@ std::string face_realism_text(const Json& figures) {
   if (figures["nose_root"].get<bool>()) text += "the region goes on above the orbits in front of the eyes\n";
   if (figures["part_lips"].get<bool>())
     text += formatted("the model parted between the lips: %d faces\n", figures["lips_parted_faces"].get<int>());
-  text += formatted("the cartilaginous nose: %d tets, %.0f times the soft tissue's stiffness\n",
-                    figures["nose_tets"].get<int>(), figures["nose_stiffness"].get<double>());
+  text += formatted("the cartilaginous nose: %d tets, %.0f times the soft tissue's stiffness; Poisson ratio %.3g\n",
+                    figures["nose_tets"].get<int>(), figures["nose_stiffness"].get<double>(),
+                    figures["poisson_ratio"].get<double>());
+  for (const auto& run : figures["runs"])  // the same face model and moved segments in every run
+    if (run.contains("nose_nodes_uncarried")) {
+      text += formatted("the nose's nodes on the moved bone, left free: %d\n", run["nose_nodes_uncarried"].get<int>());
+      break;
+    }
   text += "forward move / advancement at the profile points; * outside the plausible band\n";
   text += formatted("%-6s %-5s", "adv mm", "model");
   for (const auto& p : figures["published"]) text += formatted(" %7s", p["label"].get<std::string>().c_str());

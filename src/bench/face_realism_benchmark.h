@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "casework/nasal_cartilage.h"
+#include "casework/soft_tissue_prediction.h"
 #include "core/json.h"
 #include "softtissue/bone_attachment.h"
 
@@ -22,16 +23,20 @@ struct FaceRealismOptions {
   double nose_stiffness = casework::kNasalCartilageStiffness;  // SoftTissueOptions::nose_stiffness
   // How tissue on the moved bone follows it (AttachmentOptions::moved_bone_contact).
   softtissue::MovedBoneContact bone_contact = softtissue::AttachmentOptions{}.moved_bone_contact;
+  // The face model's meshing (SoftTissueOptions::meshing): a finer cell shows how much the
+  // profile readings owe to the mesh.
+  tetmesh::TetMeshingOptions meshing = casework::SoftTissueOptions{}.meshing;
+  double poisson_ratio = casework::SoftTissueOptions{}.poisson_ratio;
 };
 
 // Error(kFileNotFound) when the cadaver head is absent. Figures: preparation_seconds,
-// landmarks_by_hand, free_cavities, bone_contact (softtissue::contact_name), nose_root, part_lips, lips_parted_faces, nose_stiffness, nose_tets, face_model (tets, nodes, cell_mm, seconds), published (label,
+// landmarks_by_hand, free_cavities, bone_contact (softtissue::contact_name), nose_root, part_lips, lips_parted_faces, nose_stiffness, poisson_ratio, nose_tets, face_model (tets, nodes, cell_mm, seconds), published (label,
 // published, source, plausible_low/high), advancements_mm, runs (advancement_mm, model, title,
 // seconds; error when it failed, else iterations, points: label, present, forward_mm, ratio,
 // plausible; gradient_p999, gradient_max, moved_edges; boundary_move_mm, the largest move within
 // 5 mm inside each region plane where it cuts tissue: below the orbits, under the chin, in front
 // of the ears, and with nose_root above the orbits, under the forehead's cut, in front of the eyes;
-// fixed_nodes, prescribed_nodes, sliding_nodes), peak_memory_mb.
+// fixed_nodes, prescribed_nodes, sliding_nodes, nose_nodes_uncarried), peak_memory_mb.
 Json run_face_realism_benchmark(const FaceRealismOptions& options);
 
 std::string face_realism_text(const Json& figures);

@@ -106,6 +106,7 @@ records::SimulationSummary summarise(const SimulationResult& result, const Simul
   summary.bone_contact = softtissue::contact_name(options.attachment.moved_bone_contact);
   summary.iterations = p.iterations;
   summary.nose_tets = p.nose_tets;
+  summary.nose_nodes_uncarried = p.nose_nodes_uncarried;
   summary.nose_stiffness = p.nose_stiffness;
   summary.max_skin_displacement_mm = p.skin_displacement.rows() ? p.skin_displacement.rowwise().norm().maxCoeff() : 0;
   summary.seconds = p.seconds;

@@ -7,6 +7,10 @@ namespace {
 
 constexpr double kHalfAlarWidthMm = 17;
 
+bool centroid_inside(const softtissue::TetMesh& mesh, int t, const softtissue::RegionShape& region) {
+  return region.contains(softtissue::tet_corners(mesh, t).colwise().mean().transpose());
+}
+
 }  // namespace
 
 std::optional<softtissue::RegionShape> nasal_cartilage_region(const LandmarkSet& landmarks) {
@@ -30,12 +34,19 @@ int stiffen_region(softtissue::TetMesh& mesh, const softtissue::RegionShape& reg
   if (mesh.stiffness.empty()) mesh.stiffness.assign(size_t(mesh.tet_count()), 1.0);
   int inside = 0;
   for (int t = 0; t < mesh.tet_count(); ++t) {
-    const Eigen::Vector3d centroid = softtissue::tet_corners(mesh, t).colwise().mean().transpose();
-    if (!region.contains(centroid)) continue;
+    if (!centroid_inside(mesh, t, region)) continue;
     mesh.stiffness[size_t(t)] = factor;
     ++inside;
   }
   return inside;
+}
+
+std::vector<uint8_t> region_tet_nodes(const softtissue::TetMesh& mesh, const softtissue::RegionShape& region) {
+  std::vector<uint8_t> nodes(size_t(mesh.node_count()), 0);
+  for (int t = 0; t < mesh.tet_count(); ++t)
+    if (centroid_inside(mesh, t, region))
+      for (int corner = 0; corner < 4; ++corner) nodes[size_t(mesh.tets(t, corner))] = 1;
+  return nodes;
 }
 
 }  // namespace maxillo::casework

@@ -14,7 +14,9 @@
 //   above subnasale Sn (the columella's foot; the upper lip below it stays soft tissue);
 //   within 17 mm of the midline through pronasale Prn (an adult's alar base is about 35 mm wide).
 // The face region bounds it above (below the orbits, or up to the forehead's cut).
+#include <cstdint>
 #include <optional>
+#include <vector>
 
 #include "ceph/landmark.h"
 #include "softtissue/face_region.h"
@@ -44,5 +46,14 @@ std::optional<softtissue::RegionShape> nasal_cartilage_region(const LandmarkSet&
 // Gives the tets whose centroid lies in `region` the stiffness `factor` (the others keep theirs,
 // 1 when the mesh had none). Returns how many tets lie in the region.
 int stiffen_region(softtissue::TetMesh& mesh, const softtissue::RegionShape& region, double factor);
+
+// Per node of `mesh`, 1 for a corner of a tet whose centroid lies in `region` (stiffen_region's
+// tets), else 0. The case workflow passes the nose's to softtissue::attach_to_bone as tissue that
+// the moved bone does not carry: a Le Fort I frees the septum from the maxillary crest, so the
+// cartilaginous nose follows the tissue around it, not the bone. Joined to the maxilla, the few
+// nodes of this stiff region that touch it (2 at 4 mm cells, 3 at 2.5 mm on the cadaver head)
+// drove the whole nose: its tip moved 0.31 of a 6 mm advancement at 4 mm cells and 0.40 at
+// 2.5 mm; free, 0.18 and 0.19 (docs/ARCHITECTURE.md, "Soft tissue realism").
+std::vector<uint8_t> region_tet_nodes(const softtissue::TetMesh& mesh, const softtissue::RegionShape& region);
 
 }  // namespace maxillo::casework

@@ -210,8 +210,10 @@ FaceModel build_face_model(const LabelVolume& tissues, const LandmarkSet& landma
                  " faces, ", model.lips_parted.added_nodes, " nodes added");
     }
   if (options.nose_stiffness != 1)
-    if (const auto nose = nasal_cartilage_region(landmarks))
+    if (const auto nose = nasal_cartilage_region(landmarks)) {
       model.nose_tets = stiffen_region(model.mesh, *nose, options.nose_stiffness);
+      model.nose_nodes = region_tet_nodes(model.mesh, *nose);
+    }
   model.meshing = {meshed.cell_size_mm, meshed.attempts, meshed.tet_budget};
   model.quality = softtissue::mesh_quality(model.mesh);
   model.meshing_seconds = seconds_since(start);
@@ -239,9 +241,10 @@ SoftTissuePrediction predict_soft_tissue(const SoftTissueInput& input, const Sof
   prediction.seconds.meshing = given ? 0 : model.meshing_seconds;
 
   auto start = Clock::now();
-  auto attachment =
-      softtissue::attach_to_bone(prediction.mesh, *input.segments, input.moves, model.region, options.attachment);
+  auto attachment = softtissue::attach_to_bone(prediction.mesh, *input.segments, input.moves, model.region,
+                                               options.attachment, model.nose_nodes);
   prediction.bc = std::move(attachment.bc);
+  prediction.nose_nodes_uncarried = attachment.uncarried_nodes;
   prediction.seconds.attachment = seconds_since(start);
   if (softtissue::count_nodes(prediction.bc, softtissue::NodeConstraint::kFixed) == 0)
     throw Error(ErrorCode::kProcessing, "soft tissue model",
@@ -276,6 +279,7 @@ SoftTissuePrediction resolve_soft_tissue(const SoftTissuePrediction& base, const
   prediction.lips = base.lips;
   prediction.lips_parted = base.lips_parted;
   prediction.nose_tets = base.nose_tets;
+  prediction.nose_nodes_uncarried = base.nose_nodes_uncarried;
   prediction.nose_stiffness = base.nose_stiffness;
   prediction.region = base.region;
   auto start = Clock::now();

@@ -87,8 +87,9 @@ struct SoftTissuePrediction {
   std::map<uint8_t, Eigen::Isometry3d> bone_moves;  // the segments' moves it was solved for
   std::optional<LipParting> lips;                   // the face model's parting between the lips
   softtissue::Parting lips_parted;
-  int nose_tets = 0;          // the face model's tets of the cartilaginous nose
-  double nose_stiffness = 1;  // their Young's modulus over the soft tissue's
+  int nose_tets = 0;             // the face model's tets of the cartilaginous nose
+  int nose_nodes_uncarried = 0;  // its nodes touching moved bone, left free (nasal_cartilage.h)
+  double nose_stiffness = 1;     // their Young's modulus over the soft tissue's
   // Per skin vertex: +1 upper lip, -1 lower lip (bound to a tet parted there), else 0.
   std::vector<int8_t> skin_lip_side;
   // Per plane of the face region (RegionShape::planes() order, named by face_region_plane_names),
@@ -119,6 +120,7 @@ struct FaceModel {
   std::optional<LipParting> lips;   // where the mesh was parted between the lips (none: not asked for, or no stomion)
   softtissue::Parting lips_parted;  // the faces parted there
   int nose_tets = 0;                // tets given the nose's stiffness (0: none asked for, or no nose region)
+  std::vector<uint8_t> nose_nodes;  // per node, 1 for a corner of those tets: no moved bone carries them
   softtissue::MeshQuality quality;
   MeshingOutcome meshing;
   double region_seconds = 0, meshing_seconds = 0;

@@ -46,8 +46,13 @@ void attach_bench_face(CLI::App& bench, CommandContext& ctx) {
                    "with --real: Young's modulus of the cartilaginous nose over the soft tissue's (1: homogeneous)")
       ->check(CLI::Range(1.0, 1000.0))
       ->capture_default_str();
-  face->callback([args, real, realism, contact, &ctx] {
+  face->add_option("--poisson", realism->poisson_ratio, "with --real: the soft tissue's Poisson ratio")
+      ->check(CLI::Range(0.0, 0.499))
+      ->capture_default_str();
+  face->callback([args, real, realism, contact, face, &ctx] {
     if (*real) {
+      if (face->count("--cell-mm") > 0) realism->meshing.cell_size_mm = args->cell_mm;
+      if (face->count("--max-tets") > 0) realism->meshing.max_tets = args->max_tets;
       realism->bone_contact = *softtissue::contact_named(*contact);
       const Json figures = bench::run_face_realism_benchmark(*realism);
       std::cout << (ctx.global.json ? json_text(figures) + "\n" : bench::face_realism_text(figures));

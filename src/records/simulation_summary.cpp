@@ -166,6 +166,7 @@ Json to_json(const SimulationSummary& s) {
     json["sliding_nodes"] = s.sliding_nodes;
     json["bone_contact"] = s.bone_contact;
   }
+  if (s.format_version >= 6) json["nose_nodes_uncarried"] = s.nose_nodes_uncarried;
   if (s.uncertainty)
     json["uncertainty"] = {
         {"runs", s.uncertainty->runs}, {"p95_mm", s.uncertainty->p95_mm}, {"max_mm", s.uncertainty->max_mm}};
@@ -222,6 +223,7 @@ SimulationSummary read_simulation_summary(const Json& json, const std::string& s
     if (!softtissue::contact_named(s.bone_contact))
       r.fail("bone_contact", "unknown contact \"" + s.bone_contact + "\"");
   }
+  if (s.format_version >= 6) s.nose_nodes_uncarried = count(r, "nose_nodes_uncarried");
   return s;
 }
 

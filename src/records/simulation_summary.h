@@ -22,7 +22,9 @@ struct SimulationSummary {
   // model was one homogeneous tissue.
   // 5: sliding_nodes and bone_contact (how tissue on moved bone follows it,
   // softtissue/bone_attachment.h), required from 5 on; before it that tissue was tied to the bone.
-  static constexpr int kFormatVersion = 5;
+  // 6: nose_nodes_uncarried (the cartilaginous nose's nodes on moved bone, left free), required
+  // from 6 on; before it the moved bone carried them.
+  static constexpr int kFormatVersion = 6;
 
   struct UncertaintyBand {
     std::vector<std::string> runs;  // "mtm nu=0.46", ...
@@ -90,6 +92,7 @@ struct SimulationSummary {
   std::optional<ModelFallback> model_fallback;      // version 4: none when the model asked for ran
   int sliding_nodes = 0;                            // version 5: nodes sliding on moved bone
   std::string bone_contact = "tied";                // version 5: softtissue::contact_name of the attachment
+  int nose_nodes_uncarried = 0;                     // version 6: the nose's nodes on moved bone, left free
 };
 
 Json to_json(const SimulationSummary& summary);

@@ -70,8 +70,13 @@ const std::vector<std::pair<std::string, std::string>> kThreeViews{
 // The tissues the model tells apart (summaries before format 4: one homogeneous tissue).
 std::string tissues_text(const records::SimulationSummary& s) {
   if (s.nose_tets == 0) return "one homogeneous soft tissue";
-  return "soft tissue, and the cartilaginous nose (" + std::to_string(s.nose_tets) + " tetrahedra) " +
-         fixed(s.nose_stiffness, 0) + " times stiffer";
+  std::string text = "soft tissue, and the cartilaginous nose (" + std::to_string(s.nose_tets) + " tetrahedra) " +
+                     fixed(s.nose_stiffness, 0) + " times stiffer";
+  // From format 6 the moved bone does not carry the nose (casework/nasal_cartilage.h).
+  if (s.format_version >= 6)
+    text += ", which follows the tissue, not the moved bone (" + std::to_string(s.nose_nodes_uncarried) +
+            " of its nodes on the bone left free, as the septum is freed from the maxilla)";
+  return text;
 }
 
 report::KeyValueBlock model_facts(const records::SimulationSummary& s, const std::string& title) {

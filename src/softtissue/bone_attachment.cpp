@@ -1,5 +1,6 @@
 #include "softtissue/bone_attachment.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -74,8 +75,9 @@ bool ray_meets_bone(const LabelVolume& segments, const Eigen::Vector3d& p, const
 // A piece of the mesh that no fixed or prescribed node anchors (the lining of a sinus, cut off
 // from the face by the mesher, that only cavities or sliding contact held) would float with
 // nothing to hold it, and its solve would have no answer: its nodes follow their bone after all.
-// `inner_segment`: per node, the moved segment whose cavity left it free (0 = none).
-void hold_floating_pieces(const TetMesh& mesh, const std::vector<uint8_t>& inner_segment,
+// `loose_segment`: per node, the moved segment it touches but was left free by (in its cavity, or
+// not carried by it; 0 = none).
+void hold_floating_pieces(const TetMesh& mesh, const std::vector<uint8_t>& loose_segment,
                           const std::map<uint8_t, Eigen::Isometry3d>& moves, Attachment& result) {
   const int n = mesh.node_count();
   topology::UnionFind pieces(n);
@@ -92,13 +94,23 @@ void hold_floating_pieces(const TetMesh& mesh, const std::vector<uint8_t>& inner
       result.bc.constraint[size_t(i)] = NodeConstraint::kPrescribed;  // its displacement is the bone's move
       continue;
     }
-    const uint8_t s = inner_segment[size_t(i)];
+    const uint8_t s = loose_segment[size_t(i)];
     if (!s) continue;
     const Eigen::Vector3d p = mesh.nodes.row(i).transpose();
     result.bc.constraint[size_t(i)] = NodeConstraint::kPrescribed;
     result.bc.displacement.row(i) = (moves.at(s) * p - p).transpose();
     result.segment[size_t(i)] = s;
-    --result.inner_nodes;
+  }
+}
+
+// How many nodes touching moved bone were left free, and why: inside its cavity (`in_cavity`) or
+// not carried by it.
+void count_loose_nodes(const std::vector<uint8_t>& loose_segment, const std::vector<uint8_t>& in_cavity,
+                       Attachment& result) {
+  result.inner_nodes = result.uncarried_nodes = 0;
+  for (size_t i = 0; i < loose_segment.size(); ++i) {
+    if (!loose_segment[i] || result.bc.constraint[i] != NodeConstraint::kFree) continue;
+    ++(in_cavity[i] ? result.inner_nodes : result.uncarried_nodes);
   }
 }
 
@@ -164,22 +176,26 @@ bool inside_bone_cavity(const LabelVolume& segments, const Eigen::Vector3d& p, c
 
 Attachment attach_to_bone(const TetMesh& mesh, const LabelVolume& segments,
                           const std::map<uint8_t, Eigen::Isometry3d>& moves, const RegionShape& region,
-                          const AttachmentOptions& options) {
+                          const AttachmentOptions& options, const std::vector<uint8_t>& not_carried) {
   const int n = mesh.node_count();
   Attachment result;
   result.bc = all_free(n);
   result.segment.assign(size_t(n), 0);
-  std::vector<uint8_t> inner_segment(size_t(n), 0);
+  std::vector<uint8_t> loose_segment(size_t(n), 0), in_cavity(size_t(n), 0);
   for (int i = 0; i < n; ++i) {
     const Eigen::Vector3d p = mesh.nodes.row(i).transpose();
     const uint8_t s = nearest_segment(segments, p, options.touch_mm);
     result.segment[size_t(i)] = s;
     if (s) {
       auto move = moves.find(s);
-      if (move != moves.end() && options.outer_surface_only && inside_bone_cavity(segments, p, options)) {
-        inner_segment[size_t(i)] = s;
+      const bool carried = not_carried.empty() || !not_carried[size_t(i)];
+      if (move != moves.end() && !carried) {
+        loose_segment[size_t(i)] = s;
         result.segment[size_t(i)] = 0;
-        ++result.inner_nodes;
+      } else if (move != moves.end() && options.outer_surface_only && inside_bone_cavity(segments, p, options)) {
+        loose_segment[size_t(i)] = s;
+        in_cavity[size_t(i)] = 1;
+        result.segment[size_t(i)] = 0;
       } else if (move != moves.end()) {
         join_to_moved_bone(segments, i, p, move->second, options, result.bc);
       } else {
@@ -189,7 +205,9 @@ Attachment attach_to_bone(const TetMesh& mesh, const LabelVolume& segments,
       result.bc.constraint[size_t(i)] = NodeConstraint::kFixed;
     }
   }
-  if (result.inner_nodes || any_sliding(result.bc)) hold_floating_pieces(mesh, inner_segment, moves, result);
+  const bool any_loose = std::any_of(loose_segment.begin(), loose_segment.end(), [](uint8_t s) { return s != 0; });
+  if (any_loose || any_sliding(result.bc)) hold_floating_pieces(mesh, loose_segment, moves, result);
+  count_loose_nodes(loose_segment, in_cavity, result);
   return result;
 }
 

@@ -57,6 +57,7 @@ struct Attachment {
   BoundaryConditions bc;
   std::vector<uint8_t> segment;  // per node: the bone segment it is joined to (0 = none)
   int inner_nodes = 0;           // nodes touching a moved segment inside its cavities, left free
+  int uncarried_nodes = 0;       // nodes touching a moved segment that the caller said it does not carry
 };
 
 // Whether a node at `p`, touching the bone of `segments` around it, lies inside a cavity of
@@ -65,8 +66,12 @@ bool inside_bone_cavity(const LabelVolume& segments, const Eigen::Vector3d& p, c
 
 // `segments` labels bone segments (0 = no bone); `moves` gives the rigid move of each moved
 // segment (pre-op -> planned, LPS mm); segments absent from `moves` stay where they are.
+// `not_carried`: per node (or empty), non-zero where no moved segment carries the tissue: such a
+// node touching moved bone is left free (touching unmoved bone it is still fixed). The case
+// workflow passes the cartilaginous nose (casework/nasal_cartilage.h): it follows the tissue, not
+// the bone. A piece of the mesh that nothing else anchors follows its bone after all.
 Attachment attach_to_bone(const TetMesh& mesh, const LabelVolume& segments,
                           const std::map<uint8_t, Eigen::Isometry3d>& moves, const RegionShape& region,
-                          const AttachmentOptions& options = {});
+                          const AttachmentOptions& options = {}, const std::vector<uint8_t>& not_carried = {});
 
 }  // namespace maxillo::softtissue

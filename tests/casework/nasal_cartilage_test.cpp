@@ -72,5 +72,15 @@ TEST(NasalCartilage, TheTetsWhoseCentreLiesInsideTakeTheFactor) {
   }
 }
 
+TEST(NasalCartilage, TheRegionsNodesAreTheCornersOfItsTets) {
+  // A 10 mm cube in 4 x 4 x 4 hexes of six tets: the upper half's tets have their corners on the
+  // three node layers z = 5, 7.5 and 10; none below.
+  const auto mesh = softtissue::make_cube_mesh({10.0, 4, softtissue::HexSplit::kSixTets});
+  const softtissue::RegionShape upper_half(std::vector<softtissue::RegionPlane>{{{0, 0, 5}, {0, 0, 1}}});
+  const auto nodes = region_tet_nodes(mesh, upper_half);
+  ASSERT_EQ(nodes.size(), size_t(mesh.node_count()));
+  for (int i = 0; i < mesh.node_count(); ++i) EXPECT_EQ(nodes[size_t(i)], mesh.nodes(i, 2) >= 5 - 1e-9 ? 1 : 0) << i;
+}
+
 }  // namespace
 }  // namespace maxillo::casework

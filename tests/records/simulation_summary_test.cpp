@@ -52,6 +52,7 @@ SimulationSummary example_summary() {
   s.model_fallback = SimulationSummary::ModelFallback{"nfem", "Newton's method did not converge"};
   s.sliding_nodes = 1234;
   s.bone_contact = "sliding";
+  s.nose_nodes_uncarried = 3;
   return s;
 }
 
@@ -91,6 +92,17 @@ TEST(SimulationSummary, RoundTripsThroughItsText) {
   EXPECT_FALSE(read_simulation_summary(to_json(ran_as_asked), "test").model_fallback);
   EXPECT_EQ(read.sliding_nodes, 1234);
   EXPECT_EQ(read.bone_contact, "sliding");
+  EXPECT_EQ(read.nose_nodes_uncarried, 3);
+}
+
+// Version 5 summaries (the moved bone carried the nose's nodes on it) still read so.
+TEST(SimulationSummary, AVersion5SummaryReadsWithTheNoseCarriedByTheBone) {
+  Json v5 = to_json(example_summary());
+  v5.erase("nose_nodes_uncarried");
+  v5["format_version"] = 5;
+  const SimulationSummary read = read_simulation_summary(v5, "test");
+  EXPECT_EQ(read.nose_nodes_uncarried, 0);
+  EXPECT_EQ(read.bone_contact, "sliding");
 }
 
 // Version 4 summaries (tissue on moved bone tied to it) still read so.
@@ -98,6 +110,7 @@ TEST(SimulationSummary, AVersion4SummaryReadsAsTiedToTheMovedBone) {
   Json v4 = to_json(example_summary());
   v4.erase("sliding_nodes");
   v4.erase("bone_contact");
+  v4.erase("nose_nodes_uncarried");
   v4["format_version"] = 4;
   const SimulationSummary read = read_simulation_summary(v4, "test");
   EXPECT_EQ(read.sliding_nodes, 0);
@@ -113,6 +126,7 @@ TEST(SimulationSummary, AVersion3SummaryReadsAsOneHomogeneousTissue) {
   v3.erase("model_fallback");
   v3.erase("sliding_nodes");
   v3.erase("bone_contact");
+  v3.erase("nose_nodes_uncarried");
   v3["format_version"] = 3;
   const SimulationSummary read = read_simulation_summary(v3, "test");
   EXPECT_EQ(read.nose_tets, 0);
@@ -131,6 +145,7 @@ TEST(SimulationSummary, AVersion2SummaryReadsWithoutTheProfileResponse) {
   v2.erase("model_fallback");
   v2.erase("sliding_nodes");
   v2.erase("bone_contact");
+  v2.erase("nose_nodes_uncarried");
   v2["format_version"] = 2;
   const SimulationSummary read = read_simulation_summary(v2, "test");
   EXPECT_FALSE(read.profile_response);
@@ -142,7 +157,7 @@ TEST(SimulationSummary, AVersion1SummaryReadsWithoutTheReportFacts) {
   Json v1 = to_json(example_summary());
   for (const char* key :
        {"plan_text", "meshing_attempts", "mean_aspect_ratio", "soft_landmarks", "profile_response", "boundary_moves",
-        "nose_tets", "nose_stiffness", "model_fallback", "sliding_nodes", "bone_contact"})
+        "nose_tets", "nose_stiffness", "model_fallback", "sliding_nodes", "bone_contact", "nose_nodes_uncarried"})
     v1.erase(key);
   v1["format_version"] = 1;
   const SimulationSummary read = read_simulation_summary(v1, "test");
@@ -183,8 +198,10 @@ TEST(SimulationSummary, DamageIsAnErrorNamingTheKey) {
   EXPECT_EQ(failure([](Json& j) { j["bone_contact"] = "glued"; }),
             "sim/simulation.json: bone_contact: unknown contact \"glued\"");
   EXPECT_EQ(failure([](Json& j) { j.erase("sliding_nodes"); }), "sim/simulation.json: sliding_nodes: missing");
-  EXPECT_EQ(failure([](Json& j) { j["format_version"] = 6; }),
-            "sim/simulation.json: format_version: is 6, newer than this program reads (5): update maxillo");
+  EXPECT_EQ(failure([](Json& j) { j.erase("nose_nodes_uncarried"); }),
+            "sim/simulation.json: nose_nodes_uncarried: missing");
+  EXPECT_EQ(failure([](Json& j) { j["format_version"] = 7; }),
+            "sim/simulation.json: format_version: is 7, newer than this program reads (6): update maxillo");
 }
 
 }  // namespace

@@ -62,6 +62,11 @@ TEST(SoftTissueSection, SaysWhichTissuesTheModelTellsApart) {
   EXPECT_EQ(fact(soft_tissue_section(stored), "Tissues"), "one homogeneous soft tissue");
   stored.summary.nose_tets = 812;
   stored.summary.nose_stiffness = 30;
+  stored.summary.nose_nodes_uncarried = 3;
+  EXPECT_EQ(fact(soft_tissue_section(stored), "Tissues"),
+            "soft tissue, and the cartilaginous nose (812 tetrahedra) 30 times stiffer, which follows the tissue, "
+            "not the moved bone (3 of its nodes on the bone left free, as the septum is freed from the maxilla)");
+  stored.summary.format_version = 5;  // before format 6 the moved bone carried the nose
   EXPECT_EQ(fact(soft_tissue_section(stored), "Tissues"),
             "soft tissue, and the cartilaginous nose (812 tetrahedra) 30 times stiffer");
 }

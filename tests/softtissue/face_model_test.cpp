@@ -257,6 +257,36 @@ TEST(BoneAttachment, TissueOnMovedBoneSlidesAlongItsOutwardNormal) {
   EXPECT_EQ(count_nodes(attached.bc, NodeConstraint::kFixed), 9 + 9);
 }
 
+TEST(BoneAttachment, TissueTheMovedBoneDoesNotCarryIsLeftFreeOnItAndHeldByUnmovedBone) {
+  // The slab of bone and the tet cube above it of the test before; the three bottom nodes at
+  // x = 26 are tissue the bone does not carry (as the cartilaginous nose on the maxilla).
+  const auto slab =
+      bone_volume([](int i, int j, int k) { return i >= 10 && i <= 50 && j >= 10 && j <= 50 && k <= 50; });
+  const Eigen::Isometry3d move(Eigen::Translation3d(0, 3, 1));
+  auto tissue = cube(8, 2);
+  tissue.nodes.rowwise() += Eigen::RowVector3d(26, 26, 51.2);
+  std::vector<uint8_t> not_carried(size_t(tissue.node_count()), 0);
+  for (int i = 0; i < tissue.node_count(); ++i) not_carried[size_t(i)] = tissue.nodes(i, 0) < 27 ? 1 : 0;
+  const std::vector<RegionPlane> top{{Eigen::Vector3d(0, 0, 59.2), -Eigen::Vector3d::UnitZ()}};
+  const AttachmentOptions sliding;
+  auto attached = attach_to_bone(tissue, slab, {{uint8_t(2), move}}, top, sliding, not_carried);
+  EXPECT_EQ(attached.uncarried_nodes, 3);
+  EXPECT_EQ(count_nodes(attached.bc, NodeConstraint::kSliding), 6);
+  for (int i = 0; i < tissue.node_count(); ++i) {
+    if (!not_carried[size_t(i)] || tissue.nodes(i, 2) > 52) continue;
+    EXPECT_EQ(attached.bc.constraint[size_t(i)], NodeConstraint::kFree) << i;
+    EXPECT_EQ(attached.segment[size_t(i)], 0) << i;
+  }
+  // Unmoved, the bone holds every node on it, carried or not.
+  attached = attach_to_bone(tissue, slab, {}, top, sliding, not_carried);
+  EXPECT_EQ(count_nodes(attached.bc, NodeConstraint::kFixed), 9 + 9);
+  EXPECT_EQ(attached.uncarried_nodes, 0);
+  // With nothing else holding the block, its loose nodes follow the bone after all.
+  attached = attach_to_bone(tissue, slab, {{uint8_t(2), move}}, {}, sliding, not_carried);
+  EXPECT_EQ(count_nodes(attached.bc, NodeConstraint::kPrescribed), 9);
+  EXPECT_EQ(attached.uncarried_nodes, 0);
+}
+
 TEST(BoundaryMove, LargestMoveWithinTheBandInsideEachPlane) {
   // The cube [0, 20]^3 (nodes every 5 mm) moving by u = (0, 0.1 x, 0): at the plane x = 20
   // (kept side x < 20) the band of 5 mm holds the nodes at x = 15 and 20, so 2 mm; at x = 0
