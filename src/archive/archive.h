@@ -14,7 +14,8 @@
 // Several processes may use one archive at once (WAL, busy timeout, BEGIN IMMEDIATE retry).
 // Implementation split: archive_open.cpp (open, schema), archive_import.cpp + import_batch.cpp,
 // archive_queries.cpp, archive_cases.cpp, archive_artefacts.cpp, archive_verify.cpp,
-// archive_export.cpp.
+// archive_export.cpp. The work queue the nightly workers share is a type of its
+// own on the archive's index (work_queue.h).
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -264,38 +265,6 @@ class Archive {
   // The same for many cases in a few queries: case id -> artefacts (empty for a case without).
   std::map<int64_t, std::vector<ArtefactRecord>> artefacts(const std::vector<int64_t>& case_ids) const;
 
-  // --- work shared between processes and nodes (nightly --claim; db/003_work_queue.sql) ---
-  // Adds the items a queue does not hold yet (idempotent; finished items stay finished).
-  void offer_work(std::string_view queue, const std::vector<std::string>& items);
-  // The index's clock (Unix seconds) for `now` and lease ends: the database server's on
-  // PostgreSQL, so nodes whose clocks disagree still agree on when a lease ends.
-  int64_t clock_seconds() const;
-  // Leases the first pending item (by name) that nobody holds, or whose lease ended before
-  // `now` (Unix seconds), to `holder` until now + lease_seconds. Nothing when no item can be
-  // claimed now. On PostgreSQL, SELECT ... FOR UPDATE SKIP LOCKED: workers never wait for
-  // each other's claims; on SQLite, BEGIN IMMEDIATE.
-  std::optional<std::string> claim_work(std::string_view queue, std::string_view holder, int64_t now,
-                                        int64_t lease_seconds);
-  // Extends a lease the holder still holds; false when it has lost it.
-  bool renew_work(std::string_view queue, std::string_view item, std::string_view holder, int64_t until);
-  // Ends the holder's lease with the item's state ("done", "failed", "superseded"); false when
-  // the holder no longer held it (another worker took over an expired lease).
-  bool finish_work(std::string_view queue, std::string_view item, std::string_view holder, std::string_view state,
-                   std::string_view reason = {});
-  struct WorkCounts {
-    size_t pending = 0;   // nobody holds them (never leased, or the lease ended)
-    size_t leased = 0;    // held by a live lease at `now`
-    size_t finished = 0;  // done, failed or superseded
-  };
-  WorkCounts work_counts(std::string_view queue, int64_t now) const;
-  // Every item's state and holder, for reports and tests: item -> (state, holder, claims, lease end).
-  struct WorkRecord {
-    std::string item, state, holder, reason;
-    int64_t claims = 0;
-    int64_t expires_at = 0;  // the lease's end (Unix seconds, the index's clock); 0: never leased
-  };
-  std::vector<WorkRecord> work_records(std::string_view queue) const;
-
   // --- integrity and export ---
   // Checks the index (SQLite integrity_check, and a replay of its journal compared row by row)
   // and re-hashes every object. Repair never deletes: it moves orphan and temporary files into
@@ -322,6 +291,7 @@ class Archive {
   struct State;  // private: connection, prepared statements, object store
 
  private:
+  friend class WorkQueue;  // works on the index's connection (archive/work_queue.h)
   explicit Archive(std::unique_ptr<State> state);
   std::unique_ptr<State> state_;
 };
