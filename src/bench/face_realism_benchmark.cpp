@@ -27,9 +27,6 @@ namespace {
 using casework::SoftTissueOptions;
 using softtissue::SoftTissueModel;
 
-constexpr SoftTissueModel kModels[] = {SoftTissueModel::kMassTensor, SoftTissueModel::kLinearFem,
-                                       SoftTissueModel::kMassSpring, SoftTissueModel::kNonlinearFem};
-
 // The cadaver head prepared as `simulate` prepares a case: landmarks, tissues, skin, bone cut.
 struct PreparedHead {
   LandmarkSet landmarks;
@@ -158,8 +155,9 @@ Json run_face_realism_benchmark(const FaceRealismOptions& options) {
                   {"advancements_mm", options.advancements_mm}};
   Json runs = Json::array();
   for (double advancement : options.advancements_mm) {
-    const auto moves = advancement_moves(head, advancement);  // once for every model
-    for (auto model : kModels) runs.push_back(run_model(head, face, advancement, moves, model, options));
+    const auto moves = advancement_moves(head, advancement);    // once for every model
+    for (const auto& model : softtissue::soft_tissue_models())  // every model of the table, in its order
+      runs.push_back(run_model(head, face, advancement, moves, model.model, options));
   }
   figures["runs"] = runs;
   figures["peak_memory_mb"] = double(peak_memory_kb()) / 1024.0;

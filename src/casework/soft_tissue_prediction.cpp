@@ -13,12 +13,7 @@
 #include "core/log.h"
 #include "core/sha256.h"
 #include "render/anatomical_views.h"
-#include "softtissue/linear_static_solve.h"
-#include "softtissue/mass_spring_model.h"
-#include "softtissue/mass_tensor_model.h"
-#include "softtissue/nonlinear_fem.h"
 #include "softtissue/shape_function_mapping.h"
-#include "softtissue/stiffness_blocks.h"
 
 namespace maxillo::casework {
 namespace {
@@ -33,76 +28,15 @@ constexpr double kAboveNasionMm = 15;
 // Behind the nasion the frontal bone and the eyes begin; the brain lies more than this behind it.
 constexpr double kBehindNasionMm = 10;
 
-// The largest tet stiffness over the smallest (1 for one homogeneous tissue). The point-wise
-// solvers' stop rule (a point at rest when its update moves it less than the threshold) is
-// the thesis' for one tissue; a stiff region joined to soft tissue slows the sweeps about as
-// much as the stiffness differs, and they stop far from rest: the cadaver's nose 68 times
-// stiffer, the mass tensor model stopped at 1e-3 mm with the nose tip 0.24 mm behind the linear
-// FEM's answer to the same equations; the threshold divided by the contrast reaches it.
-double stiffness_contrast(const softtissue::TetMesh& mesh) {
-  if (mesh.stiffness.empty()) return 1;
-  const auto [low, high] = std::minmax_element(mesh.stiffness.begin(), mesh.stiffness.end());
-  return *high / *low;
-}
-
-struct Solved {
-  Eigen::MatrixX3d displacement;
-  int iterations = 0;
-};
-
-// The local iterations stop at their sweep limit with points still moving: that face is not
-// the model's answer, so it is an error naming the model and how far from rest it was.
-void require_at_rest(const softtissue::LocalIterationResult& result, const softtissue::LocalIterationOptions& options,
-                     const char* model) {
-  if (result.status == softtissue::IterationStatus::kConverged) return;
-  throw Error(ErrorCode::kProcessing, model,
-              "did not come to rest: after " + std::to_string(result.iterations) + " sweeps a point still moved " +
-                  std::to_string(result.last_max_move_mm) + " mm per sweep (threshold " +
-                  std::to_string(options.gradient_threshold_mm) + " mm)");
-}
-
-Solved solve(const softtissue::TetMesh& mesh, const softtissue::BoundaryConditions& bc, const SoftTissueOptions& o,
-             double& assembly_seconds) {
-  auto start = Clock::now();
-  const softtissue::Material material{o.young_modulus_mpa, o.poisson_ratio};
-  softtissue::LocalIterationOptions local;
-  local.gradient_threshold_mm = o.gradient_threshold_mm / stiffness_contrast(mesh);
-  local.max_iterations = o.max_sweeps;
-  if (o.model == softtissue::SoftTissueModel::kNonlinearFem) {
-    assembly_seconds = 0;  // the tangent is assembled inside every Newton step
-    softtissue::NewtonOptions newton;
-    newton.load_steps = 2;
-    auto result = softtissue::solve_nonlinear_static(mesh, material, bc, newton);
-    if (!result.converged)
-      throw Error(ErrorCode::kProcessing, "non-linear FEM",
-                  "Newton's method did not converge: it stopped at " + std::to_string(int(100 * result.load_reached)) +
-                      " %" + " of the bone's move, where a step of 1/" +
-                      std::to_string(int(std::lround(1 / newton.smallest_load_fraction))) +
-                      " of it still turned a tetrahedron inside out or did not converge (" +
-                      std::to_string(result.load_steps) + " load steps, " + std::to_string(result.newton_iterations) +
-                      " Newton steps)");
-    return {result.displacement, result.newton_iterations};
-  }
-  if (o.model == softtissue::SoftTissueModel::kMassSpring) {
-    const auto model = softtissue::make_van_gelder_model(mesh, o.young_modulus_mpa);
-    assembly_seconds = seconds_since(start);
-    auto result = softtissue::solve_mass_spring(model, bc, local);
-    require_at_rest(result, local, "mass-spring model");
-    return {result.displacement, result.iterations};
-  }
-  const auto blocks = softtissue::assemble_stiffness_blocks(mesh, material);
-  if (o.model == softtissue::SoftTissueModel::kLinearFem) {
-    assembly_seconds = seconds_since(start);
-    auto result = softtissue::solve_linear_static(blocks, bc);
-    if (result.status != softtissue::SolveStatus::kConverged)
-      throw Error(ErrorCode::kProcessing, "linear FEM", "the conjugate gradient did not converge");
-    return {result.displacement, result.iterations};
-  }
-  const auto model = softtissue::make_mass_tensor_model(blocks);
-  assembly_seconds = seconds_since(start);
-  auto result = softtissue::solve_mass_tensor(model, bc, local);
-  require_at_rest(result, local, "mass tensor model");
-  return {result.displacement, result.iterations};
+// The model's solver from the table (softtissue/soft_tissue_model.h), with the options' material
+// and stop rule; `assembly_seconds` gets its set-up time.
+softtissue::ModelSolution solve(const softtissue::TetMesh& mesh, const softtissue::BoundaryConditions& bc,
+                                const SoftTissueOptions& o, double& assembly_seconds) {
+  const softtissue::ModelSolveOptions solve_options{
+      {o.young_modulus_mpa, o.poisson_ratio}, o.gradient_threshold_mm, o.max_sweeps};
+  auto solution = softtissue::solve_model(o.model, mesh, bc, solve_options);
+  assembly_seconds = solution.assembly_seconds;
+  return solution;
 }
 
 // Per skin vertex, the lip whose tet it is bound to: +1 upper, -1 lower, 0 elsewhere.

@@ -9,7 +9,8 @@
 //      (casework/nasal_cartilage.h);
 //   3. join points from the bone segments and their planned moves, fixed nodes on the cuts
 //      (softtissue/bone_attachment.h);
-//   4. the static solve with the chosen model (mass tensor, linear FEM or mass-spring);
+//   4. the static solve with the chosen model's solver from the table of models
+//      (softtissue/soft_tissue_model.h: mass tensor, linear FEM, mass-spring or non-linear FEM);
 //   5. the displacement mapped onto the dense skin by the shape functions (eq. 13).
 #include <Eigen/Geometry>
 #include <map>
