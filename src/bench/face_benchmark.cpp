@@ -7,7 +7,7 @@
 #include "bench/formatted.h"
 #include "bench/peak_memory.h"
 #include "bench/timing.h"
-#include "casework/soft_tissue_prediction.h"
+#include "casework/softtissue/soft_tissue_prediction.h"
 #include "mesh/surface_extraction.h"
 #include "planning/osteotomy.h"
 #include "sample/phantom.h"

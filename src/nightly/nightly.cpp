@@ -12,7 +12,7 @@
 #include "nightly/nightly_summary.h"
 #include "nightly/nightly_worker.h"
 #include "records/validation_archive.h"
-#include "casework/validation_json.h"
+#include "casework/validation/validation_json.h"
 
 namespace maxillo::nightly {
 namespace {

@@ -11,7 +11,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "records/validation_archive.h"
-#include "casework/validation_json.h"
+#include "casework/validation/validation_json.h"
 
 namespace maxillo::nightly {
 namespace {

@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "casework/profile_response.h"
+#include "casework/softtissue/profile_response.h"
 #include "core/error.h"
 #include "report/number_text.h"
 #include "softtissue/boundary_move.h"

@@ -6,7 +6,7 @@
 
 #include "archive_fixture.h"
 #include "records/case_landmarks.h"
-#include "casework/case_validation.h"
+#include "casework/validation/case_validation.h"
 #include "nightly/nightly.h"
 #include "nightly/nightly_worker.h"
 #include "records/plan_archive.h"
