@@ -1,7 +1,7 @@
 #pragma once
 // Pictures a surgeon checks the landmarks on at a glance: the bone (opaque) under the skin
 // (translucent), each landmark drawn as a disc over both and labelled, in three views from the
-// same cameras as the case's views (case_views.h):
+// same cameras as the case's views (casework/surfaces/case_views.h):
 //   frontal        every landmark;
 //   right lateral  the midline landmarks and the right-sided ones;
 //   left lateral   the left-sided ones (the right lateral hides them behind the skull).

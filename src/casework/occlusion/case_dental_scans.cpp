@@ -272,7 +272,7 @@ DentalRegistrationJob prepare_dental_registration(Archive& archive, int64_t case
 
 void compute_dental_registration(DentalRegistrationJob& job) {
   if (job.to_register.empty()) return;
-  // Segmented before the conversion to HU, as every case is (case_tissues.h converts inside).
+  // Segmented before the conversion to HU, as every case is (casework/surfaces/case_tissues.h converts inside).
   if (!job.given_tissues) job.segmented = segment_case_tissues(job.ct, job.landmarks);
   const CaseTissues& jaws = job.given_tissues ? *job.given_tissues : job.segmented;
   if (std::optional<Volume> converted = in_hounsfield_units(job.ct))  // a cone-beam scan's grey values as HU

@@ -24,7 +24,7 @@ struct CasePlanResult {
 // and apply_plan throw otherwise. An infeasible plan is not an error here: result.feasible says.
 // `tissues`, when given, are the case's CT segmented for its newest landmarks (load_case_tissues),
 // made earlier; the CT is then not loaded and segmented again.
-// The landmarks are the case's (automatic_landmarks.h: detected and stored when none were
+// The landmarks are the case's (casework/landmarks/automatic_landmarks.h: detected and stored when none were
 // attached); flagged automatic ones refuse the plan (Error kBadValue naming them) unless
 // `accept_flagged`.
 CasePlanResult apply_case_plan(Archive& archive, int64_t case_id, const std::filesystem::path& out_dir,

@@ -1,8 +1,8 @@
 #pragma once
 // What a plan gives the operating room and the report besides numbers: the bone cut into its
 // segments (planning/osteotomy.h), the planned bone surfaces as STL, the stereolithographic
-// transfer model with a tube along each distraction screw (pipeline/transfer_model.h), and
-// renders of the planned skeleton with the screw axes (pipeline/plan_views.h).
+// transfer model with a tube along each distraction screw (transfer_model.h), and
+// renders of the planned skeleton with the screw axes (plan_views.h).
 #include <filesystem>
 #include <optional>
 #include <string>

@@ -1,7 +1,8 @@
 #pragma once
 // A case of the archive with its surgery planned: what the face prediction, the synthetic post-operative scan and the
-// validation all start from. The pre-operative CT segmented once (case_tissues.h), the newest plan applied to it, its
-// bone cut into segments by the plan's osteotomies, each segment's planned move, and the pre-operative skin surface.
+// validation all start from. The pre-operative CT segmented once (casework/surfaces/case_tissues.h), the newest plan
+// applied to it, its bone cut into segments by the plan's osteotomies, each segment's planned move, and the
+// pre-operative skin surface.
 #include <Eigen/Geometry>
 #include <cstdint>
 #include <map>
@@ -33,7 +34,7 @@ struct PlannedCase {
   SegmentMoves planned_moves;     // the segments the plan moves: stored by `plan apply`, or applied here
   TriangleMesh skin;              // pre-operative skin (case_surfaces.h)
 
-  // The face's tet model of these tissues and landmarks (soft_tissue_prediction.h), built on first
+  // The face's tet model of these tissues and landmarks (casework/softtissue/soft_tissue_prediction.h), built on first
   // use for the options' meshing and shared by every prediction made from this case: the planned
   // move of the synthetic post-operative scan, the moves the validation finds. Any thread. A
   // PlannedCase not made by load_planned_case builds a new model at each call.

@@ -5,7 +5,7 @@
 //      the infraorbital rim, which surgery does not touch (imaging/rigid_registration.h);
 //   2. each bone segment the plan moves registered by ICP onto the post-operative bone, starting from its planned
 //      move: the move actually made (validation/rigid_icp.h);
-//   3. the face predicted for the actual moves (soft_tissue_prediction.h);
+//   3. the face predicted for the actual moves (casework/softtissue/soft_tissue_prediction.h);
 //   4. predicted against post-operative skin in the face without eyes and neck: the signed closest-point distance and
 //      the corresponding-point distance after a non-rigid registration (validation/coherent_point_drift.h); negative
 //      = the prediction lies behind the real face;
