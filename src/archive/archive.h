@@ -14,7 +14,8 @@
 // Several processes may use one archive at once (WAL, busy timeout, BEGIN IMMEDIATE retry).
 // Implementation split: archive_open.cpp (open, schema), archive_import.cpp + import_batch.cpp,
 // archive_queries.cpp, archive_cases.cpp, archive_artefacts.cpp, archive_verify.cpp,
-// archive_export.cpp.
+// archive_export.cpp. The work queue the nightly workers share is a type of its
+// own on the archive's index (work_queue.h).
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -166,6 +167,7 @@ enum class OpenMode { Existing, CreateIfMissing, MigrationTarget };
 
 class Archive {
  public:
+  // ==== Opening, and what the archive is ====
   // Opens the archive in `folder` and upgrades its schema as needed. Refuses, with
   // Error(kIndexDamaged) and how to recover, an index that is missing or empty while objects
   // exist, damaged (SQLite quick_check), or behind its journal (archive_health.h).
@@ -174,25 +176,6 @@ class Archive {
   ~Archive();
   Archive(Archive&&) noexcept;
   Archive& operator=(Archive&&) noexcept;
-
-  // Re-creates ARCHIVE/index.sqlite from the object store alone: the journal is replayed (every
-  // row the index ever committed, ids included), every instance row is checked against its
-  // re-parsed DICOM object, and DICOM objects no entry names (archives older than the journal,
-  // a lost journal entry) are indexed anew from their own headers. The old index, if any, is
-  // kept as index.sqlite.damaged-<time> (or .replaced-<time> with force), never deleted.
-  // Refuses (Error kConflict) an intact index unless options.force. A server archive's index
-  // is rebuilt the same way into the new, empty database its address names (never over a
-  // database that holds an index, forced or not).
-  static RebuildReport rebuild_index(const std::filesystem::path& folder, const RebuildOptions& options = {});
-
-  // Copies the embedded archive in `source` into the archive at `target` (typically a
-  // PostgreSQL index with its shared object folder): every object, re-hashed as it is copied,
-  // and the index journal, which is then replayed into the target index, so rows and ids are
-  // the source's. Verified by comparing both indexes row by row. Idempotent and resumable: a
-  // run killed half-way is run again. The source is only read. Refuses (kConflict) a target
-  // that already holds another history, and a source whose index is not the newest schema.
-  static MigrationReport migrate(const std::filesystem::path& source, const std::filesystem::path& target,
-                                 const MigrationOptions& options = {});
 
   // The archive's folder; for an archive on a server, its shared object folder.
   const std::filesystem::path& folder() const;
@@ -203,10 +186,32 @@ class Archive {
   int schema_version() const;
   static int newest_schema_version();
 
-  // --- import (files or folders, recursive) ---
+  // ==== The store: DICOM files in, objects by their hash, series out ====
+  // What the object store holds and how files enter and leave it; every object is named by its
+  // SHA-256 and never modified.
+
+  // Imports files or folders (recursive).
   ImportReport import_paths(const std::vector<std::filesystem::path>& paths, const ImportOptions& options = {});
 
-  // --- listing ---
+  // Stores bytes durably; returns their sha256. Idempotent.
+  std::string store_object(std::span<const std::byte> bytes);
+  std::string store_object(std::string_view text);
+  std::filesystem::path object_path(std::string_view sha256) const;
+  std::vector<std::byte> read_object(std::string_view sha256) const;
+
+  // Writes the series' files into out_dir (created), named <instance number>_<SOP UID>.dcm:
+  // Original = the archived bytes; Deidentified = copies without identifying attributes, with
+  // pseudonyms and new UIDs (dicom/dicom_deidentify.h) keyed by deidentification_secret().
+  // Returns the written paths in instance order. Throws Error(NotFound / WriteFailed / ArchiveCorrupt).
+  std::vector<std::filesystem::path> export_series(int64_t series, const std::filesystem::path& out_dir,
+                                                   ExportProfile profile = ExportProfile::Original) const;
+  // This archive's secret for pseudonyms (ARCHIVE/deidentify.key, 256 random bits, mode 0600,
+  // made on first use). The same secret gives the same pseudonyms: keep it with the archive.
+  std::string deidentification_secret() const;
+
+  // ==== Index queries: patients, studies, series, instances and cases ====
+  // What the index says of the images and the cases they belong to, and the two edits of a case.
+
   std::vector<PatientRecord> patients() const;
   std::vector<StudyRecord> studies(std::optional<int64_t> patient = std::nullopt) const;
   std::vector<SeriesRecord> series(std::optional<int64_t> study = std::nullopt) const;
@@ -233,7 +238,7 @@ class Archive {
   // The same for many series in a few queries: series id -> hashes.
   std::map<int64_t, std::vector<std::string>> series_object_hashes(const std::vector<int64_t>& series) const;
 
-  // --- cases ---
+  // The patient's case of this label, if any.
   std::optional<CaseRecord> case_of_patient(int64_t patient, std::string_view label = "default") const;
   // A case id (bare or typed "case:N"), or a Patient ID (its "default" case, else its only case).
   // Throws Error(NotFound).
@@ -250,12 +255,10 @@ class Archive {
   // Changes the role of a series in a case ("preop", "postop", "follow-up", "report", "unassigned").
   void set_series_role(int64_t case_id, int64_t series, std::string_view role);
 
-  // --- objects and derived artefacts ---
-  // Stores bytes durably; returns their sha256. Idempotent.
-  std::string store_object(std::span<const std::byte> bytes);
-  std::string store_object(std::string_view text);
-  std::filesystem::path object_path(std::string_view sha256) const;
-  std::vector<std::byte> read_object(std::string_view sha256) const;
+  // ==== Derived artefacts ====
+  // What the workflows made from a case's images (surfaces, plans, predictions, reports), kept
+  // as objects, each keyed by the hash of its inputs.
+
   int64_t add_artefact(const NewArtefact& artefact);
   // The newest artefact of this case and kind made from these inputs, if any.
   std::optional<ArtefactRecord> find_artefact(int64_t case_id, std::string_view kind,
@@ -264,39 +267,9 @@ class Archive {
   // The same for many cases in a few queries: case id -> artefacts (empty for a case without).
   std::map<int64_t, std::vector<ArtefactRecord>> artefacts(const std::vector<int64_t>& case_ids) const;
 
-  // --- work shared between processes and nodes (nightly --claim; db/003_work_queue.sql) ---
-  // Adds the items a queue does not hold yet (idempotent; finished items stay finished).
-  void offer_work(std::string_view queue, const std::vector<std::string>& items);
-  // The index's clock (Unix seconds) for `now` and lease ends: the database server's on
-  // PostgreSQL, so nodes whose clocks disagree still agree on when a lease ends.
-  int64_t clock_seconds() const;
-  // Leases the first pending item (by name) that nobody holds, or whose lease ended before
-  // `now` (Unix seconds), to `holder` until now + lease_seconds. Nothing when no item can be
-  // claimed now. On PostgreSQL, SELECT ... FOR UPDATE SKIP LOCKED: workers never wait for
-  // each other's claims; on SQLite, BEGIN IMMEDIATE.
-  std::optional<std::string> claim_work(std::string_view queue, std::string_view holder, int64_t now,
-                                        int64_t lease_seconds);
-  // Extends a lease the holder still holds; false when it has lost it.
-  bool renew_work(std::string_view queue, std::string_view item, std::string_view holder, int64_t until);
-  // Ends the holder's lease with the item's state ("done", "failed", "superseded"); false when
-  // the holder no longer held it (another worker took over an expired lease).
-  bool finish_work(std::string_view queue, std::string_view item, std::string_view holder, std::string_view state,
-                   std::string_view reason = {});
-  struct WorkCounts {
-    size_t pending = 0;   // nobody holds them (never leased, or the lease ended)
-    size_t leased = 0;    // held by a live lease at `now`
-    size_t finished = 0;  // done, failed or superseded
-  };
-  WorkCounts work_counts(std::string_view queue, int64_t now) const;
-  // Every item's state and holder, for reports and tests: item -> (state, holder, claims, lease end).
-  struct WorkRecord {
-    std::string item, state, holder, reason;
-    int64_t claims = 0;
-    int64_t expires_at = 0;  // the lease's end (Unix seconds, the index's clock); 0: never leased
-  };
-  std::vector<WorkRecord> work_records(std::string_view queue) const;
+  // ==== Health: verify and repair, rebuild the index, migrate ====
+  // Whether every row's object is there and intact, and the ways back when it is not.
 
-  // --- integrity and export ---
   // Checks the index (SQLite integrity_check, and a replay of its journal compared row by row)
   // and re-hashes every object. Repair never deletes: it moves orphan and temporary files into
   // the quarantine (object_store.h) and puts back quarantined objects that rows name. It refuses,
@@ -309,19 +282,30 @@ class Archive {
   }
   // Deletes the quarantine (what `verify --repair` set aside); returns the files deleted.
   size_t purge_quarantine();
-  // Writes the series' files into out_dir (created), named <instance number>_<SOP UID>.dcm:
-  // Original = the archived bytes; Deidentified = copies without identifying attributes, with
-  // pseudonyms and new UIDs (dicom/dicom_deidentify.h) keyed by deidentification_secret().
-  // Returns the written paths in instance order. Throws Error(NotFound / WriteFailed / ArchiveCorrupt).
-  std::vector<std::filesystem::path> export_series(int64_t series, const std::filesystem::path& out_dir,
-                                                   ExportProfile profile = ExportProfile::Original) const;
-  // This archive's secret for pseudonyms (ARCHIVE/deidentify.key, 256 random bits, mode 0600,
-  // made on first use). The same secret gives the same pseudonyms: keep it with the archive.
-  std::string deidentification_secret() const;
+
+  // Re-creates ARCHIVE/index.sqlite from the object store alone: the journal is replayed (every
+  // row the index ever committed, ids included), every instance row is checked against its
+  // re-parsed DICOM object, and DICOM objects no entry names (archives older than the journal,
+  // a lost journal entry) are indexed anew from their own headers. The old index, if any, is
+  // kept as index.sqlite.damaged-<time> (or .replaced-<time> with force), never deleted.
+  // Refuses (Error kConflict) an intact index unless options.force. A server archive's index
+  // is rebuilt the same way into the new, empty database its address names (never over a
+  // database that holds an index, forced or not).
+  static RebuildReport rebuild_index(const std::filesystem::path& folder, const RebuildOptions& options = {});
+
+  // Copies the embedded archive in `source` into the archive at `target` (typically a
+  // PostgreSQL index with its shared object folder): every object, re-hashed as it is copied,
+  // and the index journal, which is then replayed into the target index, so rows and ids are
+  // the source's. Verified by comparing both indexes row by row. Idempotent and resumable: a
+  // run killed half-way is run again. The source is only read. Refuses (kConflict) a target
+  // that already holds another history, and a source whose index is not the newest schema.
+  static MigrationReport migrate(const std::filesystem::path& source, const std::filesystem::path& target,
+                                 const MigrationOptions& options = {});
 
   struct State;  // private: connection, prepared statements, object store
 
  private:
+  friend class WorkQueue;  // works on the index's connection (archive/work_queue.h)
   explicit Archive(std::unique_ptr<State> state);
   std::unique_ptr<State> state_;
 };

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "archive/archive.h"
+#include "archive/work_queue.h"
 #include "bench/formatted.h"
 #include "bench/scratch_archive.h"
 #include "bench/timing.h"
@@ -15,8 +16,8 @@ namespace {
 
 // Throws unless every item of the queue was claimed once and finished, and the workers counted
 // as many claims as there are items.
-void check_claimed_once(const Archive& archive, const char* queue, size_t claimed, int items) {
-  for (const auto& record : archive.work_records(queue))
+void check_claimed_once(const WorkQueue& queue, size_t claimed, int items) {
+  for (const auto& record : queue.records())
     if (record.claims != 1 || record.state != "done")
       throw Error(ErrorCode::kProcessing, record.item, "claimed " + std::to_string(record.claims) + " times");
   if (claimed != size_t(items)) throw Error(ErrorCode::kProcessing, "bench claim", "not every item was claimed once");
@@ -24,12 +25,13 @@ void check_claimed_once(const Archive& archive, const char* queue, size_t claime
 
 // Every worker claims and finishes until the queue is empty; returns claims per second.
 double timed_claims(const std::filesystem::path& address, int items, int workers) {
-  const char* queue = "bench";
   std::vector<std::string> names;
   for (int n = 0; n < items; ++n) names.push_back("item-" + std::to_string(1000000 + n));
   std::vector<Archive> archives;
   for (int w = 0; w < workers; ++w) archives.push_back(Archive::open(address));
-  archives.front().offer_work(queue, names);
+  std::vector<WorkQueue> queues;  // one per worker, each on its worker's connection
+  for (auto& archive : archives) queues.emplace_back(archive, "bench");
+  queues.front().offer(names);
   std::mutex mutex;
   size_t claimed = 0;
   const auto start = Clock::now();
@@ -38,8 +40,8 @@ double timed_claims(const std::filesystem::path& address, int items, int workers
     threads.emplace_back([&, w] {
       const std::string holder = "bench-worker-" + std::to_string(w);
       size_t mine = 0;
-      while (auto item = archives[size_t(w)].claim_work(queue, holder, 1000, 3600)) {
-        archives[size_t(w)].finish_work(queue, *item, holder, "done");
+      while (auto item = queues[size_t(w)].claim(holder, 1000, 3600)) {
+        queues[size_t(w)].finish(*item, holder, "done");
         ++mine;
       }
       std::lock_guard lock(mutex);
@@ -47,7 +49,7 @@ double timed_claims(const std::filesystem::path& address, int items, int workers
     });
   for (auto& thread : threads) thread.join();
   const double seconds = seconds_since(start);
-  check_claimed_once(archives.front(), queue, claimed, items);
+  check_claimed_once(queues.front(), claimed, items);
   return double(items) / seconds;
 }
 

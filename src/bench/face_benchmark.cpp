@@ -7,7 +7,7 @@
 #include "bench/formatted.h"
 #include "bench/peak_memory.h"
 #include "bench/timing.h"
-#include "casework/soft_tissue_prediction.h"
+#include "casework/softtissue/soft_tissue_prediction.h"
 #include "mesh/surface_extraction.h"
 #include "planning/osteotomy.h"
 #include "sample/phantom.h"
@@ -43,8 +43,9 @@ Json meshing_figures(const casework::SoftTissueInput& input, const SoftTissueOpt
 Json model_figures(const SoftTissuePrediction& base, const TriangleMesh& skin, const SoftTissueOptions& options,
                    int runs) {
   Json models = Json::array();
-  for (auto model : {softtissue::SoftTissueModel::kMassTensor, softtissue::SoftTissueModel::kLinearFem,
-                     softtissue::SoftTissueModel::kMassSpring}) {
+  for (const auto& entry : softtissue::soft_tissue_models()) {
+    if (!entry.in_face_benchmark) continue;
+    const auto model = entry.model;
     auto variant = options;
     variant.model = model;
     std::vector<double> solve, assembly;

@@ -8,12 +8,12 @@
 #include "bench/registration_benchmark.h"
 #include "bench/shared_data.h"
 #include "bench/timing.h"
-#include "casework/case_simulation.h"
-#include "casework/case_surfaces.h"
-#include "casework/case_tissues.h"
-#include "casework/planned_case.h"
-#include "casework/profile_response.h"
-#include "casework/soft_tissue_prediction.h"
+#include "casework/softtissue/case_simulation.h"
+#include "casework/surfaces/case_surfaces.h"
+#include "casework/surfaces/case_tissues.h"
+#include "casework/plan/planned_case.h"
+#include "casework/softtissue/profile_response.h"
+#include "casework/softtissue/soft_tissue_prediction.h"
 #include "ceph/landmark_frame.h"
 #include "core/error.h"
 #include "landmarking/landmark_detection.h"
@@ -26,9 +26,6 @@ namespace {
 
 using casework::SoftTissueOptions;
 using softtissue::SoftTissueModel;
-
-constexpr SoftTissueModel kModels[] = {SoftTissueModel::kMassTensor, SoftTissueModel::kLinearFem,
-                                       SoftTissueModel::kMassSpring, SoftTissueModel::kNonlinearFem};
 
 // The cadaver head prepared as `simulate` prepares a case: landmarks, tissues, skin, bone cut.
 struct PreparedHead {
@@ -162,8 +159,9 @@ Json run_face_realism_benchmark(const FaceRealismOptions& options) {
                   {"advancements_mm", options.advancements_mm}};
   Json runs = Json::array();
   for (double advancement : options.advancements_mm) {
-    const auto moves = advancement_moves(head, advancement);  // once for every model
-    for (auto model : kModels) runs.push_back(run_model(head, face, advancement, moves, model, options));
+    const auto moves = advancement_moves(head, advancement);    // once for every model
+    for (const auto& model : softtissue::soft_tissue_models())  // every model of the table, in its order
+      runs.push_back(run_model(head, face, advancement, moves, model.model, options));
   }
   figures["runs"] = runs;
   figures["peak_memory_mb"] = double(peak_memory_kb()) / 1024.0;

@@ -5,11 +5,11 @@
 // tissue model on one face model; per model and advancement the forward move of the profile
 // points (Prn, the dorsum 8 mm above it, Sn, Ls, Li, PogS) as a fraction of the advancement,
 // the largest displacement gradient on the skin, and the time; the published figures beside them
-// (casework/profile_response.h).
+// (casework/softtissue/profile_response.h).
 #include <vector>
 
-#include "casework/nasal_cartilage.h"
-#include "casework/soft_tissue_prediction.h"
+#include "casework/softtissue/nasal_cartilage.h"
+#include "casework/softtissue/soft_tissue_prediction.h"
 #include "core/json.h"
 #include "softtissue/bone_attachment.h"
 

@@ -10,7 +10,7 @@
 
 #include "core/json.h"
 #include "core/volume.h"
-#include "casework/case_surfaces.h"
+#include "casework/surfaces/case_surfaces.h"
 #include "validation/distance_statistics.h"
 
 namespace maxillo::bench {

@@ -1,10 +1,10 @@
 // maxillo dental import|register|show CASE (issue 30): a patient's dental scans (an intraoral
 // scan or digitised casts, STL/PLY/OBJ in mm) kept with the case and placed onto its CT's teeth
-// (casework/case_dental_scans.h).
+// (casework/occlusion/case_dental_scans.h).
 #include <cstdio>
 #include <iostream>
 
-#include "casework/case_dental_scans.h"
+#include "casework/occlusion/case_dental_scans.h"
 #include "cli/command.h"
 #include "core/json.h"
 

@@ -5,7 +5,7 @@
 
 #include "archive/archive.h"
 #include "archive/archive_json.h"
-#include "casework/case_orientation.h"
+#include "casework/landmarks/case_orientation.h"
 #include "cli/command.h"
 #include "core/error.h"
 #include "core/log.h"

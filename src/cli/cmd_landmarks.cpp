@@ -9,7 +9,7 @@
 #include <set>
 #include <sstream>
 
-#include "casework/automatic_landmarks.h"
+#include "casework/landmarks/automatic_landmarks.h"
 #include "cli/command.h"
 #include "cli/folder_files.h"
 #include "core/error.h"

@@ -4,8 +4,8 @@
 // axis was flipped, has the case's CT reoriented (a corrected copy; the original is kept).
 #include <iostream>
 
-#include "casework/case_orientation.h"
-#include "casework/case_reorientation.h"
+#include "casework/landmarks/case_orientation.h"
+#include "casework/landmarks/case_reorientation.h"
 #include "cli/command.h"
 #include "core/json.h"
 

@@ -12,9 +12,9 @@
 #include "cli/command.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
-#include "casework/case_simulation.h"
+#include "casework/softtissue/case_simulation.h"
 #include "records/plan_archive.h"
-#include "casework/plan_case.h"
+#include "casework/plan/plan_case.h"
 
 namespace maxillo::cli {
 namespace {

@@ -10,7 +10,7 @@
 
 #include "cli/command.h"
 #include "core/json.h"
-#include "casework/sample_case.h"
+#include "casework/sample/sample_case.h"
 #include "sample/phantom_variation.h"
 
 namespace maxillo::cli {

@@ -3,7 +3,7 @@
 #include <iostream>
 
 #include "cli/command.h"
-#include "casework/synthetic_postop_case.h"
+#include "casework/validation/synthetic_postop_case.h"
 
 namespace maxillo::cli {
 namespace {

@@ -15,7 +15,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "net/serve_config.h"
-#include "casework/case_orientation.h"
+#include "casework/landmarks/case_orientation.h"
 #include "net/storage_server.h"
 
 namespace maxillo::cli {
@@ -92,7 +92,7 @@ net::StorageServerOptions server_options(const ServeArguments& a, const GlobalOp
   if (a.config.empty() || a.on_command_line("--stable-seconds")) options.stable_seconds = a.stable_seconds;
   if (a.on_command_line("--spool")) options.spool = a.spool;
   // Each study, once it has arrived, has its case's CT header checked against the anatomy, as
-  // `maxillo import` does (casework/case_orientation.h): a contradiction is recorded and logged.
+  // `maxillo import` does (casework/landmarks/case_orientation.h): a contradiction is recorded and logged.
   options.check_stable_case = [](Archive& archive, int64_t case_id) { casework::case_orientation(archive, case_id); };
   if (a.on_command_line("--tls-cert")) {
     options.tls = {.enabled = true, .certificate = a.tls.certificate, .private_key = a.tls.private_key, .trusted = {}};

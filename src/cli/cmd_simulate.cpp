@@ -5,7 +5,7 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/json.h"
-#include "casework/case_simulation.h"
+#include "casework/softtissue/case_simulation.h"
 
 namespace maxillo::cli {
 namespace {

@@ -3,9 +3,9 @@
 #include <iostream>
 
 #include "cli/command.h"
-#include "casework/case_validation.h"
+#include "casework/validation/case_validation.h"
 #include "records/validation_archive.h"
-#include "casework/validation_json.h"
+#include "casework/validation/validation_json.h"
 #include "report/number_text.h"
 
 namespace maxillo::cli {

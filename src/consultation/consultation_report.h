@@ -9,8 +9,8 @@
 #include <string>
 
 #include "archive/archive.h"
-#include "casework/case_surfaces.h"
-#include "casework/case_views.h"
+#include "casework/surfaces/case_surfaces.h"
+#include "casework/surfaces/case_views.h"
 #include "report/report_model.h"
 
 namespace maxillo::consultation {

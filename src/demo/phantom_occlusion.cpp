@@ -4,7 +4,7 @@
 #include "core/error.h"
 #include "occlusion/arch_contacts.h"
 #include "occlusion/occlusion_benchmark.h"
-#include "casework/archived_occlusion.h"
+#include "casework/occlusion/archived_occlusion.h"
 #include "render/anatomical_views.h"
 
 namespace maxillo::demo {

@@ -1,6 +1,6 @@
 #pragma once
 // The demo's virtual occlusion on the phantom's augmented model (issue 30: the scanned crowns
-// on the CT's roots, in the CT's frame; casework/augmented_model.h): the registered occlusion is
+// on the CT's roots, in the CT's frame; casework/occlusion/augmented_model.h): the registered occlusion is
 // the reference, the upper arch is started from a displaced pose and brought back by guided
 // alignment with 4 spring pairs taken where the teeth touch; the occlusionogram and the splint
 // follow (occlusion_run.h), in the CT's frame.
@@ -9,8 +9,8 @@
 
 #include "archive/archive.h"
 #include "ceph/landmark.h"
-#include "casework/case_dental_scans.h"
-#include "casework/occlusion_run.h"
+#include "casework/occlusion/case_dental_scans.h"
+#include "casework/occlusion/occlusion_run.h"
 #include "sample/phantom.h"
 
 namespace maxillo::demo {
@@ -19,7 +19,7 @@ struct PhantomArches {
   TriangleMesh upper, lower;  // LPS mm, the phantom's frame (in occlusion as they are)
 };
 
-// The augmented model's two jaws (casework/augmented_model.h), in the CT's frame. Error naming
+// The augmented model's two jaws (casework/occlusion/augmented_model.h), in the CT's frame. Error naming
 // the missing jaw when the registration did not make both.
 PhantomArches augmented_arches(const casework::CaseDentalRegistration& dental);
 // The same from a computed registration job (casework::compute_dental_registration), before it is stored.

@@ -12,7 +12,7 @@
 #include "nightly/nightly_summary.h"
 #include "nightly/nightly_worker.h"
 #include "records/validation_archive.h"
-#include "casework/validation_json.h"
+#include "casework/validation/validation_json.h"
 
 namespace maxillo::nightly {
 namespace {
@@ -23,14 +23,15 @@ std::string text_of(const std::vector<std::byte>& bytes) {
 
 // The work queue as the summary reads it: what the workers left of each item, and when.
 struct WorkQueueState {
-  std::map<std::string, Archive::WorkRecord> records;  // by item
-  int64_t now = 0;                                     // the index's clock
+  std::map<std::string, WorkRecord> records;  // by item
+  int64_t now = 0;                            // the index's clock
 };
 
-WorkQueueState read_work_queue(const Archive& archive) {
+WorkQueueState read_work_queue(Archive& archive) {
+  const WorkQueue queue(archive, kNightlyQueue);
   WorkQueueState state;
-  for (auto& record : archive.work_records(kNightlyQueue)) state.records.emplace(record.item, std::move(record));
-  state.now = archive.clock_seconds();
+  for (auto& record : queue.records()) state.records.emplace(record.item, std::move(record));
+  state.now = queue.clock_seconds();
   return state;
 }
 

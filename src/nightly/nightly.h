@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "archive/archive.h"
-#include "casework/case_validation.h"
+#include "casework/validation/case_validation.h"
 
 namespace maxillo::nightly {
 

@@ -11,7 +11,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "records/validation_archive.h"
-#include "casework/validation_json.h"
+#include "casework/validation/validation_json.h"
 
 namespace maxillo::nightly {
 namespace {
@@ -36,10 +36,11 @@ class LeaseHeartbeat {
   void renew_until_stopped(const std::filesystem::path& address, const std::string& item, const std::string& holder,
                            int64_t lease_seconds) {
     Archive archive = Archive::open(address);
+    WorkQueue queue(archive, kNightlyQueue);
     const auto period = std::chrono::milliseconds(std::max<int64_t>(200, lease_seconds * 1000 / 3));
     std::unique_lock lock(mutex_);
     while (!stop_.wait_for(lock, period, [this] { return stopping_; }))
-      if (!archive.renew_work(kNightlyQueue, item, holder, archive.clock_seconds() + lease_seconds))
+      if (!queue.renew(item, holder, queue.clock_seconds() + lease_seconds))
         log::warning("nightly: the lease of ", item, " was lost");
   }
 
@@ -77,12 +78,12 @@ std::vector<std::string> work_to_offer(const Archive& archive, const casework::V
 }
 
 // Validates one claimed item and finishes it; returns what became of the case.
-NightlyCase work_on(Archive& archive, const std::string& item, const NightlyOptions& options,
+NightlyCase work_on(Archive& archive, WorkQueue& queue, const std::string& item, const NightlyOptions& options,
                     const std::string& holder) {
   const auto parsed = parse_nightly_work_item(item);
   NightlyCase result;
   auto finish = [&](const char* state, const std::string& reason) {
-    if (!archive.finish_work(kNightlyQueue, item, holder, state, reason))
+    if (!queue.finish(item, holder, state, reason))
       log::warning("nightly: ", item, " was taken over by another worker before it finished here");
   };
   if (!parsed) {
@@ -109,7 +110,7 @@ NightlyCase work_on(Archive& archive, const std::string& item, const NightlyOpti
                                                     options.out / ("case-" + std::to_string(case_id)));
     // A worker that stalled past its lease may have lost the case to another one, which then
     // stores the validation: store it only while the lease is still ours.
-    if (!archive.renew_work(kNightlyQueue, item, holder, archive.clock_seconds() + options.lease_seconds)) {
+    if (!queue.renew(item, holder, queue.clock_seconds() + options.lease_seconds)) {
       result.reason = "its lease went to another worker while it ran; that worker stores the validation";
       log::warning("case ", case_id, ": ", result.reason);
       return result;
@@ -133,7 +134,7 @@ std::string nightly_work_item(int64_t case_id, const std::string& inputs_hash) {
   return "case:" + std::to_string(case_id) + ":" + inputs_hash;
 }
 
-NightlyCase unfinished_case(int64_t case_id, const Archive::WorkRecord* record, int64_t now) {
+NightlyCase unfinished_case(int64_t case_id, const WorkRecord* record, int64_t now) {
   static const std::string kFinish =
       "; `maxillo nightly --claim` (or scripts/cluster/nightly-slurm.sh again) finishes it, then `nightly "
       "--summary-only`";
@@ -169,16 +170,17 @@ std::optional<std::pair<int64_t, std::string>> parse_nightly_work_item(const std
 NightlyReport run_nightly_worker(Archive& archive, const NightlyOptions& options) {
   std::filesystem::create_directories(options.out);
   const std::string holder = options.worker.empty() ? default_worker_name() : options.worker;
-  archive.offer_work(kNightlyQueue, work_to_offer(archive, options.validation));
+  WorkQueue queue(archive, kNightlyQueue);
+  queue.offer(work_to_offer(archive, options.validation));
   NightlyReport report;
   for (;;) {
-    if (auto item = archive.claim_work(kNightlyQueue, holder, archive.clock_seconds(), options.lease_seconds)) {
-      auto result = work_on(archive, *item, options, holder);
+    if (auto item = queue.claim(holder, queue.clock_seconds(), options.lease_seconds)) {
+      auto result = work_on(archive, queue, *item, options, holder);
       log::info("case ", result.case_id, ": ", to_string(result.outcome));
       report.cases.push_back(std::move(result));
       continue;
     }
-    const auto counts = archive.work_counts(kNightlyQueue, archive.clock_seconds());
+    const auto counts = queue.counts(queue.clock_seconds());
     if (counts.pending == 0 && counts.leased == 0) break;  // every item is finished
     // Others hold leases: wait, in case one of them dies and its case comes free.
     if (counts.pending == 0) std::this_thread::sleep_for(options.poll);

@@ -1,6 +1,6 @@
 #pragma once
 // `maxillo nightly --claim`: one of many workers, on one machine or many, that share the
-// nightly validation of an archive through its work queue (Archive::claim_work) instead of
+// nightly validation of an archive through its work queue (archive/work_queue.h) instead of
 // a static --shard slice.
 //
 // Each worker offers every eligible case without a validation of its current inputs (the item
@@ -14,6 +14,7 @@
 #include <string>
 
 #include "archive/archive.h"
+#include "archive/work_queue.h"
 #include "nightly/nightly.h"
 
 namespace maxillo::nightly {
@@ -30,6 +31,6 @@ NightlyReport run_nightly_worker(Archive& archive, const NightlyOptions& options
 // inputs (`record`: its item, or null when no worker offered it), at `now` on the index's
 // clock: failed (kFailed, with the worker's reason), or left (kNotValidated: being validated,
 // its worker stopped before finishing it, or never claimed), with how to finish it.
-NightlyCase unfinished_case(int64_t case_id, const Archive::WorkRecord* record, int64_t now);
+NightlyCase unfinished_case(int64_t case_id, const WorkRecord* record, int64_t now);
 
 }  // namespace maxillo::nightly

@@ -76,7 +76,7 @@ struct StoredDentalRegistration {
 std::optional<StoredDentalRegistration> current_dental_registration(const Archive& archive, int64_t case_id,
                                                                     DentalArch arch);
 
-// The jaw's augmented dentition (casework/augmented_model.h) made with the arch's current
+// The jaw's augmented dentition (casework/occlusion/augmented_model.h) made with the arch's current
 // registration, if there is one: the CT's teeth with the scanned crowns, LPS mm, closed.
 std::optional<TriangleMesh> current_augmented_dentition(const Archive& archive, int64_t case_id, DentalArch arch);
 

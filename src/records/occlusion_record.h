@@ -26,7 +26,7 @@ struct OcclusionRecord {
     double contact_area_mm2 = 0;
     std::vector<occlusion::ToothContacts> teeth;
   };
-  struct Splint {      // the splint asked for and what was made (casework/surgical_splint.h)
+  struct Splint {      // the splint asked for and what was made (casework/occlusion/surgical_splint.h)
     std::string file;  // "splint.stl", in the result's folder
     double minimum_thickness_mm = 0, imprint_depth_mm = 0, clearance_mm = 0, voxel_mm = 0;
     double thickness_mm = 0;  // thinnest sampled column of the wafer

@@ -17,7 +17,7 @@ struct SimulationSummary {
   // required from this version on; a version 1 summary has none of them.
   // 3: profile_response (null when the plan does not advance the maxilla) and boundary_moves,
   // required from 3 on.
-  // 4: nose_tets and nose_stiffness (the cartilaginous nose, casework/nasal_cartilage.h) and
+  // 4: nose_tets and nose_stiffness (the cartilaginous nose, casework/softtissue/nasal_cartilage.h) and
   // model_fallback (null when the model asked for ran), required from 4 on; before it every
   // model was one homogeneous tissue.
   // 5: sliding_nodes and bone_contact (how tissue on moved bone follows it,
@@ -37,7 +37,7 @@ struct SimulationSummary {
   };
 
   // How the predicted profile follows a maxillary advancement, beside published series
-  // (casework/profile_response.h): stored with the published bands it was judged against.
+  // (casework/softtissue/profile_response.h): stored with the published bands it was judged against.
   struct ProfilePoint {
     std::string label;      // Prn, dorsum, Sn, Ls, Li, PogS
     bool present = false;   // the landmark (the dorsum: the profile) was there
@@ -56,7 +56,7 @@ struct SimulationSummary {
     double steepest_near_mm = 0;                 // and its distance from it
   };
 
-  // The model asked for when another one ran instead, and why (casework/case_simulation.h).
+  // The model asked for when another one ran instead, and why (casework/softtissue/case_simulation.h).
   struct ModelFallback {
     std::string requested;  // model_name: "nfem"
     std::string reason;     // its error

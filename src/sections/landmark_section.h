@@ -6,11 +6,11 @@
 // given by hand, how far each automatic landmark lies from the given one; when the case works
 // with an automatic set and a reference set is known (a phantom's design), how far each lies
 // from its true place. With the pictures of
-// casework/landmark_views.h the section opens with the landmarks drawn on bone and skin.
+// casework/landmarks/landmark_views.h the section opens with the landmarks drawn on bone and skin.
 #include <optional>
 #include <vector>
 
-#include "casework/landmark_views.h"
+#include "casework/landmarks/landmark_views.h"
 #include "records/case_landmarks.h"
 #include "report/report_model.h"
 

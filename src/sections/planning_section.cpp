@@ -6,7 +6,7 @@
 #include <string>
 #include <utility>
 
-#include "casework/plan_outputs.h"
+#include "casework/plan/plan_outputs.h"
 #include "report/number_text.h"
 
 namespace maxillo::sections {

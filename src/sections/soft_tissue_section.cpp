@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "casework/profile_response.h"
+#include "casework/softtissue/profile_response.h"
 #include "core/error.h"
 #include "report/number_text.h"
 #include "softtissue/boundary_move.h"
@@ -72,7 +72,7 @@ std::string tissues_text(const records::SimulationSummary& s) {
   if (s.nose_tets == 0) return "one homogeneous soft tissue";
   std::string text = "soft tissue, and the cartilaginous nose (" + std::to_string(s.nose_tets) + " tetrahedra) " +
                      fixed(s.nose_stiffness, 0) + " times stiffer";
-  // From format 6 the moved bone does not carry the nose (casework/nasal_cartilage.h).
+  // From format 6 the moved bone does not carry the nose (casework/softtissue/nasal_cartilage.h).
   if (s.format_version >= 6)
     text += ", which follows the tissue, not the moved bone (" + std::to_string(s.nose_nodes_uncarried) +
             " of its nodes on the bone left free, as the septum is freed from the maxilla)";

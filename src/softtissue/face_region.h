@@ -6,7 +6,7 @@
 // The shape is a union of convex pieces, each the kept side of its cut planes. One piece is not
 // enough for a face: a plane below the orbits cuts the nose at its root, so that the nose hangs
 // from the moved lip (issue 34), and a plane above the nasion takes in the eyes and the brain
-// behind the forehead. casework/soft_tissue_prediction.h's region is the face below the orbits
+// behind the forehead. casework/softtissue/soft_tissue_prediction.h's region is the face below the orbits
 // and, on request, above them a slab in front of the eyes up the forehead: the nose's root, the
 // glabella and the eyelids.
 #include <Eigen/Core>

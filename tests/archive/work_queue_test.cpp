@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "archive/archive.h"
+#include "archive/work_queue.h"
 #include "archive_fixture.h"
 
 namespace maxillo {
@@ -27,15 +28,16 @@ Archive fresh_archive(const TemporaryFolder& folder) {
 TEST(WorkQueue, TheIndexClockIsUnixSecondsAndMovesOn) {
   TemporaryFolder folder;
   Archive archive = fresh_archive(folder);
+  WorkQueue queue(archive, "q");
   const auto machine = [] {
     return std::chrono::duration_cast<std::chrono::seconds>(std::chrono::system_clock::now().time_since_epoch())
         .count();
   };
   const int64_t before = machine();
-  const int64_t first = archive.clock_seconds();
+  const int64_t first = queue.clock_seconds();
   EXPECT_LE(std::abs(first - before), 2);
   std::this_thread::sleep_for(std::chrono::milliseconds(1100));
-  const int64_t second = archive.clock_seconds();
+  const int64_t second = queue.clock_seconds();
   EXPECT_GE(second, first + 1);
   EXPECT_LE(second, first + 3);
 }
@@ -43,33 +45,35 @@ TEST(WorkQueue, TheIndexClockIsUnixSecondsAndMovesOn) {
 TEST(WorkQueue, OffersAreIdempotentAndItemsAreClaimedInOrderOnce) {
   TemporaryFolder folder;
   Archive archive = fresh_archive(folder);
-  archive.offer_work("q", {"b", "a", "c"});
-  archive.offer_work("q", {"a", "c"});
-  EXPECT_EQ(archive.claim_work("q", "w1", 1000, 60), "a");
-  EXPECT_EQ(archive.claim_work("q", "w2", 1000, 60), "b");
-  EXPECT_EQ(archive.claim_work("q", "w1", 1000, 60), "c");
-  EXPECT_EQ(archive.claim_work("q", "w2", 1000, 60), std::nullopt);
-  auto counts = archive.work_counts("q", 1000);
+  WorkQueue queue(archive, "q");
+  queue.offer({"b", "a", "c"});
+  queue.offer({"a", "c"});
+  EXPECT_EQ(queue.claim("w1", 1000, 60), "a");
+  EXPECT_EQ(queue.claim("w2", 1000, 60), "b");
+  EXPECT_EQ(queue.claim("w1", 1000, 60), "c");
+  EXPECT_EQ(queue.claim("w2", 1000, 60), std::nullopt);
+  auto counts = queue.counts(1000);
   EXPECT_EQ(counts.pending, 0u);
   EXPECT_EQ(counts.leased, 3u);
-  EXPECT_EQ(archive.claim_work("other queue", "w1", 1000, 60), std::nullopt);
+  EXPECT_EQ(WorkQueue(archive, "other queue").claim("w1", 1000, 60), std::nullopt);
 }
 
 TEST(WorkQueue, AnEndedLeaseIsTakenOverAndTheOldHolderCanNoLongerFinish) {
   TemporaryFolder folder;
   Archive archive = fresh_archive(folder);
-  archive.offer_work("q", {"case:1:abc"});
-  ASSERT_EQ(archive.claim_work("q", "dead", 1000, 10), "case:1:abc");
-  EXPECT_EQ(archive.claim_work("q", "alive", 1009, 10), std::nullopt);  // still leased
-  EXPECT_EQ(archive.work_counts("q", 1009).leased, 1u);
-  EXPECT_EQ(archive.work_counts("q", 1010).pending, 1u);  // the lease ended
-  ASSERT_EQ(archive.claim_work("q", "alive", 1010, 10), "case:1:abc");
-  EXPECT_FALSE(archive.renew_work("q", "case:1:abc", "dead", 2000));
-  EXPECT_FALSE(archive.finish_work("q", "case:1:abc", "dead", "done"));
-  EXPECT_TRUE(archive.renew_work("q", "case:1:abc", "alive", 1100));
-  EXPECT_EQ(archive.claim_work("q", "third", 1050, 10), std::nullopt);  // renewed past 1050
-  EXPECT_TRUE(archive.finish_work("q", "case:1:abc", "alive", "done"));
-  auto records = archive.work_records("q");
+  WorkQueue queue(archive, "q");
+  queue.offer({"case:1:abc"});
+  ASSERT_EQ(queue.claim("dead", 1000, 10), "case:1:abc");
+  EXPECT_EQ(queue.claim("alive", 1009, 10), std::nullopt);  // still leased
+  EXPECT_EQ(queue.counts(1009).leased, 1u);
+  EXPECT_EQ(queue.counts(1010).pending, 1u);  // the lease ended
+  ASSERT_EQ(queue.claim("alive", 1010, 10), "case:1:abc");
+  EXPECT_FALSE(queue.renew("case:1:abc", "dead", 2000));
+  EXPECT_FALSE(queue.finish("case:1:abc", "dead", "done"));
+  EXPECT_TRUE(queue.renew("case:1:abc", "alive", 1100));
+  EXPECT_EQ(queue.claim("third", 1050, 10), std::nullopt);  // renewed past 1050
+  EXPECT_TRUE(queue.finish("case:1:abc", "alive", "done"));
+  auto records = queue.records();
   ASSERT_EQ(records.size(), 1u);
   EXPECT_EQ(records[0].state, "done");
   EXPECT_EQ(records[0].holder, "alive");
@@ -79,18 +83,19 @@ TEST(WorkQueue, AnEndedLeaseIsTakenOverAndTheOldHolderCanNoLongerFinish) {
 TEST(WorkQueue, FinishedItemsAreNeverClaimedAgainEvenWhenOfferedAgain) {
   TemporaryFolder folder;
   Archive archive = fresh_archive(folder);
-  archive.offer_work("q", {"x", "y"});
-  ASSERT_EQ(archive.claim_work("q", "w", 1, 5), "x");
-  ASSERT_TRUE(archive.finish_work("q", "x", "w", "failed", "bad input"));
-  ASSERT_EQ(archive.claim_work("q", "w", 1, 5), "y");
-  ASSERT_TRUE(archive.finish_work("q", "y", "w", "done"));
-  EXPECT_FALSE(archive.finish_work("q", "y", "w", "done"));  // finished once
-  archive.offer_work("q", {"x", "y"});
-  EXPECT_EQ(archive.claim_work("q", "w", 100000, 5), std::nullopt);
-  auto counts = archive.work_counts("q", 100000);
+  WorkQueue queue(archive, "q");
+  queue.offer({"x", "y"});
+  ASSERT_EQ(queue.claim("w", 1, 5), "x");
+  ASSERT_TRUE(queue.finish("x", "w", "failed", "bad input"));
+  ASSERT_EQ(queue.claim("w", 1, 5), "y");
+  ASSERT_TRUE(queue.finish("y", "w", "done"));
+  EXPECT_FALSE(queue.finish("y", "w", "done"));  // finished once
+  queue.offer({"x", "y"});
+  EXPECT_EQ(queue.claim("w", 100000, 5), std::nullopt);
+  auto counts = queue.counts(100000);
   EXPECT_EQ(counts.finished, 2u);
   EXPECT_EQ(counts.pending + counts.leased, 0u);
-  EXPECT_EQ(archive.work_records("q")[0].reason, "bad input");
+  EXPECT_EQ(queue.records()[0].reason, "bad input");
 }
 
 TEST(WorkQueue, ConcurrentWorkersClaimEveryItemExactlyOnce) {
@@ -98,16 +103,20 @@ TEST(WorkQueue, ConcurrentWorkersClaimEveryItemExactlyOnce) {
   const auto address = testing::archive_at(folder / "archive");
   std::vector<std::string> items;
   for (int n = 0; n < 60; ++n) items.push_back("item-" + std::to_string(1000 + n));
-  { Archive::open(address, OpenMode::CreateIfMissing).offer_work("q", items); }
+  {
+    Archive archive = Archive::open(address, OpenMode::CreateIfMissing);
+    WorkQueue(archive, "q").offer(items);
+  }
   std::mutex mutex;
   std::vector<std::string> claimed;
   std::vector<std::thread> workers;
   for (int w = 0; w < 4; ++w)
     workers.emplace_back([&, w] {
       Archive archive = Archive::open(address);
+      WorkQueue queue(archive, "q");
       const std::string name = "worker-" + std::to_string(w);
-      while (auto item = archive.claim_work("q", name, 1000, 3600)) {
-        EXPECT_TRUE(archive.finish_work("q", *item, name, "done"));
+      while (auto item = queue.claim(name, 1000, 3600)) {
+        EXPECT_TRUE(queue.finish(*item, name, "done"));
         std::lock_guard lock(mutex);
         claimed.push_back(*item);
       }
@@ -116,7 +125,7 @@ TEST(WorkQueue, ConcurrentWorkersClaimEveryItemExactlyOnce) {
   std::sort(claimed.begin(), claimed.end());
   EXPECT_EQ(claimed, items);  // every item, none twice
   Archive archive = Archive::open(address);
-  for (const auto& record : archive.work_records("q")) EXPECT_EQ(record.claims, 1) << record.item;
+  for (const auto& record : WorkQueue(archive, "q").records()) EXPECT_EQ(record.claims, 1) << record.item;
 }
 
 }  // namespace

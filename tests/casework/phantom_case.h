@@ -6,8 +6,8 @@
 #include "archive_fixture.h"
 #include "records/case_landmarks.h"
 #include "records/plan_archive.h"
-#include "casework/planned_case.h"
-#include "casework/sample_case.h"
+#include "casework/plan/planned_case.h"
+#include "casework/sample/sample_case.h"
 
 namespace maxillo::casework::testing_support {
 

@@ -16,6 +16,7 @@
 #include <thread>
 
 #include "archive/archive.h"
+#include "archive/work_queue.h"
 #include "core/temporary_folder.h"
 #include "support/pdf_tools.h"
 #include "support/run_command.h"
@@ -103,7 +104,7 @@ class ClusterEndToEnd : public ::testing::Test {
         validations += artefact.kind == "validation";
       EXPECT_EQ(validations, 1) << patient;
     }
-    for (const auto& record : archive.work_records("nightly"))
+    for (const auto& record : WorkQueue(archive, "nightly").records())
       EXPECT_EQ(record.state, "done") << record.item << ": " << record.reason;
   }
 
@@ -135,7 +136,7 @@ TEST_F(ClusterEndToEnd, SlurmWorkersWithOneKilledValidateEveryCaseExactlyOnceAnd
   pid_t killed = 0;
   std::string killed_item;
   for (auto start = Clock::now(); !killed && Clock::now() - start < std::chrono::minutes(5);) {
-    for (const auto& record : archive.work_records("nightly"))
+    for (const auto& record : WorkQueue(archive, "nightly").records())
       if (record.state == "pending" && !record.holder.empty()) {
         killed = pid_t(std::stol(record.holder.substr(record.holder.rfind(':') + 1)));
         killed_item = record.item;
@@ -152,7 +153,7 @@ TEST_F(ClusterEndToEnd, SlurmWorkersWithOneKilledValidateEveryCaseExactlyOnceAnd
   // Every case validated exactly once: one validation artefact each, every item done once,
   // the killed worker's case claimed twice (by it, then by the worker that took it over).
   expect_each_case_validated_once(archive, patients);
-  const auto records = archive.work_records("nightly");
+  const auto records = WorkQueue(archive, "nightly").records();
   ASSERT_EQ(records.size(), patients.size());
   for (const auto& record : records) EXPECT_EQ(record.claims, record.item == killed_item ? 2 : 1) << record.item;
   expect_summary_lists(out, archive, patients);  // the summary job ran after the workers
@@ -178,7 +179,7 @@ TEST_F(ClusterEndToEnd, AnArrayTaskCancelledWhileItHoldsACaseStillEndsInASummary
   };
   std::string task;
   for (auto start = Clock::now(); task.empty() && Clock::now() - start < std::chrono::minutes(5);) {
-    for (const auto& record : archive.work_records("nightly"))
+    for (const auto& record : WorkQueue(archive, "nightly").records())
       for (const std::string candidate : {"1", "2"})
         if (record.state == "pending" && !worker_pid_of(candidate).empty() &&
             record.holder.ends_with(":" + worker_pid_of(candidate)))

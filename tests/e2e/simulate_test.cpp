@@ -58,7 +58,7 @@ TEST(Simulate, SixMillimetreAdvancementOfThePhantomGivesAPlausibleFace) {
   EXPECT_NEAR(profile["advancement_mm"].get<double>(), 6.0, 0.01);
   EXPECT_EQ(profile["reference"], "A");
   EXPECT_EQ(profile["points"].size(), 6u);
-  // The cartilaginous nose is a stiffer tissue (casework/nasal_cartilage.h).
+  // The cartilaginous nose is a stiffer tissue (casework/softtissue/nasal_cartilage.h).
   EXPECT_GT(summary["nose_tets"].get<int>(), 50);
   EXPECT_NEAR(summary["nose_stiffness"].get<double>(), 67.6, 0.1);
   ASSERT_EQ(summary["boundary_moves"].size(), 3u);  // below the orbits, under the chin, in front of the ears

@@ -6,7 +6,7 @@
 
 #include "archive_fixture.h"
 #include "records/case_landmarks.h"
-#include "casework/case_validation.h"
+#include "casework/validation/case_validation.h"
 #include "nightly/nightly.h"
 #include "nightly/nightly_worker.h"
 #include "records/plan_archive.h"
@@ -134,7 +134,7 @@ TEST(NightlyWorkers, WorkersShareTheCasesAndEachIsFinishedOnce) {
   std::sort(seen.begin(), seen.end());
   EXPECT_EQ(seen, (std::vector<int64_t>{1, 2, 3}));  // every case once, by one worker or the other
   Archive archive = Archive::open(address);
-  for (const auto& record : archive.work_records(kNightlyQueue)) {
+  for (const auto& record : WorkQueue(archive, kNightlyQueue).records()) {
     EXPECT_EQ(record.state, "failed") << record.item;
     EXPECT_EQ(record.claims, 1) << record.item;
   }
@@ -155,11 +155,12 @@ TEST(NightlyWorkers, TheSummarySaysWhatTheWorkersLeftAndHowToFinishIt) {
   std::vector<std::string> items;
   for (int64_t id : cases)
     items.push_back(nightly_work_item(id, casework::validation_inputs_hash(archive, id, options.validation).value()));
-  archive.offer_work(kNightlyQueue, {items[0], items[1], items[2]});  // P4: never offered
-  const int64_t now = archive.clock_seconds();
-  ASSERT_EQ(archive.claim_work(kNightlyQueue, "cancelled", now - 100, 10), items[0]);  // lease ended
-  ASSERT_EQ(archive.claim_work(kNightlyQueue, "failing", now - 95, 600), items[1]);    // items[0] still held then
-  ASSERT_TRUE(archive.finish_work(kNightlyQueue, items[1], "failing", "failed", "no bone found"));
+  WorkQueue queue(archive, kNightlyQueue);
+  queue.offer({items[0], items[1], items[2]});  // P4: never offered
+  const int64_t now = queue.clock_seconds();
+  ASSERT_EQ(queue.claim("cancelled", now - 100, 10), items[0]);  // lease ended
+  ASSERT_EQ(queue.claim("failing", now - 95, 600), items[1]);    // items[0] still held then
+  ASSERT_TRUE(queue.finish(items[1], "failing", "failed", "no bone found"));
 
   options.summary_only = true;
   const NightlyReport report = run_nightly(archive, options);
@@ -175,7 +176,7 @@ TEST(NightlyWorkers, TheSummarySaysWhatTheWorkersLeftAndHowToFinishIt) {
 }
 
 TEST(NightlyWorkers, ACaseUnderALiveLeaseIsBeingValidated) {
-  Archive::WorkRecord record{"case:1:abc", "pending", "node7:42", "", 1, 1000};
+  WorkRecord record{"case:1:abc", "pending", "node7:42", "", 1, 1000};
   const NightlyCase held = unfinished_case(1, &record, 990);
   EXPECT_EQ(held.outcome, NightlyOutcome::kNotValidated);
   EXPECT_NE(held.reason.find("being validated by worker node7:42 (lease for 10 s more)"), std::string::npos)

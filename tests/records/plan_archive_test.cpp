@@ -8,7 +8,7 @@
 #include "core/error.h"
 #include "core/sha256.h"
 #include "records/plan_archive.h"
-#include "casework/plan_outputs.h"
+#include "casework/plan/plan_outputs.h"
 #include "records/plan_result_record.h"
 #include "sections/planning_section.h"
 #include "planning/plan_application.h"

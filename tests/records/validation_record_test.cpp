@@ -7,7 +7,7 @@
 #include <string>
 
 #include "core/error.h"
-#include "casework/validation_json.h"
+#include "casework/validation/validation_json.h"
 #include "support/error_of.h"
 
 namespace maxillo::records {

@@ -6,6 +6,12 @@
 
 #include <set>
 
+#include "softtissue/cube_benchmark.h"
+#include "softtissue/cube_mesh.h"
+#include "softtissue/linear_static_solve.h"
+#include "softtissue/mass_tensor_model.h"
+#include "softtissue/stiffness_blocks.h"
+
 namespace maxillo::softtissue {
 namespace {
 
@@ -16,6 +22,7 @@ TEST(SoftTissueModels, EveryModelHasOneEntryWhoseNameReadsBack) {
     EXPECT_EQ(parse_model(m.name), m.model);
     EXPECT_EQ(model_name(m.model), m.name);
     EXPECT_EQ(&model_info(m.model), &m);
+    EXPECT_NE(m.solve, nullptr) << m.name;
   }
   for (auto model : {SoftTissueModel::kMassTensor, SoftTissueModel::kLinearFem, SoftTissueModel::kMassSpring,
                      SoftTissueModel::kNonlinearFem})
@@ -33,6 +40,32 @@ TEST(SoftTissueModels, TheCommandsListsComeFromTheTable) {
   EXPECT_TRUE(model_info(SoftTissueModel::kLinearFem).in_uncertainty_band);
   EXPECT_FALSE(model_info(SoftTissueModel::kMassSpring).in_uncertainty_band);
   EXPECT_FALSE(model_info(SoftTissueModel::kNonlinearFem).in_uncertainty_band);
+  // `bench face` times the three models that solve the linear problem.
+  EXPECT_TRUE(model_info(SoftTissueModel::kMassTensor).in_face_benchmark);
+  EXPECT_TRUE(model_info(SoftTissueModel::kLinearFem).in_face_benchmark);
+  EXPECT_TRUE(model_info(SoftTissueModel::kMassSpring).in_face_benchmark);
+  EXPECT_FALSE(model_info(SoftTissueModel::kNonlinearFem).in_face_benchmark);
+}
+
+// The table's solver is the model's own, called as the case workflow always called it: the same
+// answer to the bit as the solver called directly.
+TEST(SoftTissueModels, TheTableSolvesWithTheModelsOwnSolver) {
+  const CubeSpec spec{100.0, 4, HexSplit::kSixTets};
+  const TetMesh mesh = make_cube_mesh(spec);
+  const BoundaryConditions bc = cube_benchmark_conditions(mesh, spec);
+  const ModelSolveOptions options;
+  const auto blocks = assemble_stiffness_blocks(mesh, options.material);
+  const auto fem = solve_model(SoftTissueModel::kLinearFem, mesh, bc, options);
+  const auto direct_fem = solve_linear_static(blocks, bc);
+  EXPECT_EQ(fem.displacement, direct_fem.displacement);
+  EXPECT_EQ(fem.iterations, direct_fem.iterations);
+  LocalIterationOptions local;
+  local.gradient_threshold_mm = options.gradient_threshold_mm;  // one tissue: no stiffness contrast
+  local.max_iterations = options.max_sweeps;
+  const auto mtm = solve_model(SoftTissueModel::kMassTensor, mesh, bc, options);
+  const auto direct_mtm = solve_mass_tensor(make_mass_tensor_model(blocks), bc, local);
+  EXPECT_EQ(mtm.displacement, direct_mtm.displacement);
+  EXPECT_EQ(mtm.iterations, direct_mtm.iterations);
 }
 
 }  // namespace
