@@ -188,15 +188,14 @@ Attachment attach_to_bone(const TetMesh& mesh, const LabelVolume& segments,
     result.segment[size_t(i)] = s;
     if (s) {
       auto move = moves.find(s);
+      const bool moved = move != moves.end();
       const bool carried = not_carried.empty() || !not_carried[size_t(i)];
-      if (move != moves.end() && !carried) {
+      const bool cavity = moved && carried && options.outer_surface_only && inside_bone_cavity(segments, p, options);
+      if (moved && (!carried || cavity)) {  // touching moved bone, left free
         loose_segment[size_t(i)] = s;
+        in_cavity[size_t(i)] = cavity;
         result.segment[size_t(i)] = 0;
-      } else if (move != moves.end() && options.outer_surface_only && inside_bone_cavity(segments, p, options)) {
-        loose_segment[size_t(i)] = s;
-        in_cavity[size_t(i)] = 1;
-        result.segment[size_t(i)] = 0;
-      } else if (move != moves.end()) {
+      } else if (moved) {
         join_to_moved_bone(segments, i, p, move->second, options, result.bc);
       } else {
         result.bc.constraint[size_t(i)] = NodeConstraint::kFixed;

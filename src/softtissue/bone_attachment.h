@@ -68,8 +68,9 @@ bool inside_bone_cavity(const LabelVolume& segments, const Eigen::Vector3d& p, c
 // segment (pre-op -> planned, LPS mm); segments absent from `moves` stay where they are.
 // `not_carried`: per node (or empty), non-zero where no moved segment carries the tissue: such a
 // node touching moved bone is left free (touching unmoved bone it is still fixed). The case
-// workflow passes the cartilaginous nose (casework/softtissue/nasal_cartilage.h): it follows the tissue, not
-// the bone. A piece of the mesh that nothing else anchors follows its bone after all.
+// workflow passes the cartilaginous nose (casework/softtissue/nasal_cartilage.h): it follows
+// the tissue, not the bone. A piece of the mesh that nothing else anchors follows its bone
+// after all.
 Attachment attach_to_bone(const TetMesh& mesh, const LabelVolume& segments,
                           const std::map<uint8_t, Eigen::Isometry3d>& moves, const RegionShape& region,
                           const AttachmentOptions& options = {}, const std::vector<uint8_t>& not_carried = {});
