@@ -71,11 +71,13 @@ Complex run_mesh_3(const Domain& domain, const TetMeshingOptions& o, double cell
   Criteria criteria(p::facet_angle = o.facet_angle_deg, p::facet_size = cell_size,
                     p::facet_distance = o.facet_distance_mm, p::cell_radius_edge_ratio = o.radius_edge_ratio,
                     p::cell_size = cell_size);
-  // Perturbation and exudation remove slivers; both are open-ended, hence the time limits.
-  return CGAL::make_mesh_3<Complex>(
-      domain, criteria, p::no_lloyd(), p::no_odt(),
-      p::perturb(p::time_limit = o.optimise_seconds, p::sliver_bound = o.sliver_bound_deg),
-      p::exude(p::time_limit = o.optimise_seconds, p::sliver_bound = o.sliver_bound_deg));
+  // Perturbation and exudation remove slivers. A time limit would make the mesh depend on the
+  // machine's load (a loaded machine optimises less), so there is none: the perturber raises the
+  // worst dihedral angle degree by degree and stops at the bound or at the first degree it cannot
+  // gain; the exuder makes one pass over the cells below the bound.
+  return CGAL::make_mesh_3<Complex>(domain, criteria, p::no_lloyd(), p::no_odt(),
+                                    p::perturb(p::time_limit = 0, p::sliver_bound = o.sliver_bound_deg),
+                                    p::exude(p::time_limit = 0, p::sliver_bound = o.sliver_bound_deg));
 }
 
 // Cells of the complex as a TetMesh in LPS: image coordinates are index x spacing from the crop.

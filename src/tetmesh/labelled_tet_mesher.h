@@ -15,9 +15,11 @@ struct TetMeshingOptions {
   double facet_angle_deg = 25;     // lower bound on boundary facets' angles
   double radius_edge_ratio = 3.0;  // upper bound on circumradius / shortest edge
   int max_tets = 100000;           // the cell size grows until the mesh has at most this many
-  double optimise_seconds = 3.0;   // time limit for each of sliver perturbation and exudation
-  double sliver_bound_deg = 12;    // exudation and perturbation aim above this dihedral angle
-  int random_seed = 1;             // CGAL's refinement is randomised; fixed for reproducibility
+  // Sliver perturbation and exudation aim above this dihedral angle and end on their own (the
+  // perturber when a degree step fails, the exuder after its pass): no time limit, so the mesh
+  // does not depend on the machine's load.
+  double sliver_bound_deg = 12;
+  int random_seed = 1;  // CGAL's refinement is randomised; fixed for reproducibility
 };
 
 struct TetMeshingResult {

@@ -96,7 +96,7 @@ std::vector<std::string> face_region_plane_names(const softtissue::RegionShape& 
 
 std::string face_model_key(const LabelVolume& tissues, const LandmarkSet& landmarks, const SoftTissueOptions& options) {
   // Every field of the meshing options is in the key: a new field must be added here too.
-  static_assert(sizeof(tetmesh::TetMeshingOptions) == 64, "update face_model_key for the new meshing option");
+  static_assert(sizeof(tetmesh::TetMeshingOptions) == 56, "update face_model_key for the new meshing option");
   Sha256 hash;
   hash.update(std::string_view(reinterpret_cast<const char*>(tissues.labels.data()), tissues.labels.size()));
   char text[512];
@@ -119,9 +119,10 @@ std::string face_model_key(const LabelVolume& tissues, const LandmarkSet& landma
     hash.update(text);
   }
   const auto& m = options.meshing;
-  std::snprintf(text, sizeof text, "meshing %.17g %.17g %.17g %.17g %d %.17g %.17g %d\n", m.cell_size_mm,
-                m.facet_distance_mm, m.facet_angle_deg, m.radius_edge_ratio, m.max_tets, m.optimise_seconds,
-                m.sliver_bound_deg, m.random_seed);
+  // No time limit on the optimisers (tetmesh/labelled_tet_mesher.h) since 2026-11-29: earlier
+  // models were meshed with one, and their keys, which named it, no longer match.
+  std::snprintf(text, sizeof text, "meshing %.17g %.17g %.17g %.17g %d %.17g %d\n", m.cell_size_mm, m.facet_distance_mm,
+                m.facet_angle_deg, m.radius_edge_ratio, m.max_tets, m.sliver_bound_deg, m.random_seed);
   hash.update(text);
   return hash.hex_digest();
 }
