@@ -19,16 +19,23 @@ struct Histogram {
 };
 
 // A scanner fills what it did not reconstruct (a cone-beam scan's corners outside its cylinder,
-// a CT's outside its circle) with one value, below air's or air's own. Tissue is noisy, so that
-// value is a spike. Below air it is the lowest value, far above the next one up, and must be
-// left out of the histogram, or it would be taken for air's mode. (At air's own value it moves
-// no mode, and cannot be told from air that a scanner clamps to one value, as the cadaver head's
-// is: it is not sought.)
-std::optional<int> spike_below_air(const std::vector<int64_t>& full, int64_t total) {
+// a CT's outside its circle) with one value, below air's or air's own. Tissue and air are noisy,
+// so that value is a spike: far more frequent than both values next to it. Below air it is the
+// lowest value and must be left out of the histogram, or it would be taken for air's mode; at
+// air's own value it is the most frequent value. Air that a scanner clamps to one value (the
+// cadaver head's) or a synthetic scan's noiseless air is a spike too: spike_near_the_axis tells
+// them apart.
+bool is_spike(const std::vector<int64_t>& full, size_t value, int64_t total) {
+  const int64_t below = value > 0 ? full[value - 1] : 0, above = value + 1 < full.size() ? full[value + 1] : 0;
+  return full[value] > total / 50 && full[value] > 20 * std::max(below, above);
+}
+
+std::optional<int> padding_spike(const std::vector<int64_t>& full, int64_t total) {
   size_t lowest = 0;
   while (lowest + 1 < full.size() && full[lowest] == 0) ++lowest;
-  const int64_t next_up = lowest + 1 < full.size() ? full[lowest + 1] : 0;
-  if (full[lowest] > total / 50 && full[lowest] > 20 * next_up) return int(lowest) - 32768;
+  if (is_spike(full, lowest, total)) return int(lowest) - 32768;
+  const size_t most = size_t(std::max_element(full.begin(), full.end()) - full.begin());
+  if (is_spike(full, most, total)) return int(most) - 32768;
   return std::nullopt;
 }
 
@@ -110,7 +117,7 @@ GreyCalibration estimate_grey_calibration(const Volume& volume) {
   std::vector<int64_t> full(65536, 0);
   for (int16_t v : volume.hu) ++full[size_t(int(v) + 32768)];
   const int64_t total = int64_t(volume.hu.size());
-  calibration.padding = spike_below_air(full, total);
+  calibration.padding = padding_spike(full, total);
   if (calibration.padding && spike_near_the_axis(volume, *calibration.padding)) calibration.padding.reset();
   const Histogram h = histogram_of(full, calibration.padding);
   // Air and soft tissue lie about 1000 HU apart, a large share of any head scan's range: peaks
