@@ -21,22 +21,55 @@ struct Histogram {
 // A scanner fills what it did not reconstruct (a cone-beam scan's corners outside its cylinder,
 // a CT's outside its circle) with one value, below air's or air's own. Tissue and air are noisy,
 // so that value is a spike: far more frequent than both values next to it. Below air it is the
-// lowest value and must be left out of the histogram, or it would be taken for air's mode; at
-// air's own value it is the most frequent value. Air that a scanner clamps to one value (the
-// cadaver head's) or a synthetic scan's noiseless air is a spike too: spike_near_the_axis tells
-// them apart.
+// lowest value and must be left out of the histogram, or it would be taken for air's mode.
 bool is_spike(const std::vector<int64_t>& full, size_t value, int64_t total) {
   const int64_t below = value > 0 ? full[value - 1] : 0, above = value + 1 < full.size() ? full[value + 1] : 0;
   return full[value] > total / 50 && full[value] > 20 * std::max(below, above);
 }
 
-std::optional<int> padding_spike(const std::vector<int64_t>& full, int64_t total) {
+std::optional<int> lowest_value_spike(const std::vector<int64_t>& full, int64_t total) {
   size_t lowest = 0;
   while (lowest + 1 < full.size() && full[lowest] == 0) ++lowest;
   if (is_spike(full, lowest, total)) return int(lowest) - 32768;
+  return std::nullopt;
+}
+
+std::optional<int> most_frequent_value_spike(const std::vector<int64_t>& full, int64_t total) {
   const size_t most = size_t(std::max_element(full.begin(), full.end()) - full.begin());
   if (is_spike(full, most, total)) return int(most) - 32768;
   return std::nullopt;
+}
+
+// How far the run of `value` reaches into row j of slice k from the row's start (`from_start`)
+// or its end; -1 when the whole row is that value.
+int run_from_side(const Volume& volume, int value, int j, int k, bool from_start) {
+  const int n = volume.geometry.size.x();
+  for (int step = 0; step < n; ++step)
+    if (volume.at(from_start ? step : n - 1 - step, j, k) != value) return step;
+  return -1;
+}
+
+// Whether the voxels of `value` reached from the rows' sides end in the same place in two slices
+// half the field's height apart. Padding at air's own value surrounds the scanner's cylinder,
+// the same in every slice, and ends where the noisy air inside it starts; air a scanner clamps to
+// that one value (the cadaver head's) surrounds the head, whose outline changes with the height.
+bool value_surrounds_a_cylinder(const Volume& volume, int value) {
+  const auto& g = volume.geometry;
+  std::vector<int> slices;  // the slices the value does not fill (the field's height)
+  for (int k = 0; k < g.size.z(); ++k)
+    if (run_from_side(volume, value, g.size.y() / 2, k, true) >= 0) slices.push_back(k);
+  if (slices.size() < 4) return false;
+  const int k1 = slices[slices.size() / 4], k2 = slices[3 * slices.size() / 4];
+  int compared = 0, same = 0;
+  for (int j = 0; j < g.size.y(); ++j)
+    for (bool from_start : {true, false}) {
+      const int a = run_from_side(volume, value, j, k1, from_start),
+                b = run_from_side(volume, value, j, k2, from_start);
+      if (a <= 0 || b <= 0) continue;  // a full row, or none of the value at its side
+      ++compared;
+      same += std::abs(a - b) <= 1;
+    }
+  return compared >= 20 && same >= 0.9 * compared;
 }
 
 // Whether `value` is a spike near the grid's axis too (within 40 % of the smaller half-width):
@@ -117,9 +150,15 @@ GreyCalibration estimate_grey_calibration(const Volume& volume) {
   std::vector<int64_t> full(65536, 0);
   for (int16_t v : volume.hu) ++full[size_t(int(v) + 32768)];
   const int64_t total = int64_t(volume.hu.size());
-  calibration.padding = padding_spike(full, total);
+  // Padding below air, or at air's own value around a cylinder; a spike that stands near the
+  // grid's axis too is the air of a scan without noise.
+  calibration.padding = lowest_value_spike(full, total);
+  if (!calibration.padding)
+    if (const auto most = most_frequent_value_spike(full, total); most && value_surrounds_a_cylinder(volume, *most))
+      calibration.padding = most;
   if (calibration.padding && spike_near_the_axis(volume, *calibration.padding)) calibration.padding.reset();
-  const Histogram h = histogram_of(full, calibration.padding);
+  // Padding at air's own value stays in the histogram: it moves no mode.
+  const Histogram h = histogram_of(full, lowest_value_spike(full, total) ? calibration.padding : std::nullopt);
   // Air and soft tissue lie about 1000 HU apart, a large share of any head scan's range: peaks
   // closer than a tenth of the range are one tissue's noise or fat beside muscle.
   const auto peaks = peaks_of(h, kBins / 10);

@@ -181,12 +181,23 @@ RuleFinding orbitale_across(const HeadVolume& v, const Eigen::Vector3d& expected
 
 constexpr double kOrbitHalfWidthMm = 12, kWideOrbitHalfWidthMm = 20;
 
+// Orbitale is the rim's lowest point only where the rim is seen rising on both sides of it, a
+// few millimetres above it: where the field's top cuts the rim that close (a cone-beam field cut
+// at the orbits), the rule reads whatever bone the rays meet below the cut. Such a point is
+// absent, as at any edge of the field (landmark_detection.cpp), but with the reach the rule needs.
+constexpr double kRimRiseSeenMm = 5;
+RuleFinding unless_the_rim_is_cut(const HeadVolume& v, RuleFinding found) {
+  if (found.position && !v.scanned(*found.position + Eigen::Vector3d(0, 0, kRimRiseSeenMm)))
+    return RuleFinding::absent("at the edge of the scanned field: the orbital rim above it was not scanned");
+  return found;
+}
+
 }  // namespace
 
 RuleFinding find_orbitale(const HeadVolume& v, const Eigen::Vector3d& expected, int side, OrbitSearch search) {
-  RuleFinding narrow = orbitale_across(v, expected, side, kOrbitHalfWidthMm);
+  RuleFinding narrow = unless_the_rim_is_cut(v, orbitale_across(v, expected, side, kOrbitHalfWidthMm));
   if (search == OrbitSearch::kNarrow || !narrow.position || narrow.evidence >= 1) return narrow;
-  RuleFinding wide = orbitale_across(v, expected, side, kWideOrbitHalfWidthMm);
+  RuleFinding wide = unless_the_rim_is_cut(v, orbitale_across(v, expected, side, kWideOrbitHalfWidthMm));
   return wide.position && wide.evidence >= 1 ? wide : narrow;
 }
 
