@@ -75,6 +75,7 @@ ScanRun run_one(const LandmarkBenchOptions& options, int index) {
 
 struct LandmarkFigures {
   std::vector<double> errors;
+  std::vector<double> unflagged_errors;  // what a planner uses without a person's confirmation
   int missed = 0, flagged = 0, invented = 0, absent_right = 0;
 };
 
@@ -84,6 +85,7 @@ std::map<std::string, LandmarkFigures> per_landmark(const std::vector<ScanRun>& 
     for (const auto& [label, o] : run.landmarks) {
       LandmarkFigures& f = figures[label];
       if (o.has_truth && o.detected) f.errors.push_back(o.error_mm);
+      if (o.has_truth && o.detected && !o.flagged) f.unflagged_errors.push_back(o.error_mm);
       f.missed += o.has_truth && !o.detected;
       f.invented += !o.has_truth && o.detected;
       f.absent_right += !o.has_truth && !o.detected;
@@ -149,6 +151,8 @@ Json landmark_benchmark_json(const std::vector<ScanRun>& runs) {
     landmarks[label] = {{"found", f.errors.size()},
                         {"mean_mm", mean(f.errors)},
                         {"p95_mm", f.errors.empty() ? 0 : percentile(f.errors, 95)},
+                        {"unflagged", f.unflagged_errors.size()},
+                        {"p95_unflagged_mm", f.unflagged_errors.empty() ? 0 : percentile(f.unflagged_errors, 95)},
                         {"within_2_mm", share_within(f.errors, 2)},
                         {"missed", f.missed},
                         {"flagged", f.flagged},
@@ -173,14 +177,19 @@ std::string landmark_benchmark_text(const std::vector<ScanRun>& runs) {
     if (!run.error.empty()) text += "    " + run.error + "\n";
     text += worst_and_missed(run);
   }
-  text += formatted("\n%-5s %5s %8s %8s %7s %6s %7s %8s %6s\n", "label", "found", "mean mm", "P95 mm", "<=2 mm",
-                    "missed", "flagged", "invented", "absent");
+  text += formatted("\n%-5s %5s %8s %8s %7s %6s %7s %8s %6s %14s\n", "label", "found", "mean mm", "P95 mm", "<=2 mm",
+                    "missed", "flagged", "invented", "absent", "unflagged P95");
   std::vector<double> all_errors;
   for (const auto& [label, f] : per_landmark(runs)) {
     all_errors.insert(all_errors.end(), f.errors.begin(), f.errors.end());
-    text += formatted("%-5s %5zu %8.2f %8.2f %6.0f%% %6d %7d %8d %6d\n", label.c_str(), f.errors.size(), mean(f.errors),
-                      f.errors.empty() ? 0.0 : percentile(f.errors, 95), 100 * share_within(f.errors, 2), f.missed,
-                      f.flagged, f.invented, f.absent_right);
+    const std::string unflagged =
+        f.unflagged_errors.empty()
+            ? "-"
+            : formatted("%.2f (%zu)", percentile(f.unflagged_errors, 95), f.unflagged_errors.size());
+    text +=
+        formatted("%-5s %5zu %8.2f %8.2f %6.0f%% %6d %7d %8d %6d %14s\n", label.c_str(), f.errors.size(),
+                  mean(f.errors), f.errors.empty() ? 0.0 : percentile(f.errors, 95), 100 * share_within(f.errors, 2),
+                  f.missed, f.flagged, f.invented, f.absent_right, unflagged.c_str());
   }
   const Json figures = landmark_benchmark_json(runs);
   text += formatted(

@@ -11,6 +11,7 @@
 #include "bench/formatted.h"
 #include "bench/import_benchmark.h"
 #include "bench/index_benchmark.h"
+#include "bench/landmark_benchmark.h"
 #include "bench/dental_benchmark.h"
 #include "bench/occlusion_benchmark.h"
 #include "bench/register_benchmark.h"
@@ -150,6 +151,41 @@ TEST(RealDataBenchmarks, SayWhyTheySkipWithoutTheirData) {
   EXPECT_EQ(register_benchmark_text(run_register_benchmark(registration)),
             "skipped: the cadaver head CT is not at /nonexistent/slices (set MAXILLO_SHARED_DATA or --data to the "
             "folder holding cthead-stanford)\n");
+}
+
+}  // namespace
+}  // namespace maxillo::bench
+
+namespace maxillo::bench {
+namespace {
+
+// Two scans' outcomes with known errors: the P95 counts every detection, flagged ones too; the
+// unflagged P95 only those a planner would use without a person's confirmation.
+TEST(LandmarkBenchmark, FlaggedDetectionsCountInTheP95AndAreLeftOutOfTheUnflaggedOne) {
+  std::vector<ScanRun> runs(2);
+  auto outcome = [](bool has_truth, bool detected, bool flagged, double error_mm) {
+    LandmarkOutcome o;
+    o.has_truth = has_truth, o.detected = detected, o.flagged = flagged, o.error_mm = error_mm;
+    return o;
+  };
+  runs[0].landmarks["OrL"] = outcome(true, true, false, 1.0);
+  runs[1].landmarks["OrL"] = outcome(true, true, true, 11.0);
+  runs[0].landmarks["N"] = outcome(true, false, false, 0);
+  runs[1].landmarks["N"] = outcome(false, true, false, 0);
+  const Json figures = landmark_benchmark_json(runs);
+  const Json& orl = figures["landmarks"]["OrL"];
+  EXPECT_EQ(orl["found"].get<int>(), 2);
+  EXPECT_EQ(orl["flagged"].get<int>(), 1);
+  EXPECT_NEAR(orl["p95_mm"].get<double>(), 10.5, 1e-9);  // linear between 1 and 11
+  EXPECT_EQ(orl["unflagged"].get<int>(), 1);
+  EXPECT_NEAR(orl["p95_unflagged_mm"].get<double>(), 1.0, 1e-9);
+  const Json& n = figures["landmarks"]["N"];
+  EXPECT_EQ(n["missed"].get<int>(), 1);
+  EXPECT_EQ(n["invented"].get<int>(), 1);
+  EXPECT_EQ(n["unflagged"].get<int>(), 0);
+  const std::string text = landmark_benchmark_text(runs);
+  EXPECT_NE(text.find("unflagged P95"), std::string::npos) << text;
+  EXPECT_NE(text.find("1.00 (1)"), std::string::npos) << text;
 }
 
 }  // namespace
