@@ -9,9 +9,10 @@
 //   ARCHIVE/store.lock     flock: importers share it, `verify --repair` takes it exclusively
 //
 // Invariant: every index row names an object file that exists. Objects are written (temp
-// file + rename) and made durable (syncfs) BEFORE the rows naming them are committed, so a
-// crash leaves at most orphan objects or temp files, which verify(Repair) removes.
-// Several processes may use one archive at once (WAL, busy timeout, BEGIN IMMEDIATE retry).
+// file + rename) and made durable (syncfs) BEFORE the rows naming them are
+// committed, so a crash leaves at most orphan objects or temp files, which verify(Repair) removes.
+// Several processes may use one archive at once (SQLite: WAL, busy timeout, BEGIN IMMEDIATE
+// retry, one writer at a time; PostgreSQL: row locks, writers side by side).
 // Implementation split: archive_open.cpp (open, schema), archive_import.cpp + import_batch.cpp,
 // archive_queries.cpp, archive_cases.cpp, archive_artefacts.cpp, archive_verify.cpp,
 // archive_export.cpp. The work queue the nightly workers share is a type of its

@@ -31,7 +31,8 @@ BatchWriter::BatchWriter(db::Connection& db, ObjectStore& objects, const IndexJo
       attach_series_(db, sql::kAttachSeriesToCase),
       insert_object_(db, sql::kInsertObject),
       insert_instance_(db, sql::kInsertInstance),
-      object_of_sop_(db, sql::kObjectOfSopInstance) {}
+      object_of_sop_(db, sql::kObjectOfSopInstance),
+      lock_case_(db, sql::kLockCase) {}
 
 std::string BatchWriter::source_of(const ScannedFile& file) const {
   return source_label_.empty() ? std::filesystem::absolute(file.path).string() : source_label_;
@@ -57,29 +58,20 @@ void BatchWriter::commit(ImportReport& report, const ImportOptions& options) {
   ImportReport outcome;
   std::vector<ImportProblem> problems;
   std::vector<std::pair<std::filesystem::path, ImportOutcome>> archived;
-  {
-    JournalledTransaction transaction(db_, journal_, "import");
-    transaction_ = &transaction;
-    struct Forget {
-      JournalledTransaction*& current;
-      ~Forget() { current = nullptr; }
-    } forget{transaction_};
-    for (const auto& file : batch_) {
-      std::string reason;
-      switch (const ImportOutcome result = insert(file, now, outcome, reason)) {
-        case ImportOutcome::Imported:
-          ++outcome.imported;
-          archived.emplace_back(file.path, result);
-          break;
-        case ImportOutcome::AlreadyArchived:
-          ++outcome.already_archived;
-          archived.emplace_back(file.path, result);
-          break;
-        default: problems.push_back({file.path, ImportOutcome::Conflict, ErrorCode::kConflict, reason}); break;
-      }
+  // Writers of a server index run side by side and may deadlock on rows both write (the same
+  // patient, instance or object in another order): the server then rolls one back, and the
+  // whole batch runs again from scratch.
+  db::retry_transaction([&] {
+    outcome = {};
+    problems.clear();
+    archived.clear();
+    try {
+      insert_batch(now, outcome, problems, archived);
+    } catch (const Error&) {
+      forget_known_rows();  // rows this transaction made are gone with it
+      throw;
     }
-    transaction.commit();
-  }
+  });
   // Counted only once committed: a failed commit throws and counts nothing.
   report.imported += outcome.imported;
   report.already_archived += outcome.already_archived;
@@ -96,21 +88,73 @@ void BatchWriter::commit(ImportReport& report, const ImportOptions& options) {
   batch_objects_.clear();
 }
 
-// Another process may have archived this SOP Instance UID since the scanner looked: decided
-// before any row is written, so a rejected file raises no identity flag and makes no patient.
+void BatchWriter::insert_batch(const std::string& now, ImportReport& outcome, std::vector<ImportProblem>& problems,
+                               std::vector<std::pair<std::filesystem::path, ImportOutcome>>& archived) {
+  JournalledTransaction transaction(db_, journal_, "import");
+  transaction_ = &transaction;
+  struct Forget {
+    JournalledTransaction*& current;
+    ~Forget() { current = nullptr; }
+  } forget{transaction_};
+  const auto archived_before = archived_objects_of_batch();
+  for (const auto& file : batch_) {
+    std::string reason;
+    const auto found = archived_before.find(file.header.sop_instance_uid);
+    const std::string no_object;
+    const std::string& archived_object = found == archived_before.end() ? no_object : found->second;
+    switch (const ImportOutcome result = insert(file, archived_object, now, outcome, reason)) {
+      case ImportOutcome::Imported:
+        ++outcome.imported;
+        archived.emplace_back(file.path, result);
+        break;
+      case ImportOutcome::AlreadyArchived:
+        ++outcome.already_archived;
+        archived.emplace_back(file.path, result);
+        break;
+      default: problems.push_back({file.path, ImportOutcome::Conflict, ErrorCode::kConflict, reason}); break;
+    }
+  }
+  transaction.commit();
+}
+
+void BatchWriter::forget_known_rows() {
+  patients_.clear();
+  studies_.clear();
+  series_.clear();
+  flagged_.clear();
+}
+
+// Another process may have archived these SOP Instance UIDs since the scanner looked: asked
+// for the whole batch at once, at the start of its transaction.
+std::map<std::string, std::string, std::less<>> BatchWriter::archived_objects_of_batch() {
+  std::vector<std::string> uids;
+  for (const auto& file : batch_) uids.push_back(file.header.sop_instance_uid);
+  std::map<std::string, std::string, std::less<>> objects;
+  db::for_each_row_with_keys(db_, sql::kObjectsOfSopInstancesIn, ")", std::move(uids),
+                             [&](const db::Statement& row) { objects.emplace(row.text(0), row.text(1)); });
+  return objects;
+}
+
+ImportOutcome BatchWriter::outcome_against(const ScannedFile& file, const std::string& archived_object,
+                                           std::string& reason) {
+  if (archived_object.empty()) return ImportOutcome::Imported;
+  if (archived_object == file.sha256) return ImportOutcome::AlreadyArchived;
+  reason = conflict_reason(file.header.sop_instance_uid, archived_object);
+  return ImportOutcome::Conflict;
+}
+
 ImportOutcome BatchWriter::archived_outcome(const ScannedFile& file, std::string& reason) {
   std::string archived;
   if (object_of_sop_.reset().bind(1, file.header.sop_instance_uid).step()) archived = object_of_sop_.text(0);
   object_of_sop_.reset();
-  if (archived.empty()) return ImportOutcome::Imported;
-  if (archived == file.sha256) return ImportOutcome::AlreadyArchived;
-  reason = conflict_reason(file.header.sop_instance_uid, archived);
-  return ImportOutcome::Conflict;
+  return outcome_against(file, archived, reason);
 }
 
-ImportOutcome BatchWriter::insert(const ScannedFile& file, const std::string& now, ImportReport& report,
-                                  std::string& reason) {
-  if (auto outcome = archived_outcome(file, reason); outcome != ImportOutcome::Imported) return outcome;
+// Decided before any row is written, so a rejected file raises no identity flag and makes no
+// patient (unless another writer of a server index wins the race for its instance row, below).
+ImportOutcome BatchWriter::insert(const ScannedFile& file, const std::string& archived_object, const std::string& now,
+                                  ImportReport& report, std::string& reason) {
+  if (auto outcome = outcome_against(file, archived_object, reason); outcome != ImportOutcome::Imported) return outcome;
   const InstanceHeader& h = file.header;
   const PatientState& patient = patient_of(h, now);
   flag_identity(patient, file, now, report);
@@ -123,9 +167,14 @@ ImportOutcome BatchWriter::insert(const ScannedFile& file, const std::string& no
   s.bind(4, h.instance_number);
   s.bind(5, h.image_position).bind(6, h.image_orientation).bind(7, h.transfer_syntax_uid).bind(8, file.sha256);
   s.bind(9, int64_t(file.size)).bind(10, source_of(file)).bind(11, now);
-  // archived_outcome() found no row for this SOP Instance UID, under the write lock.
-  if (s.step()) transaction_->inserted_row("instances", s);
+  const bool inserted = s.step();
+  if (inserted) transaction_->inserted_row("instances", s);
   s.reset();
+  // No row: a concurrent writer of a server index inserted this SOP Instance UID after
+  // archived_objects_of_batch() looked, and committed (the insert waited for it). Theirs is the row;
+  // ours is the same file again or a conflict. (The object row made above for a conflicting
+  // file's bytes stays, naming a stored file like any object.)
+  if (!inserted) return archived_outcome(file, reason);
   report.cases_with_new_images.insert(patient.default_case);
   return ImportOutcome::Imported;
 }
@@ -189,6 +238,9 @@ int64_t BatchWriter::series_of(const InstanceHeader& h, int64_t study, int64_t c
   s.bind(8, h.pixel_spacing_row).bind(9, h.pixel_spacing_column).bind(10, h.slice_thickness);
   if (auto inserted = db::inserted_id(s)) transaction_->inserted("series", *inserted);
   int64_t id = db::single_integer(series_by_uid_.reset().bind(1, h.series_uid));
+  // Which CT series is a case's first decides its role: concurrent writers attaching CT series
+  // to one case take turns on the case's row, so the second sees the first's 'preop'.
+  if (h.modality == "CT") lock_case_.reset().bind(1, case_id).run();
   if (attach_series_.reset().bind(1, case_id).bind(2, id).bind(3, h.modality).run() == 1)
     transaction_->written("case_series", "case_id = ?1 AND series = ?2", {case_id, id});
   return series_.emplace(h.series_uid, id).first->second;
