@@ -62,6 +62,17 @@ inline constexpr const char* kInsertInstance =
     "INSERT INTO instances(series, sop_instance_uid, sop_class_uid, instance_number, image_position, "
     "image_orientation, transfer_syntax, object, size, source_path, imported_at) "
     "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11) ON CONFLICT(sop_instance_uid) DO NOTHING RETURNING *";
+// The same for many rows in one round trip: head + db::value_rows(rows, columns) + tail, each
+// row's parameters (kObjectColumnCount, kInstanceColumnCount of them) in kInsertObject's and
+// kInsertInstance's order.
+inline constexpr const char* kInsertObjectsHead = "INSERT INTO objects(sha256, size) VALUES ";
+inline constexpr int kObjectColumnCount = 2;
+inline constexpr const char* kInsertObjectsTail = " ON CONFLICT DO NOTHING RETURNING *";
+inline constexpr const char* kInsertInstancesHead =
+    "INSERT INTO instances(series, sop_instance_uid, sop_class_uid, instance_number, image_position, "
+    "image_orientation, transfer_syntax, object, size, source_path, imported_at) VALUES ";
+inline constexpr int kInstanceColumnCount = 11;
+inline constexpr const char* kInsertInstancesTail = " ON CONFLICT(sop_instance_uid) DO NOTHING RETURNING *";
 
 // --- listing ---
 inline constexpr const char* kPatients =

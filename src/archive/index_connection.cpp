@@ -36,6 +36,17 @@ void retry_transaction(const std::function<void()>& body) {
   }
 }
 
+std::string value_rows(int rows, int columns) {
+  std::string sql;
+  for (int row = 0, parameter = 1; row < rows; ++row) {
+    sql += row > 0 ? ", (" : "(";
+    for (int column = 0; column < columns; ++column, ++parameter)
+      sql += (column > 0 ? ", ?" : "?") + std::to_string(parameter);
+    sql += ")";
+  }
+  return sql;
+}
+
 namespace {
 
 // for_each_row_with_ids and for_each_row_with_keys: the same IN lists of integers or texts.

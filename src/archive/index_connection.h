@@ -190,6 +190,10 @@ std::optional<int64_t> inserted_id(Statement& insert);
 // as Orthanc's PostgreSQL plugin and dcm4chee do. `body` must start from scratch each time.
 void retry_transaction(const std::function<void()>& body);
 
+// "(?1, ?2), (?3, ?4)" for rows = 2, columns = 2: the VALUES of a multi-row INSERT, one
+// round trip for many rows (both engines take such a list; keep rows x columns under 32766).
+std::string value_rows(int rows, int columns);
+
 // Runs `before + "?1, ?2, ..." + after`, an IN list of `ids`, and calls `row` on every result
 // row: many cases or series in a few round trips instead of one per id (on a server each costs
 // a network round trip). Ids are deduplicated and split into chunks of at most 4096 (a server
