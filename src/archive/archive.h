@@ -9,9 +9,10 @@
 //   ARCHIVE/store.lock     flock: importers share it, `verify --repair` takes it exclusively
 //
 // Invariant: every index row names an object file that exists. Objects are written (temp
-// file + rename) and made durable (syncfs) BEFORE the rows naming them are committed, so a
-// crash leaves at most orphan objects or temp files, which verify(Repair) removes.
-// Several processes may use one archive at once (WAL, busy timeout, BEGIN IMMEDIATE retry).
+// file + rename) and made durable (fdatasync or syncfs) BEFORE the rows naming them are
+// committed, so a crash leaves at most orphan objects or temp files, which verify(Repair) removes.
+// Several processes may use one archive at once (SQLite: WAL, busy timeout, BEGIN IMMEDIATE
+// retry, one writer at a time; PostgreSQL: row locks, writers side by side).
 // Implementation split: archive_open.cpp (open, schema), archive_import.cpp + import_batch.cpp,
 // archive_queries.cpp, archive_cases.cpp, archive_artefacts.cpp, archive_verify.cpp,
 // archive_export.cpp. The work queue the nightly workers share is a type of its
@@ -66,7 +67,7 @@ struct ImportOptions {
   // Called for each file that ends in the archive, once durable: Imported, or AlreadyArchived
   // (the same bytes were archived before). The others go to on_problem.
   std::function<void(const std::filesystem::path&, ImportOutcome)> on_archived{};
-  size_t batch_files = 500;  // files per durable batch (one syncfs + one transaction)
+  size_t batch_files = 500;  // files per durable batch (one sync + one transaction)
   // Recorded as each new instance's source instead of its file's path, for files that are only
   // a spool: network_source(AE, ADDRESS) for what `maxillo serve` received (instance_source.h).
   std::string source_label{};

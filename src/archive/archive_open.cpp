@@ -83,9 +83,9 @@ int upgrade_schema(db::Connection& db, const IndexJournal& journal) {
                 "schema version " + std::to_string(current) + ", this program knows up to " + std::to_string(newest));
   for (const auto& [version, path] : steps) {
     if (version <= current) continue;
-    // An immediate transaction holds the index's write lock (an advisory lock on PostgreSQL):
-    // of two nodes starting at once, the second finds the work done.
-    JournalledTransaction transaction(db, journal, "snapshot");
+    // An exclusive transaction holds the whole index (an advisory lock on PostgreSQL): of two
+    // nodes starting at once, the second finds the work done.
+    JournalledTransaction transaction(db, journal, "snapshot", db::TransactionKind::Exclusive);
     const int found = db.schema_version();
     if (found >= version) continue;
     db.execute(migration_for(db, path));

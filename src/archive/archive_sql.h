@@ -9,6 +9,10 @@ namespace maxillo::sql {
 // --- import ---
 inline constexpr const char* kInstanceWithObject = "SELECT 1 FROM instances WHERE object = ?1 LIMIT 1";
 inline constexpr const char* kObjectOfSopInstance = "SELECT object FROM instances WHERE sop_instance_uid = ?1";
+// kObjectsOfSopInstancesIn + "?1, ?2..." + ")": a batch's instances already archived, in one
+// round trip instead of one per file.
+inline constexpr const char* kObjectsOfSopInstancesIn =
+    "SELECT sop_instance_uid, object FROM instances WHERE sop_instance_uid IN (";
 
 // ?1 patient_id ?2 name ?3 birth_date ?4 sex ?5 created_at
 inline constexpr const char* kInsertPatient =
@@ -40,6 +44,9 @@ inline constexpr const char* kInsertSeries =
     "pixel_spacing_column, slice_thickness) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10) "
     "ON CONFLICT(series_uid) DO NOTHING RETURNING id";
 inline constexpr const char* kSeriesIdByUid = "SELECT id FROM series WHERE series_uid = ?1";
+// ?1 case: an update that changes nothing, for the row lock it takes on a server (held until
+// COMMIT), so that writers attaching series to one case take turns (SQLite: one writer anyway).
+inline constexpr const char* kLockCase = "UPDATE cases SET label = label WHERE id = ?1";
 // ?1 case ?2 series ?3 modality: the first CT series of a case is its pre-operative scan.
 inline constexpr const char* kAttachSeriesToCase =
     "INSERT INTO case_series(case_id, series, role) VALUES (?1, ?2, "
@@ -55,6 +62,17 @@ inline constexpr const char* kInsertInstance =
     "INSERT INTO instances(series, sop_instance_uid, sop_class_uid, instance_number, image_position, "
     "image_orientation, transfer_syntax, object, size, source_path, imported_at) "
     "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11) ON CONFLICT(sop_instance_uid) DO NOTHING RETURNING *";
+// The same for many rows in one round trip: head + db::value_rows(rows, columns) + tail, each
+// row's parameters (kObjectColumnCount, kInstanceColumnCount of them) in kInsertObject's and
+// kInsertInstance's order.
+inline constexpr const char* kInsertObjectsHead = "INSERT INTO objects(sha256, size) VALUES ";
+inline constexpr int kObjectColumnCount = 2;
+inline constexpr const char* kInsertObjectsTail = " ON CONFLICT DO NOTHING RETURNING *";
+inline constexpr const char* kInsertInstancesHead =
+    "INSERT INTO instances(series, sop_instance_uid, sop_class_uid, instance_number, image_position, "
+    "image_orientation, transfer_syntax, object, size, source_path, imported_at) VALUES ";
+inline constexpr int kInstanceColumnCount = 11;
+inline constexpr const char* kInsertInstancesTail = " ON CONFLICT(sop_instance_uid) DO NOTHING RETURNING *";
 
 // --- listing ---
 inline constexpr const char* kPatients =

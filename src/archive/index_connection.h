@@ -28,10 +28,16 @@
 namespace maxillo::db {
 
 enum class ColumnType { Integer, Real, Text, Null };
-// Immediate: the transaction takes the index's write lock at once (SQLite BEGIN IMMEDIATE,
-// a transaction-scoped advisory lock on PostgreSQL), so writers commit one after another in
-// the order of the journal counter (index_journal.h). Deferred: a reader's consistent view.
-enum class TransactionKind { Immediate, Deferred };
+// Immediate: a writer. SQLite takes its single write lock at once (BEGIN IMMEDIATE), so
+// writers run one after another. PostgreSQL locks only the rows written (unique keys with ON
+// CONFLICT make the same row arriving twice one row), so writers run side by side; they meet
+// only on the journal counter's row, taken last, just before COMMIT (journalled_transaction.h),
+// which orders the commits as the journal numbers them.
+// Exclusive: the whole index for this transaction alone on every engine (SQLite BEGIN
+// IMMEDIATE, a transaction-scoped advisory lock on PostgreSQL): schema migrations, so that of
+// two nodes starting at once one migrates and the other finds the work done.
+// Deferred: a reader's consistent view.
+enum class TransactionKind { Immediate, Deferred, Exclusive };
 
 // One prepared statement of an engine; used through db::Statement.
 class PreparedStatement {
@@ -184,6 +190,10 @@ std::optional<int64_t> inserted_id(Statement& insert);
 // as Orthanc's PostgreSQL plugin and dcm4chee do. `body` must start from scratch each time.
 void retry_transaction(const std::function<void()>& body);
 
+// "(?1, ?2), (?3, ?4)" for rows = 2, columns = 2: the VALUES of a multi-row INSERT, one
+// round trip for many rows (both engines take such a list; keep rows x columns under 32766).
+std::string value_rows(int rows, int columns);
+
 // Runs `before + "?1, ?2, ..." + after`, an IN list of `ids`, and calls `row` on every result
 // row: many cases or series in a few round trips instead of one per id (on a server each costs
 // a network round trip). Ids are deduplicated and split into chunks of at most 4096 (a server
@@ -193,5 +203,8 @@ void retry_transaction(const std::function<void()>& body);
 // within a chunk; group them by id.
 void for_each_row_with_ids(Connection& connection, std::string_view before, std::string_view after,
                            std::vector<int64_t> ids, const std::function<void(const Statement&)>& row);
+// The same with text keys (UIDs).
+void for_each_row_with_keys(Connection& connection, std::string_view before, std::string_view after,
+                            std::vector<std::string> keys, const std::function<void(const Statement&)>& row);
 
 }  // namespace maxillo::db

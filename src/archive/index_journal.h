@@ -7,13 +7,14 @@
 //   OBJECTS/journal/00000000/000000000001.json   entry 1 (a folder per 10,000 entries)
 //
 // An entry is written in two steps around the index transaction it describes:
-// - after BEGIN IMMEDIATE (the write lock) and before COMMIT, durably as a *pending* entry
+// - after the counter below is taken and before COMMIT, durably as a *pending* entry
 //   (NNN.pending: temp file, fsync, rename, fsync of the folder);
 // - after COMMIT, marked committed by renaming it to NNN.json.
 // So:
 // - every committed transaction has its entry on stable storage;
-// - entries are numbered in commit order by a counter kept in the index (index_state), which
-//   the write lock serialises;
+// - entries are numbered in commit order by a counter kept in the index (index_state), taken
+//   last in each transaction: the counter row stays locked until its writer's COMMIT (SQLite:
+//   the file's write lock), so the next writer's number waits for it;
 // - a committed entry (.json) is never written over: entries 1..N (N = the index's counter) are
 //   the committed history, and a committed entry N+1 proves the index is behind its journal
 //   (restored from an older copy, or lost its last commit);
@@ -64,7 +65,7 @@ class IndexJournal {
   bool has(int64_t sequence) const;
   bool has_pending(int64_t sequence) const;
 
-  // Under the index's write lock, before COMMIT; durable before it returns. Never replaces an
+  // Holding the index's counter (journalled_transaction.h), before COMMIT; durable before it returns. Never replaces an
   // entry: a committed entry of this number means the index is behind its journal (throws
   // Error(kIndexDamaged)); a pending one was left by a transaction that died before its commit
   // and is moved to journal/aborted/ first.

@@ -38,8 +38,9 @@ int64_t journal_sequence(db::Connection& db) {
   return query.step() ? query.integer(0) : 0;
 }
 
-JournalledTransaction::JournalledTransaction(db::Connection& db, const IndexJournal& journal, std::string operation)
-    : db_(db), journal_(journal), transaction_(db) {
+JournalledTransaction::JournalledTransaction(db::Connection& db, const IndexJournal& journal, std::string operation,
+                                             db::TransactionKind kind)
+    : db_(db), journal_(journal), transaction_(db, kind) {
   entry_.operation = std::move(operation);
 }
 
@@ -65,7 +66,9 @@ void JournalledTransaction::commit() {
     transaction_.commit();
     return;
   }
-  // Under the write lock taken by BEGIN IMMEDIATE: the counter gives commit order.
+  // The counter row's lock is held from here to COMMIT (SQLite: the file's write lock, held
+  // since BEGIN IMMEDIATE): the writer that takes N+1 waits until N committed or rolled back,
+  // so the numbers are the commit order without gaps.
   db::Statement next(db_,
                      "UPDATE index_state SET journal_sequence = journal_sequence + 1 WHERE id = 1 "
                      "RETURNING journal_sequence");

@@ -27,7 +27,9 @@ Json row_as_json(db::Connection& db, std::string_view table, std::string_view wh
 
 class JournalledTransaction {
  public:
-  JournalledTransaction(db::Connection& db, const IndexJournal& journal, std::string operation);
+  // kind: Immediate for every write; Exclusive for a schema migration (db::TransactionKind).
+  JournalledTransaction(db::Connection& db, const IndexJournal& journal, std::string operation,
+                        db::TransactionKind kind = db::TransactionKind::Immediate);
 
   // Records the row just inserted into a table whose key is `id`.
   void inserted(std::string_view table, int64_t id);
@@ -41,6 +43,11 @@ class JournalledTransaction {
   void all_rows_of(std::string_view table);
   bool empty() const { return entry_.rows.empty(); }
   // Numbers the entry, writes it durably, commits. Without rows: commits only.
+  // The number comes from the index's counter row, updated last: that row's lock is the only
+  // thing concurrent writers of a server index wait for, and only from here to COMMIT, so the
+  // counter orders the commits as the journal numbers them (a server SEQUENCE would not: it
+  // hands out numbers that commit in another order, or never, leaving gaps that read as a lost
+  // commit, index_journal.h).
   void commit();
 
  private:

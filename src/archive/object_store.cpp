@@ -94,6 +94,8 @@ ObjectStore::ObjectState ObjectStore::state_of(std::string_view sha256) const {
 ObjectStore::PutOutcome ObjectStore::put(std::string_view sha256, std::span<const std::byte> bytes) {
   auto path = path_of(sha256);
   PutOutcome outcome = PutOutcome::Written;
+  // Also an intact file: another writer may have put it and not yet synced it.
+  unsynced_.push_back(path);
   switch (state_of(sha256)) {
     case ObjectState::Intact: return PutOutcome::AlreadyIntact;
     case ObjectState::Damaged:
@@ -126,11 +128,37 @@ void ObjectStore::write_new(const std::filesystem::path& path, std::span<const s
   }
 }
 
-void ObjectStore::make_durable() const {
+void ObjectStore::make_durable() {
+  const bool few = !moved_files_ && unsynced_.size() <= kSyncedOneByOne;
+  few ? sync_each_unsynced() : sync_file_system();
+  unsynced_.clear();
+  moved_files_ = false;
+}
+
+void ObjectStore::sync_file_system() const {
   // One syncfs covers every file and folder entry written since the last one: much cheaper
   // than an fsync per object when a batch holds hundreds of files.
   Descriptor folder{::open(folder_.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC)};
   if (folder.fd < 0 || ::syncfs(folder.fd) != 0) fail(folder_, errno);
+}
+
+void ObjectStore::sync_each_unsynced() const {
+  // A received instance is one file: its data, its shard's entry and the shard's own entry in
+  // the store are all it needs, and syncfs would also wait for every other writer's dirty
+  // files on the file system (a concurrent import's, anyone's).
+  std::set<std::filesystem::path> folders;
+  for (const auto& path : unsynced_) {
+    sync_path(path, false);
+    folders.insert(path.parent_path());
+  }
+  for (const auto& folder : folders) sync_path(folder, true);
+  if (!unsynced_.empty()) sync_path(folder_, true);  // a shard made by us or another writer
+}
+
+void ObjectStore::sync_path(const std::filesystem::path& path, bool folder) {
+  Descriptor file{::open(path.c_str(), O_RDONLY | O_CLOEXEC | (folder ? O_DIRECTORY : 0))};
+  if (file.fd < 0) fail(path, errno);
+  if ((folder ? ::fsync(file.fd) : ::fdatasync(file.fd)) != 0) fail(path, errno);
 }
 
 void ObjectStore::for_each_file(
@@ -159,6 +187,7 @@ std::filesystem::path ObjectStore::set_aside(const std::filesystem::path& file, 
   auto target = *quarantine_now_ / name;
   for (int n = 1; std::filesystem::exists(target); ++n) target = *quarantine_now_ / (name + "." + std::to_string(n));
   if (::rename(file.c_str(), target.c_str()) != 0) fail(file, errno);
+  moved_files_ = true;
   return target;
 }
 
@@ -178,6 +207,7 @@ bool ObjectStore::restore_from_quarantine(std::string_view sha256) {
     auto path = path_of(sha256);
     ensure_shard(sha256.substr(0, 2));
     if (::rename(file.c_str(), path.c_str()) != 0) fail(path, errno);
+    moved_files_ = true;
     return true;
   }
   return false;

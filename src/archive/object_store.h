@@ -1,7 +1,7 @@
 #pragma once
 // Content-addressed files: objects/<sha[0:2]>/<sha[2:64]>. A file appears under its final
 // name only complete (temp file + rename). put() does not fsync each file: callers batch
-// many puts and call make_durable() once (syncfs) before committing the rows naming them.
+// many puts and call make_durable() once before committing the rows naming them.
 //
 // Two folders of the store are not objects:
 //   objects/journal/      the index journal (index_journal.h)
@@ -34,8 +34,10 @@ class ObjectStore {
   // name: a damaged one is set aside in quarantine and replaced (Replaced).
   // Throws Error(WriteFailed) naming the object path.
   PutOutcome put(std::string_view sha256, std::span<const std::byte> bytes);
-  // Flushes every object written so far (and their folder entries) to stable storage.
-  void make_durable() const;
+  // Flushes every object put since the last call (and their folder entries) to stable
+  // storage: a few (a received instance) with fdatasync of each file and fsync of its folders,
+  // many (an import batch) or files moved in or out of quarantine with one syncfs.
+  void make_durable();
 
   enum class ObjectState { Absent, Intact, Damaged };
   // Hashes the file (Intact only when its bytes hash to its name).
@@ -64,10 +66,19 @@ class ObjectStore {
  private:
   void ensure_shard(std::string_view shard);
   void write_new(const std::filesystem::path& path, std::span<const std::byte> bytes);
+  void sync_file_system() const;
+  void sync_each_unsynced() const;
+  static void sync_path(const std::filesystem::path& path, bool folder);
+
+  // Up to this many files are synced one by one; beyond, one syncfs is cheaper than a journal
+  // commit of the file system per file.
+  static constexpr size_t kSyncedOneByOne = 32;
 
   std::filesystem::path folder_;
   std::set<std::string, std::less<>> shards_made_;
   std::optional<std::filesystem::path> quarantine_now_;  // this process's quarantine subfolder
+  std::vector<std::filesystem::path> unsynced_;          // put since the last make_durable()
+  bool moved_files_ = false;                             // to or from quarantine since then
 };
 
 // True for 64 lower-case hex digits.

@@ -209,9 +209,11 @@ std::unique_ptr<db::PreparedStatement> Connection::prepare(std::string_view sql)
 
 void Connection::begin(db::TransactionKind kind) {
   execute("BEGIN ISOLATION LEVEL READ COMMITTED");
-  if (kind == db::TransactionKind::Immediate) {
+  // Writers (Immediate) lock the rows they write and no more; only a migration takes the
+  // whole index (db::TransactionKind).
+  if (kind == db::TransactionKind::Exclusive) {
     try {
-      execute("SELECT pg_advisory_xact_lock(" + std::to_string(kWriterLockKey) + ")");
+      execute("SELECT pg_advisory_xact_lock(" + std::to_string(kMigrationLockKey) + ")");
     } catch (...) {
       rollback();
       throw;

@@ -3,9 +3,10 @@
 // archive module. One connection per Archive (and one per import's scanning thread).
 // - Statements are prepared once per connection and SQL text (PQprepare), executed with text
 //   parameters; ?N in the shared SQL becomes $N.
-// - Transactions run at READ COMMITTED. An immediate (writing) transaction first takes a
-//   transaction-scoped advisory lock, so writers from every node commit one after another in
-//   journal order, as SQLite's BEGIN IMMEDIATE makes them do on one machine.
+// - Transactions run at READ COMMITTED. A writing (immediate) transaction locks only the rows
+//   it writes, so writers from every node run side by side; they commit in journal order
+//   because each takes the journal counter's row last (journalled_transaction.h). Only an
+//   exclusive transaction (a schema migration) first takes a transaction-scoped advisory lock.
 // - SQLSTATE decides the error: serialization failure, deadlock, unique violation and lock
 //   timeouts are kArchiveBusy (retry_transaction retries the whole transaction), a lost
 //   connection is kArchiveUnreachable, data corruption kIndexDamaged, the rest kDatabase.
@@ -72,7 +73,7 @@ class Connection final : public db::Connection {
 
 // Advisory lock keys of an archive database (any 64-bit numbers no other user of the
 // database takes; these spell "maxillo" and a purpose).
-inline constexpr int64_t kWriterLockKey = 0x6d6178696c6c6f01;  // immediate transactions
-inline constexpr int64_t kStoreLockKey = 0x6d6178696c6c6f02;   // importers shared, repair exclusive
+inline constexpr int64_t kMigrationLockKey = 0x6d6178696c6c6f01;  // exclusive transactions
+inline constexpr int64_t kStoreLockKey = 0x6d6178696c6c6f02;      // importers shared, repair exclusive
 
 }  // namespace maxillo::postgres

@@ -207,7 +207,8 @@ std::unique_ptr<db::PreparedStatement> Database::prepare(std::string_view sql) {
 void Database::begin(db::TransactionKind kind) {
   // The busy handler already waits kBusyTimeoutMs; BEGIN IMMEDIATE can still report BUSY at
   // once in WAL mode when a snapshot must be upgraded, so retry a few times with a pause.
-  const char* sql = kind == db::TransactionKind::Immediate ? "BEGIN IMMEDIATE" : "BEGIN DEFERRED";
+  // One writer at a time: Immediate and Exclusive alike take the file's write lock at once.
+  const char* sql = kind == db::TransactionKind::Deferred ? "BEGIN DEFERRED" : "BEGIN IMMEDIATE";
   for (int attempt = 0;; ++attempt) {
     int status = sqlite3_exec(db_, sql, nullptr, nullptr, nullptr);
     if (status == SQLITE_OK) return;

@@ -1,7 +1,7 @@
 #pragma once
 // Group commit for the storage server: the files that concurrent associations have received are
-// archived together, one import (one syncfs, one transaction) for every file waiting when the
-// previous import ended, instead of one import each. Each caller still waits for its own file's
+// archived together, one import (one sync of the group's files, one transaction) for every
+// file waiting when the previous import ended, instead of one import each. Each caller still waits for its own file's
 // outcome, so nothing is acknowledged before it is durable; a lone association pays what it paid
 // before (its groups hold one file), several share the cost of the sync and the commit.
 #include <condition_variable>

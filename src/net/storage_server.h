@@ -4,7 +4,7 @@
 // SOP Instance UID, atomic, identity flags), as `maxillo import` would archive the same file.
 //
 // A C-STORE is answered with success only after the object and its index row are durable (the
-// import's syncfs and commit); anything else is answered with a failure status and a reason in
+// import's sync and commit); anything else is answered with a failure status and a reason in
 // the Error Comment, never a success. Several associations are served at once, one thread each,
 // up to max_associations; the files they receive meanwhile are archived together, one sync and
 // one commit for all (net/group_commit.h). A peer silent for timeout_seconds is dropped without

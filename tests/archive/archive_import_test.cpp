@@ -1,7 +1,7 @@
-// Importing: idempotence, conflicts, identity flags, every kind of bad input, concurrency.
+// Importing: idempotence, conflicts, identity flags, every kind of bad input (concurrent
+// importers: concurrent_writers_test.cpp).
 #include <gtest/gtest.h>
 
-#include <thread>
 #include <vector>
 
 #include "archive/archive.h"
@@ -226,48 +226,6 @@ TEST(ArchiveImport, TruncationAnywhereInThePixelsOrHeaderIsDetected) {
     ASSERT_EQ(report.failed, 1u) << fraction;
     EXPECT_EQ(report.problems[0].code, ErrorCode::kTruncated) << fraction << " " << report.problems[0].reason;
   }
-}
-
-TEST(ArchiveImport, ConcurrentImportersOfOverlappingSetsMakeNoErrorsAndNoDuplicates) {
-  TemporaryFolder folder;
-  testing::write_series(folder / "a", 40, "P1");
-  testing::write_series(folder / "b", 40, "P2");
-  testing::write_series(folder / "c", 40, "P3");
-  const auto address = testing::archive_at(folder / "archive");
-  { Archive::open(address, OpenMode::CreateIfMissing); }
-  // Four importers at once (each with its own connection, as separate processes or nodes
-  // would be), every series imported by three of them, in batches of different sizes.
-  const std::vector<std::vector<std::filesystem::path>> inputs = {{folder / "a", folder / "b"},
-                                                                  {folder / "b", folder / "c"},
-                                                                  {folder / "c", folder / "a"},
-                                                                  {folder / "a", folder / "b", folder / "c"}};
-  std::vector<ImportReport> reports(inputs.size());
-  std::vector<std::thread> importers;
-  for (size_t n = 0; n < inputs.size(); ++n)
-    importers.emplace_back([&, n] {
-      Archive archive = Archive::open(address, OpenMode::CreateIfMissing);
-      ImportOptions options = quiet();
-      options.batch_files = 5 + 2 * n;
-      reports[n] = archive.import_paths(inputs[n], options);
-    });
-  for (auto& importer : importers) importer.join();
-  size_t imported = 0, already = 0;
-  for (const auto& report : reports) {
-    EXPECT_TRUE(report.all_ok());
-    EXPECT_EQ(report.failed + report.conflicts, 0u);
-    imported += report.imported;
-    already += report.already_archived;
-  }
-  EXPECT_EQ(imported, 120u);  // each instance once
-  EXPECT_EQ(already, 240u);   // and recognised by the other two importers of its series
-  Archive archive = Archive::open(address);
-  EXPECT_EQ(archive.patients().size(), 3u);
-  EXPECT_EQ(archive.cases().size(), 3u);
-  EXPECT_EQ(archive.series().size(), 3u);
-  int64_t instances = 0;
-  for (const auto& s : archive.series()) instances += s.instance_count;
-  EXPECT_EQ(instances, 120);
-  EXPECT_TRUE(archive.verify(RepairMode::ReportOnly, ProgressDisplay::Never).consistent());
 }
 
 }  // namespace

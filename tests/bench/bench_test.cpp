@@ -73,6 +73,24 @@ TEST(ImportBenchmark, FirstImportAndReimportInFourLines) {
   EXPECT_EQ(lines[3].rfind("ratio re-import / first: ", 0), 0u) << lines[3];
 }
 
+// Issue 31: several numbers of importers, on disjoint and on overlapping inputs, as one table;
+// overlapping inputs archive each instance once (the run throws when the counts are not so).
+TEST(ImportBenchmark, WorkersAndInputsMakeATableWithTheClientsCpuTime) {
+  TemporaryFolder folder;
+  ImportBenchOptions options;
+  options.count = 12, options.runs = 1, options.workdir = folder / "work";
+  const std::vector<Json> runs = run_import_benchmarks(options, {1, 2}, {false, true});
+  ASSERT_EQ(runs.size(), 4u);
+  EXPECT_EQ(runs[3]["workers"], 2);
+  EXPECT_EQ(runs[3]["inputs"], "overlapping");
+  EXPECT_GT(runs[3]["client_cpu_seconds"].get<double>(), 0);
+  EXPECT_TRUE(runs[3]["server_cpu_seconds"].is_null());  // SQLite: no server
+  const auto lines = lines_of(import_benchmark_table(runs));
+  ASSERT_EQ(lines.size(), 6u);
+  EXPECT_EQ(lines[0], "12 files of 256x256, index on SQLite, median of 1 run(s)");
+  EXPECT_EQ(lines[5].rfind("      2  overlapping  ", 0), 0u) << lines[5];
+}
+
 // Issue 29, fault 14: a login the server refuses left the work folder behind.
 TEST(ImportBenchmark, AFailedRunLeavesNoWorkFolderBehind) {
   TemporaryFolder folder;

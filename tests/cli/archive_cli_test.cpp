@@ -349,5 +349,33 @@ TEST(ArchiveCli, TwoConcurrentImportersOfOverlappingSets) {
   EXPECT_EQ(testing::run_maxillo({"--archive", archive, "verify"}, folder.path()).exit_code, 0);
 }
 
+// Issue 31: on a server index the two write side by side; one killed in the middle of a batch
+// (its transaction holding rows the other waits for, or the journal counter) must neither stop
+// the other nor leave the archive anything but consistent, and running it again completes it.
+TEST(ArchiveCli, TwoConcurrentImportersOneKilledLeaveAConsistentArchive) {
+  TemporaryFolder folder;
+  for (const char* name : {"a", "b", "c"}) testing::write_series(folder / "in" / name, 150, std::string("K") + name);
+  auto archive = testing::archive_at(folder / "archive").string();
+  const std::vector<std::string> killed_inputs = {(folder / "in" / "a").string(), (folder / "in" / "b").string()};
+  std::vector<std::string> killed_command = {"--archive", archive, "import", "--batch", "20"};
+  killed_command.insert(killed_command.end(), killed_inputs.begin(), killed_inputs.end());
+  pid_t killed = testing::start_maxillo(killed_command, folder / "killed.out", folder / "killed.err");
+  pid_t survivor = testing::start_maxillo(
+      {"--archive", archive, "import", "--batch", "25", (folder / "in" / "b").string(), (folder / "in" / "c").string()},
+      folder / "survivor.out", folder / "survivor.err");
+  std::this_thread::sleep_for(std::chrono::milliseconds(400));
+  ::kill(killed, SIGKILL);
+  testing::wait_exit_code(killed);
+  EXPECT_EQ(testing::wait_exit_code(survivor), 0) << testing::slurp(folder / "survivor.err");
+  auto verify = testing::run_maxillo({"--archive", archive, "--json", "verify"}, folder.path());
+  EXPECT_TRUE(Json::parse(verify.out).at("data_intact").get<bool>()) << verify.out;  // at most orphans
+  std::vector<std::string> again_command = {"--archive", archive, "import"};
+  again_command.insert(again_command.end(), killed_inputs.begin(), killed_inputs.end());
+  auto again = testing::run_maxillo(again_command, folder.path());
+  EXPECT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_EQ(archived_instances(archive, folder.path()), 450);
+  EXPECT_EQ(testing::run_maxillo({"--archive", archive, "verify"}, folder.path()).exit_code, 0);
+}
+
 }  // namespace
 }  // namespace maxillo
