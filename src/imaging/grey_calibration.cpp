@@ -152,13 +152,14 @@ GreyCalibration estimate_grey_calibration(const Volume& volume) {
   const int64_t total = int64_t(volume.hu.size());
   // Padding below air, or at air's own value around a cylinder; a spike that stands near the
   // grid's axis too is the air of a scan without noise.
-  calibration.padding = lowest_value_spike(full, total);
-  if (!calibration.padding)
+  const std::optional<int> below_air = lowest_value_spike(full, total);
+  calibration.padding = below_air;
+  if (!below_air)
     if (const auto most = most_frequent_value_spike(full, total); most && value_surrounds_a_cylinder(volume, *most))
       calibration.padding = most;
   if (calibration.padding && spike_near_the_axis(volume, *calibration.padding)) calibration.padding.reset();
-  // Padding at air's own value stays in the histogram: it moves no mode.
-  const Histogram h = histogram_of(full, lowest_value_spike(full, total) ? calibration.padding : std::nullopt);
+  // Padding below air is left out of the histogram; at air's own value it stays (it moves no mode).
+  const Histogram h = histogram_of(full, below_air ? calibration.padding : std::nullopt);
   // Air and soft tissue lie about 1000 HU apart, a large share of any head scan's range: peaks
   // closer than a tenth of the range are one tissue's noise or fat beside muscle.
   const auto peaks = peaks_of(h, kBins / 10);
