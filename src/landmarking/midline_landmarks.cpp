@@ -401,7 +401,7 @@ std::optional<ProfilePoint> upper_incisor_tip(const Profile& profile) {
 // below it, within kCrownBandMm of the template's height (lower down the rays cross bone and gum,
 // whose steps are no tip), from a point that lies behind the found upper edge by no more than the
 // largest overjet and a crown (kLargestOverjetMm, scaled). -1 if none.
-constexpr double kOverjetJumpMm = 2.0, kCrownBandMm = 6.0, kLargestOverjetMm = 16.0;
+constexpr double kOverjetJumpMm = 0.8, kCrownBandMm = 6.0, kLargestOverjetMm = 16.0;
 int overjet_jump(const Profile& lingual, const Eigen::Vector3d& upper_edge, double template_z, double scale) {
   for (size_t i = 1; i < lingual.size(); ++i) {
     const ProfilePoint& below = lingual[i - 1];
