@@ -107,14 +107,14 @@ double share_within(const std::vector<double>& values, double limit) {
 }
 
 // "    over 2 mm: B 27.1, Pog 21.6" / "    missed: U1" / "    flagged: L1 (second start)" lines
-// (each left out when empty; articulare, always flagged, is not listed among the flagged).
+// (each left out when empty).
 std::string worst_and_missed(const ScanRun& run) {
   std::string over, missed, flagged;
   for (const auto& [label, o] : run.landmarks) {
     if (o.has_truth && o.detected && o.error_mm > 2) over += formatted(" %s %.1f", label.c_str(), o.error_mm);
     if (o.has_truth && !o.detected) missed += " " + label;
     if (!o.has_truth && o.detected) missed += " (" + label + " invented)";
-    if (o.flagged && !label.starts_with("Ar")) flagged += " " + label + " (" + o.flagged_for + ")";
+    if (o.flagged) flagged += " " + label + " (" + o.flagged_for + ")";
   }
   std::string text;
   if (!over.empty()) text += "    over 2 mm:" + over + "\n";

@@ -69,7 +69,7 @@ void print_table(const landmarking::LandmarkDetection& d, double seconds) {
   std::printf("%-5s %9s %9s %9s  %-5s %-8s %s\n", "label", "x", "y", "z", "conf", "status", "checks / note");
   for (const auto& l : d.landmarks) {
     std::string remark = landmarking::failed_checks(l);
-    if (remark.empty()) remark = l.note;
+    if (!l.note.empty() && remark.find(l.note) == std::string::npos) remark += (remark.empty() ? "" : "; ") + l.note;
     if (l.position)
       std::printf("%-5s %9.2f %9.2f %9.2f  %4.2f  %-8s %s\n", l.label.c_str(), l.position->x(), l.position->y(),
                   l.position->z(), l.confidence, landmarking::status_of(l).c_str(), remark.c_str());

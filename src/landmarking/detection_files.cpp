@@ -26,8 +26,9 @@ std::string csv_field(const std::string& text) {
 std::string description(const DetectedLandmark& l) {
   if (!l.position) return "absent: " + l.note;
   std::string text = "automatic, confidence " + number(l.confidence, "%.2f");
-  if (const std::string failed = failed_checks(l); !failed.empty()) text += "; FLAGGED: " + failed;
-  if (!l.note.empty()) text += "; " + l.note;
+  const std::string failed = failed_checks(l);
+  if (!failed.empty()) text += "; FLAGGED: " + failed;
+  if (!l.note.empty() && failed.find(l.note) == std::string::npos) text += "; " + l.note;
   return text;
 }
 
@@ -42,7 +43,8 @@ std::string failed_checks(const DetectedLandmark& l) {
   std::string text;
   for (const auto& c : l.checks)
     if (!c.passed) text += (text.empty() ? "" : "; ") + c.name + ": " + c.detail;
-  if (l.position && l.confidence < 0.5 && text.empty()) text = "weak evidence";
+  if (l.position && l.confidence < 0.5 && text.empty())
+    text = l.note.empty() ? "weak evidence" : "weak evidence: " + l.note;
   return text;
 }
 

@@ -17,7 +17,8 @@ Json detection_json(const LandmarkDetection& detection);
 
 // "ok", "flagged" or "absent".
 std::string status_of(const DetectedLandmark& landmark);
-// The failed checks as one line ("mirror: 6.2 mm from the mirror image; ..."), or "".
+// The failed checks as one line ("mirror: 6.2 mm from the mirror image; ..."); for a point found
+// with too little evidence and no failed check, "weak evidence" and the finding's note; or "".
 std::string failed_checks(const DetectedLandmark& landmark);
 
 // By the extension: .csv or .mrk.json/.json; Error(kBadValue, path) for another. Crash-safe.

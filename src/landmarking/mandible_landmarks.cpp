@@ -3,6 +3,7 @@
 #include <cmath>
 #include <vector>
 
+#include "landmarking/articulare.h"
 #include "landmarking/landmark_template.h"
 #include "landmarking/profile.h"
 
@@ -197,7 +198,7 @@ void find_ramus_landmarks(const HeadVolume& v, double scale, int side, Findings&
       me_it != found.end() && me_it->second.position ? *me_it->second.position : expected_position("Me", scale);
   const double x_mid = std::abs(go.x());
   const Eigen::Vector3d lo(side > 0 ? x_mid - 16 : -x_mid - 16, go.y() - 32, go.z() - 16);
-  const Eigen::Vector3d hi(side > 0 ? x_mid + 16 : -x_mid + 16, ar.y() + 10 * scale, ar.z() + 30);
+  const Eigen::Vector3d hi(side > 0 ? x_mid + 16 : -x_mid + 16, ar.y() + 10 * scale, ar.z() + 24.5);
   RamusView ramus(v, lo, hi);
   if (!ramus.keep_connected_to(go, 14)) {
     const std::string reason = v.scanned(go) ? "no mandibular angle near its expected place"
@@ -205,8 +206,7 @@ void find_ramus_landmarks(const HeadVolume& v, double scale, int side, Findings&
     found["Go" + suffix] = found["Ar" + suffix] = RuleFinding::absent(reason);
     return;
   }
-  // Ar: the most posterior point of the posterior border between the angle and the condylar head.
-  // The border read upwards from the angle, until it jumps to another bone.
+  // The posterior border read upwards from the angle, until it jumps to another bone.
   // The traced border (to the grid's half millimetre), then each point to a fraction of it: a
   // ray from just behind the border forwards, at the middle of the ramus's width.
   Profile border;
@@ -216,9 +216,9 @@ void find_ramus_landmarks(const HeadVolume& v, double scale, int side, Findings&
     border.push_back({p.y(), edge ? edge->y() : p.x(), x});
   }
   Profile neck_profile;
-  // Read upwards from 15 mm above the angle, the border leans back up to the condylar neck,
-  // where it turns forward (by 0.7 mm or more) before the condylar head: Ar is the most
-  // posterior point before that turn.
+  // The ramus tangent's upper point (for Go): read upwards from 15 mm above the angle, the
+  // border leans back up to the condylar neck, where it turns forward (by 0.7 mm or more) before
+  // the condylar head; the most posterior point before that turn.
   double running_max = -1e9;
   for (const auto& p : until_jump(border, 3)) {
     if (p.z <= go.z() + 15 * scale) continue;
@@ -230,26 +230,24 @@ void find_ramus_landmarks(const HeadVolume& v, double scale, int side, Findings&
     found["Ar" + suffix] = found["Go" + suffix] = RuleFinding::absent("no posterior border of the ramus");
     return;
   }
-  const ProfilePoint ar_point = refined_extremum(neck_profile, most_posterior(neck_profile), 2);
-  const Eigen::Vector2d ar2(ar_point.y, ar_point.z);
-  // Articulare is a landmark of the lateral projection (where two shadows cross); read on the
-  // 3D border its height is poorly defined where the border runs nearly straight, so it never
-  // counts as confident: a person confirms it before it is used.
-  found["Ar" + suffix] = RuleFinding::found({ar_point.x, ar_point.y, ar_point.z}, 0.4,
-                                            "the 3D reading of a projection landmark: its height is uncertain");
+  const ProfilePoint neck_point = refined_extremum(neck_profile, most_posterior(neck_profile), 2);
+  const Eigen::Vector2d neck2(neck_point.y, neck_point.z);
+  // Articulare (articulare.h) on the border from 10 mm below the neck's point up (the angle
+  // below turns too fast for its continuity rule).
+  found["Ar" + suffix] = find_articulare(v, between_heights(until_jump(border, 3), neck_point.z - 10, 1e9), scale);
   // Go: the bisector of the ramus tangent and the mandibular plane, onto the angle's outline.
   std::vector<Eigen::Vector2d> lower_posterior;
   for (const auto& p : border)
-    if (p.z < ar_point.z - 5) lower_posterior.emplace_back(p.y, p.z);
+    if (p.z < neck_point.z - 5) lower_posterior.emplace_back(p.y, p.z);
   const std::vector<Eigen::Vector2d> lower = ramus.lower_border();
   if (lower_posterior.empty() || lower.empty()) {
     found["Go" + suffix] = RuleFinding::absent("no outline of the mandibular angle");
     return;
   }
   const Eigen::Vector2d me2(me.y(), me.z());
-  const Eigen::Vector2d ramus_touch = tangent_point(ar2, lower_posterior, {0, -1}, {1, 0});
+  const Eigen::Vector2d ramus_touch = tangent_point(neck2, lower_posterior, {0, -1}, {1, 0});
   const Eigen::Vector2d border_touch = tangent_point(me2, lower, {1, 0}, {0, -1});
-  const Eigen::Vector2d up = (ar2 - ramus_touch).normalized(), forward = (me2 - border_touch).normalized();
+  const Eigen::Vector2d up = (neck2 - ramus_touch).normalized(), forward = (me2 - border_touch).normalized();
   const auto vertex = intersection(ramus_touch, up, border_touch, forward);
   if (!vertex) {
     found["Go" + suffix] = RuleFinding::absent("the ramus and the lower border are parallel");

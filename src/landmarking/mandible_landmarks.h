@@ -7,9 +7,9 @@
 //   Go  gonion: where the bisector of the angle between the ramus tangent (the line from Ar
 //       touching the posterior border near the angle) and the mandibular plane (the line from Me
 //       touching the lower border near the angle) meets the angle's outline
-//   Ar  articulare, as read in 3D: the most posterior point of the posterior border of the
-//       condylar process below the condylar head (on a lateral cephalogram, where this border
-//       crosses the shadow of the cranial base; a CT has no such shadow)
+//   Ar  articulare: on a lateral cephalogram, where the posterior border of the condylar
+//       process crosses the shadow of the cranial base; read in 3D as the border's point at the
+//       height of the cranial base's underside at the midline at the same depth
 #include "landmarking/head_volume.h"
 #include "landmarking/rule_finding.h"
 

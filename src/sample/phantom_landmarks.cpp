@@ -49,6 +49,33 @@ Vector3d subnasale(const SkinProfile& skin) {
   return lps(0, skin.midline(best_z), best_z);
 }
 
+// Articulare as the field defines it on a lateral cephalogram: where the shadow of the condylar
+// process's posterior border crosses the inferior contour of the cranial base (the
+// basiocciput's). In 3D: the point of the posterior border, read in the ramus's mid-plane, at
+// the height where the underside of the cranial base at the midline (read upwards from the
+// pharynx) lies at the same depth. The border is nearly upright there and the base's underside
+// nearly level, so the crossing is well defined in both directions, unlike the border's most
+// posterior point, which a nearly straight border leaves undefined in height (issue 28).
+constexpr double kBaseReadFromZ = -24;  // below the sphenoid's underside, above the dens (phantom_neck.cpp)
+Vector3d articulare(const PartList& parts, Side side) {
+  const double sign = side == Side::kLeft ? 1 : -1;
+  auto border_at = [&](double z) {
+    return first_hit(parts, Tissue::kMandible, lps(sign * ramus_mid_plane_x(z), -40, z), Vector3d(0, -1, 0));
+  };
+  auto base_underside_at = [&](double a) {
+    return first_hit(parts, Tissue::kBone, lps(0, a, kBaseReadFromZ), Vector3d(0, 0, 1)).z();
+  };
+  // The border rises to meet the base: below the crossing it lies beneath the base's underside.
+  auto below_base = [&](double z) { return z < base_underside_at(anterior(border_at(z))); };
+  double lo = -20, hi = -1;  // the condylar neck and head (the condyle's top lies at z = 0)
+  assert(below_base(lo) && !below_base(hi) && "phantom articulare: the border does not cross the base");
+  while (hi - lo > 1e-4) {
+    const double mid = (lo + hi) / 2;
+    (below_base(mid) ? lo : hi) = mid;
+  }
+  return border_at(hi);
+}
+
 }  // namespace
 
 LandmarkSet phantom_landmarks(const PhantomDesign& d, const PartList& parts) {
@@ -75,8 +102,8 @@ LandmarkSet phantom_landmarks(const PhantomDesign& d, const PartList& parts) {
   add("Gn", d.from_mandible_reference(d.Gn));
   add("GoR", d.from_mandible_reference(gonion(d, Side::kRight)));
   add("GoL", d.from_mandible_reference(gonion(d, Side::kLeft)));
-  add("ArR", d.from_mandible_reference(articulare(d, Side::kRight)));
-  add("ArL", d.from_mandible_reference(articulare(d, Side::kLeft)));
+  add("ArR", articulare(parts, Side::kRight));
+  add("ArL", articulare(parts, Side::kLeft));
   add("U1", teeth.incisal_edge_centre(Jaw::kUpper, Side::kRight));
   add("L1", teeth.incisal_edge_centre(Jaw::kLower, Side::kRight));
   add("U6R", teeth.mesiobuccal_cusp_tip(Jaw::kUpper, Side::kRight));

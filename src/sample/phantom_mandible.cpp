@@ -1,6 +1,7 @@
 // Mandible: the body (a U band along the lower arch), the mental protuberance (chin: Pog, Gn,
 // Me by construction), both rami (plates from the gonial angle up to the coronoid process and
-// the condylar neck, Go and Ar as polygon vertices) and the condyles.
+// the condylar neck, Go as a polygon vertex) and the condyles; articulare is read off the parts
+// (phantom_landmarks.cpp).
 #include <array>
 
 #include "sample/phantom_parts.h"
@@ -55,16 +56,16 @@ bool in_posterior_body(const PhantomDesign& d, const Vector3d& p) {
   return in_body_height(d, a, p.z()) && in_polygon(Vector2d(p.x(), a), kPosteriorBody);
 }
 
-double ramus_plane_x(double z) { return lerp(kRamusXAtAngle, kRamusXAtCondyle, smoothstep(-56, -5, z)); }
-
 }  // namespace
+
+double ramus_mid_plane_x(double z) { return lerp(kRamusXAtAngle, kRamusXAtCondyle, smoothstep(-56, -5, z)); }
 
 std::array<Vector2d, 11> ramus_outline(const PhantomDesign& d) {
   // (a, z), counter-clockwise from the gonial angle: posterior border, condylar neck, sigmoid
   // notch, coronoid process, anterior border, retromolar region, lower border back to Go.
   return {{{-7, -56},  // Go
            {-11, -32},
-           {-12.5, -11.5},  // Ar
+           {-12.5, -11.5},
            {-11.5, -5},
            {-4.5, -5},
            {1, -17},
@@ -78,13 +79,7 @@ std::array<Vector2d, 11> ramus_outline(const PhantomDesign& d) {
 Vector3d gonion(const PhantomDesign& d, Side side) {
   Vector2d go = ramus_outline(d)[0];
   double sign = side == Side::kLeft ? 1 : -1;
-  return lps(sign * ramus_plane_x(go.y()), go.x(), go.y());
-}
-
-Vector3d articulare(const PhantomDesign& d, Side side) {
-  Vector2d ar = ramus_outline(d)[2];
-  double sign = side == Side::kLeft ? 1 : -1;
-  return lps(sign * ramus_plane_x(ar.y()), ar.x(), ar.y());
+  return lps(sign * ramus_mid_plane_x(go.y()), go.x(), go.y());
 }
 
 void add_mandible_parts(const PhantomDesign& d, PartList& parts) {
@@ -106,7 +101,7 @@ void add_mandible_parts(const PhantomDesign& d, PartList& parts) {
   parts.push_back(bilateral(
       "ramus", Box::spanning(lps(kRamusXAtAngle - 5, -15, -80), lps(kRamusXAtCondyle + 5, 36, 0)),
       [outline](const Vector3d& p) {
-        return std::abs(p.x() - ramus_plane_x(p.z())) < kRamusHalfThickness &&
+        return std::abs(p.x() - ramus_mid_plane_x(p.z())) < kRamusHalfThickness &&
                in_polygon(Vector2d(anterior(p), p.z()), outline);
       },
       Tissue::kMandible, Material::kBone, soft));

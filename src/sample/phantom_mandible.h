@@ -7,9 +7,12 @@
 
 namespace maxillo::sample {
 
-// Ramus outline in the (a, z) plane: [0] is gonion, [2] articulare.
+// Ramus outline in the (a, z) plane: [0] is gonion, [2] the posterior border's most posterior
+// point below the condyle.
 std::array<Vector2d, 11> ramus_outline(const PhantomDesign& design);
+// |x| of the left ramus's mid-plane at height z (the right one is its mirror image): the plate
+// leans outwards from the angle up to the condyle.
+double ramus_mid_plane_x(double z);
 Vector3d gonion(const PhantomDesign& design, Side side);
-Vector3d articulare(const PhantomDesign& design, Side side);
 
 }  // namespace maxillo::sample

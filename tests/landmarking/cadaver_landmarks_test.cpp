@@ -66,6 +66,20 @@ TEST(CadaverLandmarks, ItsFlatChinIsReadOnTheLineFromNasion) {
   EXPECT_GT(b->position->z() - pog->position->z(), 8);
 }
 
+// Articulare is where the condyle's posterior border meets the cranial base's underside. This
+// head's clivus slopes steeply there, so the crossing's height hangs on its depth: in a second
+// pose it moved 2 mm. The detector measures the slope and flags the point, naming the slope,
+// instead of handing a plan a confident point it cannot repeat (the phantom's base is level
+// there: tests/landmarking/phantom_landmarks_test.cpp finds its Ar confident within 2 mm).
+TEST(CadaverLandmarks, ArticulareWhereTheClivusSlopesIsFlaggedWithTheSlope) {
+  if (!cadaver_present()) GTEST_SKIP() << "real data absent: " << testing::cthead_slices();
+  const LandmarkDetection found = detect_landmarks(cadaver(), "cadaver");
+  const DetectedLandmark* ar = found.find("ArR");
+  ASSERT_TRUE(ar && ar->position);
+  EXPECT_TRUE(ar->flagged());
+  EXPECT_NE(ar->note.find("the cranial base slopes"), std::string::npos) << ar->note;
+}
+
 // The head's orbitales are read 19 mm apart from their mirror images (its right orbital rim is
 // not where the rule looks): the second start, which knows nothing of the other side, finds them
 // elsewhere too. Two independent checks agree, on real data.

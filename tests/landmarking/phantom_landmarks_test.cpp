@@ -59,8 +59,7 @@ TEST(PhantomLandmarks, TheDefaultPhantomsLandmarksAreFoundNearTheirTruth) {
   const auto errors = errors_against(found, default_phantom().landmarks);
   for (const auto& l : found.landmarks) {
     ASSERT_TRUE(l.position) << l.label << ": " << l.note;
-    // Articulare, read in 3D, is never confident (mandible_landmarks.h): flagged for a person.
-    EXPECT_EQ(l.flagged(), l.label.starts_with("Ar")) << l.label;
+    EXPECT_FALSE(l.flagged()) << l.label;
     // Every landmark was found again from a second start (landmark_checks.h), and passed; sella,
     // whose window is the same from both starts, is not checked so.
     const auto again =
@@ -120,13 +119,13 @@ TEST(PhantomLandmarks, AFinerAndACoarserScanOfTheSameHeadAgree) {
     for (const auto& [label, e] : errors) std::cout << spacing << " mm voxels: " << label << " " << e << " mm\n";
     std::string left_out;
     for (const auto& l : found.landmarks)
-      if (!errors.count(l.label) && !l.label.starts_with("Ar")) {
+      if (!errors.count(l.label)) {
         left_out += " " + l.label + " (" + l.note;
         for (const auto& c : l.checks)
           if (!c.passed) left_out += "; " + c.name + ": " + c.detail;
         left_out += ")";
       }
-    EXPECT_EQ(left_out, "") << spacing << " mm: absent or flagged";  // all but Ar (always flagged)
+    EXPECT_EQ(left_out, "") << spacing << " mm: absent or flagged";
   }
 }
 
@@ -142,7 +141,7 @@ TEST(PhantomLandmarks, OtherPatientsInOtherPosesAreFoundNearTheirTruth) {
     const auto errors = errors_against(found, phantom.landmarks);
     for (const auto& [label, e] : errors) std::cout << patient << ": " << label << " " << e << " mm\n";
     EXPECT_LT(mean_of(errors), 1.0) << patient;
-    EXPECT_GE(errors.size(), 24u) << patient;  // 29 less Ar (flagged) and at most three more
+    EXPECT_GE(errors.size(), 26u) << patient;  // at most three absent or flagged
     for (const auto& [label, e] : errors) EXPECT_LT(e, label == "L1" ? 3.0 : 2.0) << patient << " " << label;
   }
 }

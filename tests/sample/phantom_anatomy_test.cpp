@@ -40,6 +40,20 @@ TEST(PhantomAnatomy, SkeletalLandmarksOnBoneSurfaces) {
   EXPECT_TRUE(near(ph(), L("S") + 7 * kInferior, Tissue::kBone));
 }
 
+// Articulare where a lateral cephalogram shows it: on the posterior border of the condylar process
+// (the mandible in front, none behind) at the height where the cranial base's underside at the
+// midline, at the same depth, begins (bone above, none below); 1.5 mm off, a voxel and a half.
+TEST(PhantomAnatomy, ArticulareIsWhereTheCondylesBorderMeetsTheCranialBase) {
+  for (const char* label : {"ArR", "ArL"}) {
+    const Eigen::Vector3d ar = L(label);
+    EXPECT_EQ(tissue_at(ph(), ar + 1.5 * kAnterior), Tissue::kMandible) << label;
+    EXPECT_NE(tissue_at(ph(), ar + 1.5 * kPosterior), Tissue::kMandible) << label;
+    const Eigen::Vector3d midline(0, ar.y(), ar.z());
+    EXPECT_EQ(tissue_at(ph(), midline + 1.5 * kSuperior), Tissue::kBone) << label;
+    EXPECT_FALSE(is_bone(tissue_at(ph(), midline + 1.5 * kInferior))) << label;
+  }
+}
+
 TEST(PhantomAnatomy, NasalSpinesAreTheEndsOfThePalate) {
   // Bone just inside each end, none beyond it along the palatal plane.
   EXPECT_TRUE(is_bone(tissue_at(ph(), L("ANS") + 1 * kPosterior)));
