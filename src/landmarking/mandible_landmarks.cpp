@@ -265,9 +265,11 @@ void find_ramus_landmarks(const HeadVolume& v, double scale, int side, Findings&
     found["Go" + suffix] = RuleFinding::absent("no outline near the angle's vertex");
     return;
   }
-  // Across the ramus: the middle of the bone at the outline point, or just inside it.
+  // Across the ramus: the middle of the bone 2 mm inside the outline point, where the plate's
+  // whole cross-section lies (at the outline a turned head's partial voxels put it up to 2.2 mm
+  // to one side), or nearer the outline where no bone lies there.
   std::optional<double> go_x;
-  for (double inside : {0.0, 0.5, 1.0})
+  for (double inside : {2.0, 1.0, 0.5, 0.0})
     if (!go_x) go_x = ramus.middle_x(go2->x() - inside * outward.x(), go2->y() - inside * outward.y());
   if (!go_x) {
     found["Go" + suffix] = RuleFinding::absent("no bone across the angle at its outline");
