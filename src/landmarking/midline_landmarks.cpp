@@ -405,11 +405,15 @@ std::optional<ProfilePoint> upper_incisor_tip(const Profile& profile) {
 // behind the crown, once made a jump 7 mm below the tip), the two samples in neighbouring rows
 // (across rows where no ray met the face, the step is no jump). -1 if none.
 constexpr double kOverjetJumpMm = 0.8, kCrownBandMm = 6.0, kLargestOverjetMm = 16.0, kFaceBelowJumpMm = 1.0;
+constexpr double kLingualRowMm = 0.25;  // the lower lingual profile's rows
+bool neighbouring_rows(const ProfilePoint& below, const ProfilePoint& above) {
+  return above.z - below.z < 1.5 * kLingualRowMm;
+}
 bool a_face_ends_at(const Profile& lingual, size_t top) {
-  const size_t samples = size_t(kFaceBelowJumpMm / 0.25);  // the profile's rows lie 0.25 mm apart
+  const size_t samples = size_t(kFaceBelowJumpMm / kLingualRowMm);
   if (top < samples) return false;
   for (size_t i = top - samples + 1; i <= top; ++i)
-    if (lingual[i].z - lingual[i - 1].z > 0.3 || std::abs(lingual[i].y - lingual[i - 1].y) >= kOverjetJumpMm)
+    if (!neighbouring_rows(lingual[i - 1], lingual[i]) || std::abs(lingual[i].y - lingual[i - 1].y) >= kOverjetJumpMm)
       return false;
   return true;
 }
@@ -417,7 +421,7 @@ int overjet_jump(const Profile& lingual, const Eigen::Vector3d& upper_edge, doub
   for (size_t i = 1; i < lingual.size(); ++i) {
     const ProfilePoint& below = lingual[i - 1];
     if (std::abs(below.z - template_z) > kCrownBandMm || below.y - lingual[i].y < kOverjetJumpMm) continue;
-    if (lingual[i].z - below.z > 0.3 || !a_face_ends_at(lingual, i - 1)) continue;  // neighbouring rows
+    if (!neighbouring_rows(below, lingual[i]) || !a_face_ends_at(lingual, i - 1)) continue;
     const double behind_upper = below.y - upper_edge.y();
     if (behind_upper > 0 && behind_upper <= kLargestOverjetMm * scale) return int(i);
   }
@@ -441,7 +445,7 @@ void find_lower_incisor(const HeadVolume& v, double scale, double midline_x, Fin
   // A ray that starts in bone (the symphysis of a lower jaw set back) sees no lingual face: its
   // hit at the start once made a jump forward to the crown, taken for the tip 7 mm low.
   const double ray_start_y = l1.y() + 16;
-  for (double z = l1.z() - 12; z <= l1.z() + 8; z += 0.25) {
+  for (double z = l1.z() - 12; z <= l1.z() + 8; z += kLingualRowMm) {
     std::optional<ProfilePoint> best;
     for (double x = l1.x() - 2; x <= l1.x() + 2.01; x += 0.5)
       if (auto hit = first_crossing(v, {x, ray_start_y, z}, {0, -1, 0}, 26, kToothSurfaceHu))
