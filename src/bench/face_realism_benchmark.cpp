@@ -84,6 +84,7 @@ SoftTissueOptions model_options(const FaceRealismOptions& variant, SoftTissueMod
   options.attachment.outer_surface_only = variant.free_cavities;
   options.attachment.moved_bone_contact = variant.bone_contact;
   options.nose_root = variant.nose_root;
+  options.top_at_brows = variant.top_at_brows;
   options.part_lips = variant.part_lips;
   options.nose_stiffness = variant.nose_stiffness;
   options.meshing = variant.meshing;
@@ -145,6 +146,8 @@ Json run_face_realism_benchmark(const FaceRealismOptions& options) {
                   {"free_cavities", options.free_cavities},
                   {"bone_contact", softtissue::contact_name(options.bone_contact)},
                   {"nose_root", options.nose_root},
+                  {"top_at_brows", options.top_at_brows},
+                  {"enclosed_voxels_left_out", face.enclosed_voxels},
                   {"part_lips", options.part_lips},
                   {"lips_parted_faces", face.lips_parted.faces},
                   {"nose_stiffness", options.nose_stiffness},
@@ -180,6 +183,9 @@ std::string face_realism_text(const Json& figures) {
   if (figures["free_cavities"].get<bool>()) text += "moved bone carries only the tissue on its outer surface\n";
   text += "tissue on the moved bone: " + figures["bone_contact"].get<std::string>() + "\n";
   if (figures["nose_root"].get<bool>()) text += "the region goes on above the orbits in front of the eyes\n";
+  if (figures["top_at_brows"].get<bool>())
+    text += formatted("the region's top at the brows; %lld voxels of tissue shut in by bone left out\n",
+                      figures["enclosed_voxels_left_out"].get<long long>());
   if (figures["part_lips"].get<bool>())
     text += formatted("the model parted between the lips: %d faces\n", figures["lips_parted_faces"].get<int>());
   text += formatted("the cartilaginous nose: %d tets, %.0f times the soft tissue's stiffness; Poisson ratio %.3g\n",

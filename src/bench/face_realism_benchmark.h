@@ -19,6 +19,7 @@ struct FaceRealismOptions {
   std::vector<double> advancements_mm{3, 6, 9};
   bool free_cavities = false;  // moved bone carries only the tissue on its outer surface (AttachmentOptions)
   bool nose_root = false;      // the region's second piece above the orbits (SoftTissueOptions::nose_root)
+  bool top_at_brows = false;   // the region's top at the brows (SoftTissueOptions::top_at_brows)
   bool part_lips = false;      // the model parted between the lips (SoftTissueOptions::part_lips)
   double nose_stiffness = casework::kNasalCartilageStiffness;  // SoftTissueOptions::nose_stiffness
   // How tissue on the moved bone follows it (AttachmentOptions::moved_bone_contact).
@@ -30,7 +31,7 @@ struct FaceRealismOptions {
 };
 
 // Error(kFileNotFound) when the cadaver head is absent. Figures: preparation_seconds,
-// landmarks_by_hand, free_cavities, bone_contact (softtissue::contact_name), nose_root, part_lips, lips_parted_faces, nose_stiffness, poisson_ratio, nose_tets, face_model (tets, nodes, cell_mm, seconds), published (label,
+// landmarks_by_hand, free_cavities, bone_contact (softtissue::contact_name), nose_root, top_at_brows, enclosed_voxels_left_out, part_lips, lips_parted_faces, nose_stiffness, poisson_ratio, nose_tets, face_model (tets, nodes, cell_mm, seconds), published (label,
 // published, source, plausible_low/high), advancements_mm, runs (advancement_mm, model, title,
 // seconds; error when it failed, else iterations, points: label, present, forward_mm, ratio,
 // plausible; gradient_p999, gradient_max, moved_edges; boundary_move_mm, the largest move within

@@ -36,6 +36,8 @@ void attach_bench_face(CLI::App& bench, CommandContext& ctx) {
                  "with --real: moved bone carries only the tissue on its outer surface (off by default)");
   face->add_flag("--nose-root", realism->nose_root,
                  "with --real: the face region goes on above the orbits in front of the eyes (off by default)");
+  face->add_flag("--top-at-brows", realism->top_at_brows,
+                 "with --real: the face region's top at the brows, the brain's base left out (off by default)");
   face->add_flag("--part-lips", realism->part_lips,
                  "with --real: the model parted between the lips at their cleft (off by default)");
   auto contact = std::make_shared<std::string>(softtissue::contact_name(realism->bone_contact));

@@ -89,12 +89,16 @@ Mask dilated(const Mask& mask, const MaskGrid& grid, double radius_mm) {
   return out;
 }
 
-Mask opened(const Mask& mask, const MaskGrid& grid, double radius_mm) {
+Mask eroded(const Mask& mask, const MaskGrid& grid, double radius_mm) {
   const auto d = squared_distance_to(complement(mask), grid);  // distance to the background
   const float r2 = float(radius_mm * radius_mm);
-  Mask eroded(mask.size());
-  for (size_t n = 0; n < d.size(); ++n) eroded[n] = d[n] > r2;
-  return dilated(eroded, grid, radius_mm);
+  Mask out(mask.size());
+  for (size_t n = 0; n < d.size(); ++n) out[n] = d[n] > r2;
+  return out;
+}
+
+Mask opened(const Mask& mask, const MaskGrid& grid, double radius_mm) {
+  return dilated(eroded(mask, grid, radius_mm), grid, radius_mm);
 }
 
 Mask coarsened(const Mask& mask, const MaskGrid& grid, const std::array<size_t, 3>& factor, MaskGrid& coarse) {

@@ -16,6 +16,8 @@ namespace maxillo {
 // parabolas, one pass per axis, with the grid's spacing).
 std::vector<float> squared_distance_to(const Mask& to, const MaskGrid& grid);
 
+// The voxels farther than radius_mm from the background (an erosion by a ball).
+Mask eroded(const Mask& mask, const MaskGrid& grid, double radius_mm);
 // Erosion then dilation by a ball of radius_mm: removes what is thinner than about 2 radius_mm.
 Mask opened(const Mask& mask, const MaskGrid& grid, double radius_mm);
 // Every voxel within radius_mm of the mask.

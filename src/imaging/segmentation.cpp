@@ -7,6 +7,7 @@
 
 #include "imaging/distance_morphology.h"
 #include "imaging/half_maximum_edge.h"
+#include "imaging/label_masks.h"
 #include "imaging/mask_components.h"
 
 namespace maxillo {
@@ -19,15 +20,6 @@ constexpr double kOpeningVoxelsPerRadius = 3;
 // The mean grey value of a piece put back (step 4): fat (-100) to cartilage (+100), with the
 // partial volume of a thin wall.
 constexpr double kThinSoftTissueHu[2] = {-150, 150};
-
-MaskGrid grid_of(const VolumeGeometry& g) {
-  MaskGrid grid;
-  for (int a = 0; a < 3; ++a) {
-    grid.size[size_t(a)] = size_t(g.size[a]);
-    grid.spacing[size_t(a)] = g.spacing[a];
-  }
-  return grid;
-}
 
 Mask threshold(const Volume& volume, double lowest_hu) {
   Mask mask(volume.hu.size());

@@ -11,6 +11,7 @@
 // glabella and the eyelids.
 #include <Eigen/Core>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "core/volume.h"
@@ -26,6 +27,7 @@ struct RegionPlane {
 
 struct RegionShape {
   std::vector<std::vector<RegionPlane>> pieces;  // convex pieces: the kept side of all their planes
+  std::vector<std::string> plane_names;          // for reports, in planes() order ("at the brows", ...)
 
   RegionShape() = default;
   RegionShape(std::vector<RegionPlane> planes) : pieces{std::move(planes)} {}  // NOLINT: one piece

@@ -1,7 +1,8 @@
 #pragma once
 // Soft tissue prediction for a planned bone move (thesis ch. 6), from labelled volumes to the
 // predicted skin:
-//   1. the face region: soft tissue below the orbits, above a plane under the chin, in front of
+//   1. the face region: soft tissue below the orbits (optionally the brows, without the brain's
+//      base that lies there, imaging/enclosed_tissue.h), above a plane under the chin, in front of
 //      the ears, optionally with the nose's root and the glabella above the orbits
 //      (softtissue/face_region.h, default_face_region below);
 //   2. a tet mesh of it (CGAL, tetmesh/labelled_tet_mesher.h) within the tet budget, parted
@@ -47,6 +48,12 @@ struct SoftTissueOptions {
   // The region's second piece, the nose's root and the glabella (default_face_region). Off by
   // default: the non-linear FEM does not converge on the phantom with it (issue 34).
   bool nose_root = false;
+  // The region's top at the brows, 8 mm above the nasion, instead of at the orbitales, with the
+  // brain's base it would hold left out (imaging/enclosed_tissue.h), so that the model's edge lies
+  // where the move has died out (issue 34). Off by default: with the cadaver's hand-placed
+  // landmarks of tests/e2e/cadaver_simulate_test.cpp the non-linear FEM stopped at 72 % of a 6 mm
+  // advancement (with the detected ones it converges).
+  bool top_at_brows = false;
   // The model parted between the lips at their cleft (casework/softtissue/lip_parting.h), so that they slide
   // on each other instead of being tied node to node. Off by default: the parting follows the
   // tets' faces, up to half a cell from the cleft, and on the phantom meshed at 5 mm it gave the
@@ -102,13 +109,16 @@ struct SoftTissuePrediction {
   records::SoftTissueTimings seconds;
 };
 
-// The face region from landmarks: the face below the orbitales, above a plane 15 mm below menton,
-// in front of the porions; with `nose_root` and N, a second piece for the nose's root and the
+// The face region from landmarks: the face below the orbitales (with `top_at_brows` and N, below
+// a plane 8 mm above the nasion, and build_face_model leaves the brain's base it holds out),
+// above a plane 15 mm below menton, in front of the porions; with `nose_root` and N, a second piece for the nose's root and the
 // glabella: above the orbitales, below a plane 15 mm above the nasion, in front of a plane 10 mm
 // behind it (the eyelids and the front of the eyes; the brain behind the forehead stays out), so
 // that no cut runs through the nose. Or, Po and Me are needed (missing ones -> Error naming them).
-softtissue::RegionShape default_face_region(const LandmarkSet& landmarks, bool nose_root = false);
-// Where each of default_face_region's planes lies, in its planes() order: "below the orbits", ...
+softtissue::RegionShape default_face_region(const LandmarkSet& landmarks, bool nose_root = false,
+                                            bool top_at_brows = false);
+// Where each of the region's planes lies, in its planes() order: "at the brows", ... (the names
+// default_face_region gave them; "plane N" for a plane it did not name).
 std::vector<std::string> face_region_plane_names(const softtissue::RegionShape& region);
 
 // Steps 1-2, which look at no move: the face region and its tet mesh. Built once for a case, one
@@ -124,6 +134,7 @@ struct FaceModel {
   std::vector<uint8_t> nose_nodes;  // per node, 1 for a corner of those tets: no moved bone carries them
   softtissue::MeshQuality quality;
   MeshingOutcome meshing;
+  int64_t enclosed_voxels = 0;  // with top_at_brows: the region's tissue shut in by bone (the brain's base), left out
   double region_seconds = 0, meshing_seconds = 0;
   std::string key;
 };
