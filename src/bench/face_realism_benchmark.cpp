@@ -183,9 +183,10 @@ std::string face_realism_text(const Json& figures) {
   if (figures["free_cavities"].get<bool>()) text += "moved bone carries only the tissue on its outer surface\n";
   text += "tissue on the moved bone: " + figures["bone_contact"].get<std::string>() + "\n";
   if (figures["nose_root"].get<bool>()) text += "the region goes on above the orbits in front of the eyes\n";
-  if (figures["top_at_brows"].get<bool>())
-    text += formatted("the region's top at the brows; %lld voxels of tissue shut in by bone left out\n",
-                      figures["enclosed_voxels_left_out"].get<long long>());
+  text += figures["top_at_brows"].get<bool>()
+              ? formatted("the region's top at the brows; %lld voxels of tissue shut in by bone left out\n",
+                          figures["enclosed_voxels_left_out"].get<long long>())
+              : std::string("the region's top at the orbitales\n");
   if (figures["part_lips"].get<bool>())
     text += formatted("the model parted between the lips: %d faces\n", figures["lips_parted_faces"].get<int>());
   text += formatted("the cartilaginous nose: %d tets, %.0f times the soft tissue's stiffness; Poisson ratio %.3g\n",

@@ -19,7 +19,7 @@ struct FaceRealismOptions {
   std::vector<double> advancements_mm{3, 6, 9};
   bool free_cavities = false;  // moved bone carries only the tissue on its outer surface (AttachmentOptions)
   bool nose_root = false;      // the region's second piece above the orbits (SoftTissueOptions::nose_root)
-  bool top_at_brows = false;   // the region's top at the brows (SoftTissueOptions::top_at_brows)
+  bool top_at_brows = true;    // the region's top at the brows, else the orbitales (SoftTissueOptions::top_at_brows)
   bool part_lips = false;      // the model parted between the lips (SoftTissueOptions::part_lips)
   double nose_stiffness = casework::kNasalCartilageStiffness;  // SoftTissueOptions::nose_stiffness
   // How tissue on the moved bone follows it (AttachmentOptions::moved_bone_contact).

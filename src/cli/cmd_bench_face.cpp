@@ -36,8 +36,10 @@ void attach_bench_face(CLI::App& bench, CommandContext& ctx) {
                  "with --real: moved bone carries only the tissue on its outer surface (off by default)");
   face->add_flag("--nose-root", realism->nose_root,
                  "with --real: the face region goes on above the orbits in front of the eyes (off by default)");
-  face->add_flag("--top-at-brows", realism->top_at_brows,
-                 "with --real: the face region's top at the brows, the brain's base left out (off by default)");
+  auto at_orbitales = std::make_shared<bool>(false);
+  face->add_flag("--top-at-orbitales", *at_orbitales,
+                 "with --real: the face region's top at the orbitales, as before issue 34 (default: at the brows, "
+                 "the brain's base left out)");
   face->add_flag("--part-lips", realism->part_lips,
                  "with --real: the model parted between the lips at their cleft (off by default)");
   auto contact = std::make_shared<std::string>(softtissue::contact_name(realism->bone_contact));
@@ -51,8 +53,9 @@ void attach_bench_face(CLI::App& bench, CommandContext& ctx) {
   face->add_option("--poisson", realism->poisson_ratio, "with --real: the soft tissue's Poisson ratio")
       ->check(CLI::Range(0.0, 0.499))
       ->capture_default_str();
-  face->callback([args, real, realism, contact, face, &ctx] {
+  face->callback([args, real, realism, contact, at_orbitales, face, &ctx] {
     if (*real) {
+      realism->top_at_brows = !*at_orbitales;
       if (face->count("--cell-mm") > 0) realism->meshing.cell_size_mm = args->cell_mm;
       if (face->count("--max-tets") > 0) realism->meshing.max_tets = args->max_tets;
       realism->bone_contact = *softtissue::contact_named(*contact);

@@ -167,6 +167,10 @@ Json to_json(const SimulationSummary& s) {
     json["bone_contact"] = s.bone_contact;
   }
   if (s.format_version >= 6) json["nose_nodes_uncarried"] = s.nose_nodes_uncarried;
+  if (s.format_version >= 7) {
+    json["squeezed_nodes_freed"] = s.squeezed_nodes_freed;
+    json["enclosed_voxels_left_out"] = s.enclosed_voxels_left_out;
+  }
   if (s.uncertainty)
     json["uncertainty"] = {
         {"runs", s.uncertainty->runs}, {"p95_mm", s.uncertainty->p95_mm}, {"max_mm", s.uncertainty->max_mm}};
@@ -224,6 +228,10 @@ SimulationSummary read_simulation_summary(const Json& json, const std::string& s
       r.fail("bone_contact", "unknown contact \"" + s.bone_contact + "\"");
   }
   if (s.format_version >= 6) s.nose_nodes_uncarried = count(r, "nose_nodes_uncarried");
+  if (s.format_version >= 7) {
+    s.squeezed_nodes_freed = count(r, "squeezed_nodes_freed");
+    s.enclosed_voxels_left_out = count(r, "enclosed_voxels_left_out");
+  }
   return s;
 }
 

@@ -24,7 +24,10 @@ struct SimulationSummary {
   // softtissue/bone_attachment.h), required from 5 on; before it that tissue was tied to the bone.
   // 6: nose_nodes_uncarried (the cartilaginous nose's nodes on moved bone, left free), required
   // from 6 on; before it the moved bone carried them.
-  static constexpr int kFormatVersion = 6;
+  // 7: squeezed_nodes_freed (sliding nodes pinched between moved and unmoved bone, left free,
+  // softtissue/squeezed_nodes.h) and enclosed_voxels_left_out (the region's tissue shut in by
+  // bone, imaging/enclosed_tissue.h), required from 7 on; before it neither was done.
+  static constexpr int kFormatVersion = 7;
 
   struct UncertaintyBand {
     std::vector<std::string> runs;  // "mtm nu=0.46", ...
@@ -93,6 +96,8 @@ struct SimulationSummary {
   int sliding_nodes = 0;                            // version 5: nodes sliding on moved bone
   std::string bone_contact = "tied";                // version 5: softtissue::contact_name of the attachment
   int nose_nodes_uncarried = 0;                     // version 6: the nose's nodes on moved bone, left free
+  int squeezed_nodes_freed = 0;                     // version 7: sliding nodes pinched between bones, left free
+  int64_t enclosed_voxels_left_out = 0;             // version 7: the region's tissue shut in by bone
 };
 
 Json to_json(const SimulationSummary& summary);

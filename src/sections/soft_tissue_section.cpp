@@ -27,7 +27,10 @@ std::string count_text(const records::SimulationSummary& s) {
 std::string bone_contact_text(const records::SimulationSummary& s) {
   if (s.bone_contact == "sliding")
     return "slides on it: the bone pushes it along its normal and leaves it free along its surface, as the "
-           "subperiosteal dissection frees it";
+           "subperiosteal dissection frees it" +
+           (s.squeezed_nodes_freed > 0 ? "; " + std::to_string(s.squeezed_nodes_freed) +
+                                             " nodes pinched between moved and unmoved bone are left free"
+                                       : std::string());
   if (s.bone_contact == "sliding-in-cavities")
     return "tied to it on its outer surface, sliding on it inside its cavities";
   return "tied to it: moves with the bone";
@@ -68,14 +71,20 @@ const std::vector<std::pair<std::string, std::string>> kThreeViews{
     {"frontal", "frontal"}, {"lateral", "right lateral"}, {"oblique", "oblique"}};
 
 // The tissues the model tells apart (summaries before format 4: one homogeneous tissue).
-std::string tissues_text(const records::SimulationSummary& s) {
-  if (s.nose_tets == 0) return "one homogeneous soft tissue";
+std::string nose_text(const records::SimulationSummary& s) {
   std::string text = "soft tissue, and the cartilaginous nose (" + std::to_string(s.nose_tets) + " tetrahedra) " +
                      fixed(s.nose_stiffness, 0) + " times stiffer";
   // From format 6 the moved bone does not carry the nose (casework/softtissue/nasal_cartilage.h).
   if (s.format_version >= 6)
     text += ", which follows the tissue, not the moved bone (" + std::to_string(s.nose_nodes_uncarried) +
             " of its nodes on the bone left free, as the septum is freed from the maxilla)";
+  return text;
+}
+
+std::string tissues_text(const records::SimulationSummary& s) {
+  std::string text = s.nose_tets == 0 ? "one homogeneous soft tissue" : nose_text(s);
+  if (s.enclosed_voxels_left_out > 0)
+    text += "; the soft tissue shut in by bone within the region (the brain's base) is left out";
   return text;
 }
 
@@ -211,6 +220,15 @@ void add_uncertainty(const records::StoredSimulation& simulation, report::Sectio
                    std::to_string(band.p95_mm).substr(0, 4) + " mm) from their mean."});
 }
 
+// Where the model's cut planes lie, as the prediction named them (summaries before format 3,
+// which kept no names, had the planes below the orbits, under the chin and in front of the ears).
+std::string cut_planes_text(const records::SimulationSummary& s) {
+  if (s.boundary_moves.empty()) return "below the orbits, under the chin, in front of the ears";
+  std::string text;
+  for (const auto& m : s.boundary_moves) text += (text.empty() ? "" : ", ") + m.where;
+  return text;
+}
+
 }  // namespace
 
 report::Section soft_tissue_section(const records::StoredSimulation& simulation) {
@@ -222,7 +240,8 @@ report::Section soft_tissue_section(const records::StoredSimulation& simulation)
       "Predicted face for the planned bone moves (" + s.plan_text + "), computed with the " + title +
       " on a tetrahedral model of the facial soft tissue. "
       "Tissue touching a moved bone segment follows it; tissue on unmoved bone and on the model's cut planes "
-      "(below the orbits, under the chin, in front of the ears) stays in place."});
+      "(" +
+      cut_planes_text(s) + ") stays in place."});
   section.blocks.push_back(model_facts(s, title));
   if (s.model_fallback) {
     const auto requested = softtissue::parse_model(s.model_fallback->requested);  // the reader has checked it

@@ -61,8 +61,8 @@ TEST(Simulate, SixMillimetreAdvancementOfThePhantomGivesAPlausibleFace) {
   // The cartilaginous nose is a stiffer tissue (casework/softtissue/nasal_cartilage.h).
   EXPECT_GT(summary["nose_tets"].get<int>(), 50);
   EXPECT_NEAR(summary["nose_stiffness"].get<double>(), 67.6, 0.1);
-  ASSERT_EQ(summary["boundary_moves"].size(), 3u);  // below the orbits, under the chin, in front of the ears
-  EXPECT_EQ(summary["boundary_moves"][0]["where"], "below the orbits");
+  ASSERT_EQ(summary["boundary_moves"].size(), 3u);  // at the brows, under the chin, in front of the ears
+  EXPECT_EQ(summary["boundary_moves"][0]["where"], "at the brows");
   for (const auto& point : profile["points"]) {
     if (point["label"] == "Ls") {
       EXPECT_GT(point["ratio"].get<double>(), 0.5);  // the lip follows its bone

@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <functional>
+#include <map>
 #include <string>
+#include <vector>
 
 #include "core/error.h"
 #include "support/error_of.h"
@@ -53,7 +55,26 @@ SimulationSummary example_summary() {
   s.sliding_nodes = 1234;
   s.bone_contact = "sliding";
   s.nose_nodes_uncarried = 3;
+  s.squeezed_nodes_freed = 74;
+  s.enclosed_voxels_left_out = 64163;
   return s;
+}
+
+// The example written as an older format: the fields each later version added taken out.
+Json as_version(int version) {
+  static const std::map<int, std::vector<const char*>> added{
+      {2, {"plan_text", "meshing_attempts", "mean_aspect_ratio", "soft_landmarks"}},
+      {3, {"profile_response", "boundary_moves"}},
+      {4, {"nose_tets", "nose_stiffness", "model_fallback"}},
+      {5, {"sliding_nodes", "bone_contact"}},
+      {6, {"nose_nodes_uncarried"}},
+      {7, {"squeezed_nodes_freed", "enclosed_voxels_left_out"}}};
+  Json json = to_json(example_summary());
+  for (const auto& [since, keys] : added)
+    if (since > version)
+      for (const char* key : keys) json.erase(key);
+  json["format_version"] = version;
+  return json;
 }
 
 TEST(SimulationSummary, RoundTripsThroughItsText) {
@@ -93,26 +114,28 @@ TEST(SimulationSummary, RoundTripsThroughItsText) {
   EXPECT_EQ(read.sliding_nodes, 1234);
   EXPECT_EQ(read.bone_contact, "sliding");
   EXPECT_EQ(read.nose_nodes_uncarried, 3);
+  EXPECT_EQ(read.squeezed_nodes_freed, 74);
+  EXPECT_EQ(read.enclosed_voxels_left_out, 64163);
+}
+
+// Version 6 summaries (nothing pinched freed, no tissue shut in by bone left out) still read so.
+TEST(SimulationSummary, AVersion6SummaryReadsWithNothingFreedOrLeftOut) {
+  const SimulationSummary read = read_simulation_summary(as_version(6), "test");
+  EXPECT_EQ(read.squeezed_nodes_freed, 0);
+  EXPECT_EQ(read.enclosed_voxels_left_out, 0);
+  EXPECT_EQ(read.nose_nodes_uncarried, 3);
 }
 
 // Version 5 summaries (the moved bone carried the nose's nodes on it) still read so.
 TEST(SimulationSummary, AVersion5SummaryReadsWithTheNoseCarriedByTheBone) {
-  Json v5 = to_json(example_summary());
-  v5.erase("nose_nodes_uncarried");
-  v5["format_version"] = 5;
-  const SimulationSummary read = read_simulation_summary(v5, "test");
+  const SimulationSummary read = read_simulation_summary(as_version(5), "test");
   EXPECT_EQ(read.nose_nodes_uncarried, 0);
   EXPECT_EQ(read.bone_contact, "sliding");
 }
 
 // Version 4 summaries (tissue on moved bone tied to it) still read so.
 TEST(SimulationSummary, AVersion4SummaryReadsAsTiedToTheMovedBone) {
-  Json v4 = to_json(example_summary());
-  v4.erase("sliding_nodes");
-  v4.erase("bone_contact");
-  v4.erase("nose_nodes_uncarried");
-  v4["format_version"] = 4;
-  const SimulationSummary read = read_simulation_summary(v4, "test");
+  const SimulationSummary read = read_simulation_summary(as_version(4), "test");
   EXPECT_EQ(read.sliding_nodes, 0);
   EXPECT_EQ(read.bone_contact, "tied");
   EXPECT_EQ(read.nose_tets, 812);
@@ -120,15 +143,7 @@ TEST(SimulationSummary, AVersion4SummaryReadsAsTiedToTheMovedBone) {
 
 // Version 3 summaries (every model one homogeneous tissue) still read: no stiffer nose.
 TEST(SimulationSummary, AVersion3SummaryReadsAsOneHomogeneousTissue) {
-  Json v3 = to_json(example_summary());
-  v3.erase("nose_tets");
-  v3.erase("nose_stiffness");
-  v3.erase("model_fallback");
-  v3.erase("sliding_nodes");
-  v3.erase("bone_contact");
-  v3.erase("nose_nodes_uncarried");
-  v3["format_version"] = 3;
-  const SimulationSummary read = read_simulation_summary(v3, "test");
+  const SimulationSummary read = read_simulation_summary(as_version(3), "test");
   EXPECT_EQ(read.nose_tets, 0);
   EXPECT_EQ(read.nose_stiffness, 1);
   EXPECT_FALSE(read.model_fallback);
@@ -137,30 +152,14 @@ TEST(SimulationSummary, AVersion3SummaryReadsAsOneHomogeneousTissue) {
 
 // Version 2 summaries (before the profile's response was added) still read, without it.
 TEST(SimulationSummary, AVersion2SummaryReadsWithoutTheProfileResponse) {
-  Json v2 = to_json(example_summary());
-  v2.erase("profile_response");
-  v2.erase("boundary_moves");
-  v2.erase("nose_tets");
-  v2.erase("nose_stiffness");
-  v2.erase("model_fallback");
-  v2.erase("sliding_nodes");
-  v2.erase("bone_contact");
-  v2.erase("nose_nodes_uncarried");
-  v2["format_version"] = 2;
-  const SimulationSummary read = read_simulation_summary(v2, "test");
+  const SimulationSummary read = read_simulation_summary(as_version(2), "test");
   EXPECT_FALSE(read.profile_response);
   EXPECT_EQ(read.soft_landmarks.size(), 2u);
 }
 
 // Version 1 summaries (before the report's facts were added) still read, without those facts.
 TEST(SimulationSummary, AVersion1SummaryReadsWithoutTheReportFacts) {
-  Json v1 = to_json(example_summary());
-  for (const char* key :
-       {"plan_text", "meshing_attempts", "mean_aspect_ratio", "soft_landmarks", "profile_response", "boundary_moves",
-        "nose_tets", "nose_stiffness", "model_fallback", "sliding_nodes", "bone_contact", "nose_nodes_uncarried"})
-    v1.erase(key);
-  v1["format_version"] = 1;
-  const SimulationSummary read = read_simulation_summary(v1, "test");
+  const SimulationSummary read = read_simulation_summary(as_version(1), "test");
   EXPECT_EQ(read.format_version, 1);
   EXPECT_TRUE(read.soft_landmarks.empty());
   EXPECT_EQ(read.tetrahedra, 41234);
@@ -200,8 +199,10 @@ TEST(SimulationSummary, DamageIsAnErrorNamingTheKey) {
   EXPECT_EQ(failure([](Json& j) { j.erase("sliding_nodes"); }), "sim/simulation.json: sliding_nodes: missing");
   EXPECT_EQ(failure([](Json& j) { j.erase("nose_nodes_uncarried"); }),
             "sim/simulation.json: nose_nodes_uncarried: missing");
-  EXPECT_EQ(failure([](Json& j) { j["format_version"] = 7; }),
-            "sim/simulation.json: format_version: is 7, newer than this program reads (6): update maxillo");
+  EXPECT_EQ(failure([](Json& j) { j.erase("squeezed_nodes_freed"); }),
+            "sim/simulation.json: squeezed_nodes_freed: missing");
+  EXPECT_EQ(failure([](Json& j) { j["format_version"] = 8; }),
+            "sim/simulation.json: format_version: is 8, newer than this program reads (7): update maxillo");
 }
 
 }  // namespace

@@ -79,6 +79,20 @@ TEST(SoftTissueSection, SaysHowTheTissueFollowsTheMovedBone) {
   stored.summary.sliding_nodes = 321;
   EXPECT_EQ(fact(soft_tissue_section(stored), "Tissue on moved bone").rfind("slides on it", 0), 0u);
   EXPECT_NE(fact(soft_tissue_section(stored), "Nodes").find("321 sliding on it"), std::string::npos);
+  EXPECT_EQ(fact(soft_tissue_section(stored), "Tissue on moved bone").find("pinched"), std::string::npos);
+  stored.summary.squeezed_nodes_freed = 74;
+  EXPECT_NE(fact(soft_tissue_section(stored), "Tissue on moved bone")
+                .find("; 74 nodes pinched between moved and unmoved bone are left free"),
+            std::string::npos);
+}
+
+TEST(SoftTissueSection, SaysWhenTissueShutInByBoneWasLeftOut) {
+  auto stored = stored_prediction(2, 2);
+  EXPECT_EQ(fact(soft_tissue_section(stored), "Tissues").find("shut in"), std::string::npos);
+  stored.summary.enclosed_voxels_left_out = 64163;
+  EXPECT_EQ(fact(soft_tissue_section(stored), "Tissues"),
+            "one homogeneous soft tissue; the soft tissue shut in by bone within the region (the brain's base) is "
+            "left out");
 }
 
 TEST(SoftTissueSection, AModelThatDidNotRunIsNamedWithWhy) {

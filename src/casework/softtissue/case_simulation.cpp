@@ -107,6 +107,8 @@ records::SimulationSummary summarise(const SimulationResult& result, const Simul
   summary.iterations = p.iterations;
   summary.nose_tets = p.nose_tets;
   summary.nose_nodes_uncarried = p.nose_nodes_uncarried;
+  summary.squeezed_nodes_freed = p.squeezed_nodes_freed;
+  summary.enclosed_voxels_left_out = p.enclosed_voxels;
   summary.nose_stiffness = p.nose_stiffness;
   summary.max_skin_displacement_mm = p.skin_displacement.rows() ? p.skin_displacement.rowwise().norm().maxCoeff() : 0;
   summary.seconds = p.seconds;

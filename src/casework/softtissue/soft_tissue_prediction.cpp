@@ -15,6 +15,7 @@
 #include "core/sha256.h"
 #include "render/anatomical_views.h"
 #include "softtissue/shape_function_mapping.h"
+#include "softtissue/squeezed_nodes.h"
 
 namespace maxillo::casework {
 namespace {
@@ -192,6 +193,7 @@ SoftTissuePrediction predict_soft_tissue(const SoftTissueInput& input, const Sof
   prediction.lips = model.lips;
   prediction.lips_parted = model.lips_parted;
   prediction.nose_tets = model.nose_tets;
+  prediction.enclosed_voxels = model.enclosed_voxels;
   prediction.nose_stiffness = model.nose_tets > 0 ? options.nose_stiffness : 1;
   prediction.meshing = model.meshing;
   prediction.face_model_key = model.key;
@@ -204,6 +206,8 @@ SoftTissuePrediction predict_soft_tissue(const SoftTissueInput& input, const Sof
                                                options.attachment, model.nose_nodes);
   prediction.bc = std::move(attachment.bc);
   prediction.nose_nodes_uncarried = attachment.uncarried_nodes;
+  prediction.squeezed_nodes_freed = softtissue::release_squeezed_sliding_nodes(prediction.mesh, prediction.bc);
+  log::debug("sliding nodes pinched between moved and unmoved bone, left free: ", prediction.squeezed_nodes_freed);
   prediction.seconds.attachment = seconds_since(start);
   if (softtissue::count_nodes(prediction.bc, softtissue::NodeConstraint::kFixed) == 0)
     throw Error(ErrorCode::kProcessing, "soft tissue model",
@@ -239,6 +243,8 @@ SoftTissuePrediction resolve_soft_tissue(const SoftTissuePrediction& base, const
   prediction.lips_parted = base.lips_parted;
   prediction.nose_tets = base.nose_tets;
   prediction.nose_nodes_uncarried = base.nose_nodes_uncarried;
+  prediction.squeezed_nodes_freed = base.squeezed_nodes_freed;
+  prediction.enclosed_voxels = base.enclosed_voxels;
   prediction.nose_stiffness = base.nose_stiffness;
   prediction.region = base.region;
   auto start = Clock::now();

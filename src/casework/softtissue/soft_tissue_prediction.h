@@ -48,12 +48,11 @@ struct SoftTissueOptions {
   // The region's second piece, the nose's root and the glabella (default_face_region). Off by
   // default: the non-linear FEM does not converge on the phantom with it (issue 34).
   bool nose_root = false;
-  // The region's top at the brows, 8 mm above the nasion, instead of at the orbitales, with the
-  // brain's base it would hold left out (imaging/enclosed_tissue.h), so that the model's edge lies
-  // where the move has died out (issue 34). Off by default: with the cadaver's hand-placed
-  // landmarks of tests/e2e/cadaver_simulate_test.cpp the non-linear FEM stopped at 72 % of a 6 mm
-  // advancement (with the detected ones it converges).
-  bool top_at_brows = false;
+  // The region's top at the brows, 8 mm above the nasion, with the brain's base it holds left out
+  // (imaging/enclosed_tissue.h), so that the model's edge lies where the move has died out (issue
+  // 34); false: at the orbitales, as until 2026-11-30, where the cut held the nasal dorsum and
+  // the cheeks that still moved (0.5 mm on the cadaver at 6 mm).
+  bool top_at_brows = true;
   // The model parted between the lips at their cleft (casework/softtissue/lip_parting.h), so that they slide
   // on each other instead of being tied node to node. Off by default: the parting follows the
   // tets' faces, up to half a cell from the cleft, and on the phantom meshed at 5 mm it gave the
@@ -97,7 +96,10 @@ struct SoftTissuePrediction {
   softtissue::Parting lips_parted;
   int nose_tets = 0;             // the face model's tets of the cartilaginous nose
   int nose_nodes_uncarried = 0;  // its nodes touching moved bone, left free (nasal_cartilage.h)
-  double nose_stiffness = 1;     // their Young's modulus over the soft tissue's
+  int64_t enclosed_voxels = 0;   // FaceModel::enclosed_voxels of its model
+  int squeezed_nodes_freed =
+      0;  // sliding nodes pinched between moved and unmoved bone, left free (softtissue/squeezed_nodes.h)
+  double nose_stiffness = 1;  // their Young's modulus over the soft tissue's
   // Per skin vertex: +1 upper lip, -1 lower lip (bound to a tet parted there), else 0.
   std::vector<int8_t> skin_lip_side;
   // Per plane of the face region (RegionShape::planes() order, named by face_region_plane_names),

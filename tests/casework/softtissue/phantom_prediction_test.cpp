@@ -122,13 +122,13 @@ TEST(PhantomPrediction, AModelNotAtRestIsAnErrorNotAFace) {
   }
 }
 
-// A move the tissue cannot follow without turning a tetrahedron inside out (the maxilla 40 mm
+// A move the tissue cannot follow without turning a tetrahedron inside out (the maxilla 70 mm
 // forward, through the lip) is where the non-linear FEM stops, however short its load steps: the
 // linear FEM then predicts the same face model, and the fallback says what was asked for and why.
 TEST(PhantomPrediction, ANonlinearFemThatCannotFollowTheMoveFallsBackToTheLinearFem) {
   const auto& c = phantom_case();
   SoftTissueInput input{&c.phantom.labels, &c.cut.segments, &c.skin, c.phantom.landmarks, {}};
-  input.moves[uint8_t(planning::Segment::kMaxilla)] = Eigen::Translation3d(0, -40, 0);
+  input.moves[uint8_t(planning::Segment::kMaxilla)] = Eigen::Translation3d(0, -70, 0);
   SoftTissueOptions options;
   options.model = softtissue::SoftTissueModel::kNonlinearFem;
   options.meshing.cell_size_mm = 5;
