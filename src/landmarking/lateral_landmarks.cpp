@@ -120,7 +120,34 @@ RuleFinding find_porion(const HeadVolume& v, const Eigen::Vector3d& expected, in
 
 namespace {
 
-RuleFinding orbitale_across(const HeadVolume& v, const Eigen::Vector3d& expected, int side, double half_width) {
+// Where the rim, read from its lowest sample `lowest` in the direction `step` (+1 or -1 along
+// x), has risen to `level` for good: its first crossing of the level, or the crossing after a
+// second dip as deep as the bottom (within kSplitBottomMm) beyond it. Such a dip, 2-3 mm wide
+// beyond a low bump towards the rim's lateral end (where the lateral rim rises to the zygoma),
+// belongs to the bottom: with the first crossing the bottom's middle moved with the bump's height
+// by 1.7 mm from one start to the other, or the dip was read as the bottom, 7-9 mm away. nullopt
+// where the rim does not reach the level within the rim read.
+constexpr double kSplitBottomMm = 0.5;
+std::optional<double> rim_rise(const Profile& rim, int lowest, int step, double level) {
+  const double bottom = rim[size_t(lowest)].y;
+  std::optional<double> first, last;
+  bool above = false;
+  for (int i = lowest + step; i >= 0 && i < int(rim.size()); i += step) {
+    const ProfilePoint &at = rim[size_t(i)], &before = rim[size_t(i - step)];
+    if (!above && at.y >= level) {
+      const double crossing = before.z + (level - before.y) / (at.y - before.y) * (at.z - before.z);
+      if (!first) first = crossing;
+      last = crossing;
+      above = true;
+    } else if (above && at.y < bottom + kSplitBottomMm) {
+      above = false;  // a second dip of the bottom: the rise is still to come
+    }
+  }
+  return above ? last : first;
+}
+
+RuleFinding orbitale_across(const HeadVolume& v, const Eigen::Vector3d& expected, int side, double half_width,
+                            bool whole_ends) {
   // In each sagittal section across the orbit, rays from the front end on the face below the
   // rim and on the orbital floor above it; the floor lies far behind for a small rise, so where
   // the depth of the hit starts to grow faster than 2 mm per mm of height, the ray has passed the
@@ -128,7 +155,10 @@ RuleFinding orbitale_across(const HeadVolume& v, const Eigen::Vector3d& expected
   const std::string orbit = side > 0 ? "the left orbit" : "the right orbit";
   Profile rim;  // z holds x, y holds the rim's height; the rim's front is kept apart
   std::vector<double> rim_front;
-  for (double dx = -half_width; dx <= half_width + 0.01; dx += 0.5) {
+  // (With `whole_ends`, 1 mm beyond the searched width on either side: those columns smooth the
+  // width's ends, below.)
+  const double reach = whole_ends ? half_width + 1.0 : half_width;
+  for (double dx = -reach; dx <= reach + 0.01; dx += 0.5) {
     const double x = expected.x() + dx;
     Profile section = anterior_profile(v, expected.z() + 14, expected.z() - 12, expected.y() - 30, expected.y() + 40,
                                        kBoneHu, x, 0, 0.25);
@@ -148,25 +178,28 @@ RuleFinding orbitale_across(const HeadVolume& v, const Eigen::Vector3d& expected
   if (rim.size() < 8)
     return RuleFinding::absent(v.scanned(expected) ? "no inferior orbital rim in front of " + orbit
                                                    : orbit + " lies outside the scanned field");
-  // The rim's heights smoothed across x (5 columns, 2 mm): the sections' steps are 0.25 mm.
-  Profile smooth = rim;
-  for (size_t i = 2; i + 2 < rim.size(); ++i)
-    smooth[i].y = (rim[i - 2].y + rim[i - 1].y + rim[i].y + rim[i + 1].y + rim[i + 2].y) / 5;
+  // The rim's heights smoothed across x (5 columns, 2 mm): the sections' steps are 0.25 mm. With
+  // `whole_ends` the two columns at either end, beyond the searched width, have no smoothed
+  // height and are dropped: left raw, a one-column dip at the search's lateral end was read as
+  // the rim's bottom, 7 mm from its middle. Without, the ends stay raw (see find_orbitale).
+  Profile smooth;
+  std::vector<double> smooth_front;
+  for (size_t i = 0; i < rim.size(); ++i) {
+    const bool end = i < 2 || i + 2 >= rim.size();
+    if (end && whole_ends) continue;
+    smooth.push_back(
+        end ? rim[i]
+            : ProfilePoint{rim[i].z, (rim[i - 2].y + rim[i - 1].y + rim[i].y + rim[i + 1].y + rim[i + 2].y) / 5, 0});
+    smooth_front.push_back(rim_front[i]);
+  }
   rim = smooth;
+  rim_front = smooth_front;
   const int lowest = most_anterior(rim);  // smallest "y": the lowest rim height
   // The rim's bottom is flat (an orbit's outline is close to an ellipse), so its lowest sample
   // says little about where across the orbit it lies: the bottom is placed midway between the
   // two places where the rim has risen 1.5 mm above it, and its height fitted there.
   const double level = rim[size_t(lowest)].y + 1.5;
-  std::optional<double> medial, lateral;
-  for (int i = lowest; i > 0 && !medial; --i)
-    if (rim[size_t(i - 1)].y >= level)
-      medial = rim[size_t(i)].z + (level - rim[size_t(i)].y) / (rim[size_t(i - 1)].y - rim[size_t(i)].y) *
-                                      (rim[size_t(i - 1)].z - rim[size_t(i)].z);
-  for (int i = lowest; i + 1 < int(rim.size()) && !lateral; ++i)
-    if (rim[size_t(i + 1)].y >= level)
-      lateral = rim[size_t(i)].z + (level - rim[size_t(i)].y) / (rim[size_t(i + 1)].y - rim[size_t(i)].y) *
-                                       (rim[size_t(i + 1)].z - rim[size_t(i)].z);
+  const std::optional<double> medial = rim_rise(rim, lowest, -1, level), lateral = rim_rise(rim, lowest, +1, level);
   const double x = medial && lateral ? (*medial + *lateral) / 2 : rim[size_t(lowest)].z;
   int nearest = lowest;
   for (int i = 0; i < int(rim.size()); ++i)
@@ -195,9 +228,10 @@ RuleFinding unless_the_rim_is_cut(const HeadVolume& v, RuleFinding found) {
 }  // namespace
 
 RuleFinding find_orbitale(const HeadVolume& v, const Eigen::Vector3d& expected, int side, OrbitSearch search) {
-  RuleFinding narrow = unless_the_rim_is_cut(v, orbitale_across(v, expected, side, kOrbitHalfWidthMm));
+  const bool whole_ends = search == OrbitSearch::kWidening;
+  RuleFinding narrow = unless_the_rim_is_cut(v, orbitale_across(v, expected, side, kOrbitHalfWidthMm, whole_ends));
   if (search == OrbitSearch::kNarrow || !narrow.position || narrow.evidence >= 1) return narrow;
-  RuleFinding wide = unless_the_rim_is_cut(v, orbitale_across(v, expected, side, kWideOrbitHalfWidthMm));
+  RuleFinding wide = unless_the_rim_is_cut(v, orbitale_across(v, expected, side, kWideOrbitHalfWidthMm, whole_ends));
   return wide.position && wide.evidence >= 1 ? wide : narrow;
 }
 

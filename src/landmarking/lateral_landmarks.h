@@ -23,7 +23,10 @@ RuleFinding find_porion(const HeadVolume& v, const Eigen::Vector3d& expected, in
 // kWidening: where the edge's bottom does not rise on both sides within those (a head larger
 // than its frame's size says), across 40 mm too, taken when it rises on both sides there. Only
 // for the landmark read in the head frame: the frames' own searches keep the narrow one, as a
-// wider search moves the cadaver head's split rims, and its Frankfort frame with them.
+// wider search moves the cadaver head's split rims, and its Frankfort frame with them. The
+// landmark's search also reads the rim 1 mm beyond its width, so that the width's ends are
+// smoothed like the rest; the frames' searches keep their raw ends (BENCH-024's pitch search
+// found the right rim only at its window's end, and read 1 mm wider took another).
 enum class OrbitSearch { kNarrow, kWidening };
 RuleFinding find_orbitale(const HeadVolume& v, const Eigen::Vector3d& expected, int side,
                           OrbitSearch search = OrbitSearch::kNarrow);
