@@ -4,7 +4,7 @@
 #include <dcmtk/dcmdata/dcdeftag.h>
 #include <dcmtk/dcmdata/dcuid.h>
 #include <dcmtk/dcmnet/diutil.h>
-#include <dcmtk/dcmnet/scppool.h>
+#include <dcmtk/dcmnet/scpthrd.h>
 
 #include <algorithm>
 #include <chrono>
@@ -23,10 +23,10 @@
 #include "archive/instance_source.h"
 #include "core/error.h"
 #include "core/log.h"
-#include "net/no_nagle_delay.h"
+#include "net/association_pool.h"
 #include "net/group_commit.h"
+#include "net/no_nagle_delay.h"
 #include "net/pending_studies.h"
-#include "net/receive_failure_log.h"
 #include "net/stable_studies.h"
 #include "net/stable_study_action.h"
 #include "net/storage_contexts.h"
@@ -191,30 +191,6 @@ class ArchivingSCP : public DcmThreadSCP {
   int64_t stored_ = 0, already_ = 0, failed_ = 0;
 };
 
-// DcmSCPPool constructs its SCPs without arguments; this pool hands each the shared state.
-class ArchivingPool : public DcmBaseSCPPool {
- public:
-  explicit ArchivingPool(StorageServer::Shared& shared) : shared_(shared) {}
-
- protected:
-  class Worker : public DcmBaseSCPWorker, private ArchivingSCP {
-   public:
-    Worker(DcmBaseSCPPool& pool, StorageServer::Shared& shared) : DcmBaseSCPWorker(pool), ArchivingSCP(shared) {}
-    OFCondition setSharedConfig(const DcmSharedSCPConfig& config) override {
-      return ArchivingSCP::setSharedConfig(config);
-    }
-    OFBool busy() override { return ArchivingSCP::isConnected(); }
-
-   protected:
-    OFCondition workerListen(T_ASC_Association* const association) override { return ArchivingSCP::run(association); }
-  };
-
-  DcmBaseSCPWorker* createSCPWorker() override { return new Worker(*this, shared_); }
-
- private:
-  StorageServer::Shared& shared_;
-};
-
 void configure(DcmSCPConfig& config, const StorageServerOptions& options) {
   no_nagle_delay();
   config.setAETitle(options.ae_title.c_str());
@@ -226,7 +202,7 @@ void configure(DcmSCPConfig& config, const StorageServerOptions& options) {
   config.setConnectionTimeout(1);
   config.setDIMSEBlockingMode(DIMSE_NONBLOCKING);
   config.setDIMSETimeout(Uint32(options.timeout_seconds));
-  // DCMTK's pool reads each association request in its listening thread, waiting up to the ACSE
+  // The listening loop (net/association_pool.h) reads each association request itself, waiting up to the ACSE
   // timeout for the first PDU: a peer that connects and says nothing would hold up every other
   // caller that long. A real peer sends its request as soon as it has connected, and the other
   // association-level exchanges (acknowledge, release) are as quick, so this bound is short.
@@ -313,19 +289,10 @@ StorageServer::~StorageServer() = default;
 
 void StorageServer::run(const std::function<void()>& on_listening) {
   require_port_free(shared_->options.port);
-  ArchivingPool pool(*shared_);
-  configure(pool.getConfig(), shared_->options);
-  if (shared_->tls) pool.getConfig().setTransportLayer(shared_->tls.get());
-  pool.setMaxThreads(Uint16(shared_->options.max_associations));
-  // DcmBaseSCPPool::listen() starts by setting its mode to "listen", so a stop requested just
-  // before would be lost: it is passed on until the listening loop has ended.
+  DcmSCPConfig config;
+  configure(config, shared_->options);
+  if (shared_->tls) config.setTransportLayer(shared_->tls.get());
   std::atomic<bool> listening{true};
-  std::thread pass_stop_on([&] {
-    while (listening) {
-      if (shared_->stop_requested) pool.stopAfterCurrentAssociations();
-      std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    }
-  });
   std::thread stable_actions([&] {
     if (!shared_->stable) return;
     while (listening) {
@@ -341,16 +308,21 @@ void StorageServer::run(const std::function<void()>& on_listening) {
       for (int tick = 0; tick < 10 && listening; ++tick) std::this_thread::sleep_for(std::chrono::milliseconds(100));
     }
   });
+  const auto serve_association = [this](T_ASC_Association* association, const DcmSharedSCPConfig& shared_config) {
+    ArchivingSCP scp(*shared_);
+    scp.setSharedConfig(shared_config);
+    scp.run(association);
+  };
   // A connection that fails before its association (a failed TLS handshake) is logged and
   // counted as a refusal, like a refused AE title.
-  const ReceiveFailureLog receive_failures([&](const std::string& reason) {
+  const auto receive_failure = [this](const std::string& reason) {
     log::warning("serve: a connection failed before its association: ", reason);
     ++shared_->refused;
-  });
+  };
+  AssociationPool pool(config, shared_->options.max_associations, serve_association, receive_failure);
   if (on_listening) on_listening();
-  const OFCondition result = pool.listen();
+  const OFCondition result = pool.listen(shared_->stop_requested);
   listening = false;
-  pass_stop_on.join();
   stable_actions.join();
   if (result.bad())
     throw Error(ErrorCode::kWriteFailed, "port " + std::to_string(shared_->options.port),

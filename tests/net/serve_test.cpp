@@ -124,13 +124,13 @@ TEST_F(Serve, AnswersAnEchoFromAnAllowedPeerAndRefusesAStranger) {
   // unit tests of is_allowed; here, our own client against our own server.
   const std::string peer = "MAXILLO@127.0.0.1:" + std::to_string(port_);
   const auto ours = testing::run_maxillo({"echo", peer, "--aet", "ECHOSCU"}, folder_.path());
-  EXPECT_EQ(ours.exit_code, 0) << ours.err;
+  EXPECT_EQ(ours.exit_code, 0) << ours.err << server_errors();
   EXPECT_NE(ours.out.find("answered in"), std::string::npos);
   const auto refused = testing::run_maxillo({"echo", peer, "--aet", "STRANGER"}, folder_.path());
   EXPECT_EQ(refused.exit_code, exit_code_for(ErrorCode::kNetwork));
   EXPECT_NE(refused.err.find("association failed"), std::string::npos) << refused.err;
   EXPECT_NE(server_errors().find("'STRANGER' from 127.0.0.1 is not allowed"), std::string::npos) << server_errors();
-  EXPECT_EQ(stop_server(), 0);
+  EXPECT_EQ(stop_server(), 0) << server_errors();
 }
 
 TEST_F(Serve, ArchivesWhatFourAssociationsPushOnceAndByteExact) {
