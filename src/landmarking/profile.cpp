@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <Eigen/Dense>
 
@@ -77,22 +78,57 @@ std::optional<Eigen::Vector3d> first_edge(const HeadVolume& v, const Eigen::Vect
   return from + hi * direction;
 }
 
+namespace {
+
+// The tissue's edge seen from the front on each column of one row (x from centre_x - half_width
+// to centre_x + half_width in 0.5 mm steps, one column when half_width is 0); nullopt where a
+// column meets no tissue.
+std::vector<std::optional<ProfilePoint>> row_edges(const HeadVolume& v, double z, double y_from, double y_to,
+                                                   double threshold, double centre_x, double half_width) {
+  const int columns = half_width > 0 ? int(std::ceil(half_width / 0.5)) : 0;
+  std::vector<std::optional<ProfilePoint>> edges;
+  for (int c = -columns; c <= columns; ++c) {
+    const double x = centre_x + (columns ? half_width * c / columns : 0);
+    const auto hit = first_edge(v, {x, y_from, z}, {0, 1, 0}, y_to - y_from, threshold);
+    edges.push_back(hit ? std::optional<ProfilePoint>(ProfilePoint{z, hit->y(), x}) : std::nullopt);
+  }
+  return edges;
+}
+
+// The most anterior of the edges whose column lies within `reach` of x (all when reach is infinite).
+std::optional<ProfilePoint> most_anterior_edge(const std::vector<std::optional<ProfilePoint>>& edges, double x,
+                                               double reach) {
+  std::optional<ProfilePoint> best;
+  for (const auto& edge : edges)
+    if (edge && std::abs(edge->x - x) <= reach && (!best || edge->y < best->y)) best = edge;
+  return best;
+}
+
+}  // namespace
+
 Profile anterior_profile(const HeadVolume& v, double z_top, double z_bottom, double y_from, double y_to,
                          double threshold, double centre_x, double half_width, double z_step) {
   Profile profile;
   const int rows = int(std::floor((z_top - z_bottom) / z_step)) + 1;
-  const int columns = half_width > 0 ? int(std::ceil(half_width / 0.5)) : 0;
   for (int r = 0; r < rows; ++r) {
-    const double z = z_top - r * z_step;
-    std::optional<ProfilePoint> best;
-    for (int c = -columns; c <= columns; ++c) {
-      const double x = centre_x + (columns ? half_width * c / columns : 0);
-      const auto hit = first_edge(v, {x, y_from, z}, {0, 1, 0}, y_to - y_from, threshold);
-      if (hit && (!best || hit->y() < best->y)) best = ProfilePoint{z, hit->y(), x};
-    }
-    if (best) profile.push_back(*best);
+    const auto edges = row_edges(v, z_top - r * z_step, y_from, y_to, threshold, centre_x, half_width);
+    if (const auto best = most_anterior_edge(edges, centre_x, std::numeric_limits<double>::infinity()))
+      profile.push_back(*best);
   }
   return profile;
+}
+
+std::vector<Profile> column_profiles(const HeadVolume& v, double z_top, double z_bottom, double y_from, double y_to,
+                                     double threshold, double centre_x, double half_width, double z_step) {
+  std::vector<Profile> columns;
+  const int rows = int(std::floor((z_top - z_bottom) / z_step)) + 1;
+  for (int r = 0; r < rows; ++r) {
+    const auto edges = row_edges(v, z_top - r * z_step, y_from, y_to, threshold, centre_x, half_width);
+    columns.resize(edges.size());
+    for (size_t c = 0; c < edges.size(); ++c)
+      if (edges[c]) columns[c].push_back(*edges[c]);
+  }
+  return columns;
 }
 
 std::vector<double> depth_behind_hull(const Profile& profile) {

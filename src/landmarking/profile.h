@@ -43,6 +43,12 @@ using Profile = std::vector<ProfilePoint>;
 Profile anterior_profile(const HeadVolume& v, double z_top, double z_bottom, double y_from, double y_to,
                          double threshold, double centre_x = 0, double half_width = 0, double z_step = 0.25);
 
+// The same slab's columns each seen on their own: one profile per column (x from centre_x -
+// half_width to centre_x + half_width in 0.5 mm steps), where anterior_profile keeps the most
+// anterior of them on each row.
+std::vector<Profile> column_profiles(const HeadVolume& v, double z_top, double z_bottom, double y_from, double y_to,
+                                     double threshold, double centre_x, double half_width, double z_step = 0.25);
+
 // Depth (mm, >= 0) of each profile point behind the profile's anterior convex hull in the (y, z)
 // plane: 0 on the hull's vertices, largest at the bottom of a concavity.
 std::vector<double> depth_behind_hull(const Profile& profile);
