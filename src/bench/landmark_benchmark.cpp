@@ -123,6 +123,18 @@ std::string worst_and_missed(const ScanRun& run) {
   return text;
 }
 
+// Each landmark of one scan: found or not, its error where it has a truth, flagged and why.
+Json scan_landmarks_json(const ScanRun& run) {
+  Json landmarks = Json::object();
+  for (const auto& [label, o] : run.landmarks) {
+    Json entry = {{"has_truth", o.has_truth}, {"detected", o.detected}, {"flagged", o.flagged}};
+    if (o.has_truth && o.detected) entry["error_mm"] = o.error_mm;
+    if (o.flagged) entry["flagged_for"] = o.flagged_for;
+    landmarks[label] = entry;
+  }
+  return landmarks;
+}
+
 }  // namespace
 
 std::vector<ScanRun> run_landmark_benchmark(const LandmarkBenchOptions& options) {
@@ -142,7 +154,8 @@ Json landmark_benchmark_json(const std::vector<ScanRun>& runs) {
                      {"variation", run.variation},
                      {"error", run.error},
                      {"seconds", run.seconds},
-                     {"peak_mb", double(run.peak_kb) / 1024}});
+                     {"peak_mb", double(run.peak_kb) / 1024},
+                     {"landmarks", scan_landmarks_json(run)}});
     seconds.push_back(run.seconds);
     peaks.push_back(double(run.peak_kb) / 1024);
   }

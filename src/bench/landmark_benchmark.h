@@ -12,7 +12,7 @@
 // detection), flagged, or invented (a detection with no truth); beside them the P95 of the
 // unflagged detections alone, those a plan uses without a person's confirmation. Per scan: the detection's wall
 // time and the process's resident peak while it ran (the scan's own voxels included), with the
-// voxel count. Targets (issue 28): mean <= 1.0 mm, every landmark's P95 <= 2.0 mm, <= 20 s and
+// voxel count; in the JSON each landmark's outcome per scan as well. Targets (issue 28): mean <= 1.0 mm, every landmark's P95 <= 2.0 mm, <= 20 s and
 // <= 1.5 GB per 512 x 512 x 330 scan on two cores.
 #include <map>
 #include <optional>

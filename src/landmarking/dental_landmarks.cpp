@@ -132,6 +132,37 @@ struct ToothSpan {
   double mass = 0;          // the crown's largest smoothed mass per row: its width across the arch
 };
 
+// The largest of values[from, to).
+double largest_in(const std::vector<double>& values, int from, int to) {
+  return *std::max_element(values.begin() + from, values.begin() + to);
+}
+
+// A run of crown rows longer than any tooth (kMolarMaxLengthMm) holds two or more: at 1 mm voxels
+// a premolar's contact with the molar behind it keeps 87 % of the premolar's mass (a bench
+// patient's lower first molar merged with both premolars into one 21.5 mm crown and was missed).
+// It is split at its most marked narrowing (the lowest ratio of a local minimum's mass to the
+// smaller of the highest masses on either side), and the parts in turn, until each fits a tooth
+// or holds no narrowing.
+void split_if_longer_than_a_tooth(const std::vector<double>& smooth, const ToothSpan& run,
+                                  std::vector<ToothSpan>& teeth) {
+  int contact = -1;
+  double sharpest = 1;
+  if ((run.back - run.front) * kStep > kMolarMaxLengthMm)
+    for (int c = run.front + 2; c + 2 < run.back; ++c) {
+      const double here = smooth[size_t(c)];
+      if (here > smooth[size_t(c - 1)] || here > smooth[size_t(c + 1)]) continue;
+      if (const double ratio = here / std::min(largest_in(smooth, run.front, c), largest_in(smooth, c + 1, run.back));
+          ratio < sharpest)
+        sharpest = ratio, contact = c;
+    }
+  if (contact < 0) {
+    teeth.push_back(run);
+    return;
+  }
+  split_if_longer_than_a_tooth(smooth, {run.front, contact, largest_in(smooth, run.front, contact)}, teeth);
+  split_if_longer_than_a_tooth(smooth, {contact, run.back, largest_in(smooth, contact, run.back)}, teeth);
+}
+
 // The teeth along y of one arch: crown voxels 0.5-6 mm from the occlusal line on the arch's side,
 // per row, smoothed over three rows. Crowns are the runs of rows above a quarter of the peak; a
 // run splits where two crowns touch: at a row below 80 % of the highest rows on both sides of it
@@ -161,14 +192,13 @@ std::vector<ToothSpan> teeth_along_y(const DentalBox& box, const OcclusalLine& l
     for (int c = j + 2; c + 2 < end; ++c) {
       const double here = smooth[size_t(c)];
       if (here > smooth[size_t(c - 1)] || here > smooth[size_t(c + 1)]) continue;
-      const double before = *std::max_element(smooth.begin() + front, smooth.begin() + c);
-      const double after = *std::max_element(smooth.begin() + c + 1, smooth.begin() + end);
-      if (here < 0.8 * std::min(before, after)) {
-        teeth.push_back({front, c, before});
+      const double before = largest_in(smooth, front, c);
+      if (here < 0.8 * std::min(before, largest_in(smooth, c + 1, end))) {
+        split_if_longer_than_a_tooth(smooth, {front, c, before}, teeth);
         front = c;
       }
     }
-    teeth.push_back({front, end, *std::max_element(smooth.begin() + front, smooth.begin() + end)});
+    split_if_longer_than_a_tooth(smooth, {front, end, largest_in(smooth, front, end)}, teeth);
     j = end;
   }
   return teeth;
@@ -203,26 +233,47 @@ std::optional<Eigen::Vector3d> mesiobuccal_cusp(const HeadVolume& v, const Denta
   return surface ? *surface : Eigen::Vector3d(x, y, line.at(y));
 }
 
-// The first molar: of the crowns with a molar's length and width, the one whose mesio-buccal cusp
-// (a quarter of its length behind its mesial face) lies nearest the template's. Premolars are
-// 6.5-7.5 mm long, and where two of them touch without a visible contact they make one crown of
-// a molar's length, but they are narrower across the arch (upper 9 mm, lower 7.5-8, against
-// 10.5-11.5 for the molars), so their mass per row stays below 88 % of the molars'; the canine,
-// where the arch turns, can pass for wide, but lies 10 mm and more in front of the first molar,
-// beyond the kMolarSearchMm allowed around the template. A crown cut by the box's front is
-// skipped (its length is unknown).
-const ToothSpan* first_molar(const DentalBox& box, const std::vector<ToothSpan>& teeth, double expected_cusp_y) {
+// The largest mass of the crowns of a tooth's length from `tooth` backwards: premolars are
+// narrower than the molars behind them, and the canine in front, where the arch turns across the
+// box, can pass for wider than any molar (a bench patient's upper first molar was refused beside
+// a canine 33 % wider).
+double widest_from(const std::vector<ToothSpan>& teeth, const ToothSpan& tooth) {
   double widest = 0;
-  for (const auto& t : teeth) widest = std::max(widest, t.mass);
-  const ToothSpan* nearest = nullptr;
+  for (const auto& t : teeth)
+    if (t.front >= tooth.front && (t.back - t.front) * kStep <= kMolarMaxLengthMm) widest = std::max(widest, t.mass);
+  return widest;
+}
+
+// A crown with a molar's length and width. Premolars are 6.5-7.5 mm long, and where two of
+// them touch without a visible contact they make one crown of a molar's length, but they are
+// narrower across the arch (upper 9 mm, lower 7.5-8, against 10.5-11.5 for the molars), so their
+// mass per row stays below 88 % of the molars' behind them. A crown cut by the box's front is
+// not one (its length is unknown).
+bool molar_shaped(const std::vector<ToothSpan>& teeth, const ToothSpan& t) {
+  const double length = (t.back - t.front) * kStep;
+  return t.front > 0 && length >= kMolarMinLengthMm && length <= kMolarMaxLengthMm &&
+         t.mass >= 0.88 * widest_from(teeth, t);
+}
+
+// The first molar: the front one of the molars standing in a row with the molar-shaped crown
+// whose mesio-buccal cusp (a quarter of its length behind its mesial face) lies nearest the
+// template's. The template alone can be a tooth off: a bench patient's upper first molar cusp
+// lay 8.5 mm in front of it and the second molar's 3 mm behind. The canine, where the arch
+// turns, can pass for wide, but lies 10 mm and more in front of the first molar, beyond the
+// kMolarSearchMm allowed around the template, with the premolars between.
+const ToothSpan* first_molar(const DentalBox& box, const std::vector<ToothSpan>& teeth, double expected_cusp_y) {
+  int nearest = -1;
   double nearest_mm = kMolarSearchMm;
-  for (const auto& t : teeth) {
-    const double length = (t.back - t.front) * kStep;
-    if (t.front == 0 || length < kMolarMinLengthMm || length > kMolarMaxLengthMm || t.mass < 0.88 * widest) continue;
-    const double apart = std::abs(box.y(t.front) + length / 4 - expected_cusp_y);
-    if (apart < nearest_mm) nearest = &t, nearest_mm = apart;
+  for (size_t i = 0; i < teeth.size(); ++i) {
+    const ToothSpan& t = teeth[i];
+    const double apart = std::abs(box.y(t.front) + (t.back - t.front) * kStep / 4 - expected_cusp_y);
+    if (molar_shaped(teeth, t) && apart < nearest_mm) nearest = int(i), nearest_mm = apart;
   }
-  return nearest;
+  if (nearest < 0) return nullptr;
+  while (nearest > 0 && teeth[size_t(nearest - 1)].back == teeth[size_t(nearest)].front &&
+         molar_shaped(teeth, teeth[size_t(nearest - 1)]))
+    --nearest;
+  return &teeth[size_t(nearest)];
 }
 
 }  // namespace

@@ -201,6 +201,10 @@ TEST(LandmarkBenchmark, FlaggedDetectionsCountInTheP95AndAreLeftOutOfTheUnflagge
   EXPECT_EQ(n["missed"].get<int>(), 1);
   EXPECT_EQ(n["invented"].get<int>(), 1);
   EXPECT_EQ(n["unflagged"].get<int>(), 0);
+  const Json& second_scan = figures["scans"][1]["landmarks"];  // each scan's own outcomes too
+  EXPECT_NEAR(second_scan["OrL"]["error_mm"].get<double>(), 11.0, 1e-9);
+  EXPECT_TRUE(second_scan["OrL"]["flagged"].get<bool>());
+  EXPECT_FALSE(second_scan["N"].contains("error_mm"));  // invented: no truth to measure against
   const std::string text = landmark_benchmark_text(runs);
   EXPECT_NE(text.find("unflagged P95"), std::string::npos) << text;
   EXPECT_NE(text.find("1.00 (1)"), std::string::npos) << text;
