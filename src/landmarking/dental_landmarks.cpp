@@ -17,9 +17,9 @@ constexpr double kSurfaceHu = 1400;  // halfway between enamel and the soft tiss
 constexpr double kMolarMinLengthMm = 8.5;
 constexpr double kMolarMaxLengthMm = 12.5;  // longer: two teeth whose contact did not show
 // How far a first molar's cusp may lie from the template's: a varied phantom's lower molar lay
-// 4.4 mm from it, and the second start (landmark_checks.h) moves the template 2 mm more; the
+// 6.3 mm from it, and the second start (landmark_checks.h) moves the template 2 mm more; the
 // canine lies 10 mm and more in front of the first molar, the second molar as far behind.
-constexpr double kMolarSearchMm = 8;
+constexpr double kMolarSearchMm = 10;
 
 // Crown voxels of a box beside the arch on one side, counted per height and per position along
 // y (the posterior teeth stand nearly in a line along y).

@@ -1,6 +1,7 @@
 #pragma once
 // The checks every detected landmark set goes through, as the issue of automatic landmarks asks:
-//   - bilateral pairs mirror each other about the midsagittal plane (within 4 mm);
+//   - bilateral pairs mirror each other about the midsagittal plane (within 5 mm; the lower first
+//     molars about the mandible's own midline, which a deviated chin carries to one side);
 //   - the order the anatomy imposes (N anterior to S, ANS anterior to PNS, Me below Pog, B above
 //     Pog, A below ANS, Or in front of Po, the soft-tissue points in front of their bone);
 //   - distances and angles within published adult ranges, widened (S-N, ANS-Me, ANS-PNS, SNA,

@@ -48,6 +48,36 @@ TEST(LandmarkChecks, ALopsidedPairFailsItsMirrorCheck) {
   EXPECT_TRUE(failed(checks, "PoL").empty());
 }
 
+// A chin deviated 3 mm to the left carries the lower arch with it: the lower molars, 6 mm from
+// each other's mirror image about the skull's plane, mirror about the mandible's midline. A lower
+// molar off on its own is still caught.
+TEST(LandmarkChecks, TheLowerMolarsMirrorAboutTheMandiblesMidline) {
+  FramePoints points = template_head();
+  for (const char* label : {"L6R", "L6L", "L1", "B", "Pog", "Me"}) points[label].x() += 3;
+  auto checks = check_landmarks(points, 1.0);
+  EXPECT_TRUE(failed(checks, "L6R").empty()) << failed(checks, "L6R").front();
+  EXPECT_TRUE(failed(checks, "L6L").empty()) << failed(checks, "L6L").front();
+  // The same molars with the mandible's midline left where the skull's is: 6 mm apart.
+  for (const char* label : {"L1", "B", "Pog", "Me"}) points[label].x() -= 3;
+  checks = check_landmarks(points, 1.0);
+  ASSERT_EQ(failed(checks, "L6L").size(), 1u);
+  EXPECT_NE(failed(checks, "L6L").front().find("mirror"), std::string::npos);
+  // One molar 6 mm behind its mirror image about a deviated mandible's midline.
+  points = template_head();
+  for (const char* label : {"L6R", "L6L", "L1", "B", "Pog", "Me"}) points[label].x() += 3;
+  points["L6L"].y() += 6;
+  checks = check_landmarks(points, 1.0);
+  ASSERT_EQ(failed(checks, "L6R").size(), 1u);
+  EXPECT_NE(failed(checks, "L6R").front().find("mandible's midline"), std::string::npos);
+  // A field cut above the chin: no B, Pog or Me. L1, the right central incisor half a crown's
+  // width off the midline, does not stand for it; the molars mirror about the skull's plane.
+  points = template_head();
+  for (const char* label : {"B", "Pog", "Me"}) points.erase(label);
+  points["L1"].x() -= 2.6;
+  checks = check_landmarks(points, 1.0);
+  EXPECT_TRUE(failed(checks, "L6R").empty()) << failed(checks, "L6R").front();
+}
+
 TEST(LandmarkChecks, AnOrderTheAnatomyForbidsIsNamed) {
   FramePoints points = template_head();
   points["Me"].z() = points["Pog"].z() + 3;  // menton above pogonion

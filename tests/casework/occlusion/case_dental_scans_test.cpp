@@ -308,11 +308,11 @@ TEST(AugmentedModel, TheCrownsAreTheScansAndTheSolidIsClosed) {
         (teeth.of(other).vertices.colwise().mean() - teeth.of(arch).vertices.colwise().mean()).transpose().normalized();
     std::vector<double> to_model, to_ct;
     for (Eigen::Index f = 0; f < truth.face_count(); f += 5) {
-      const Eigen::Vector3d a = truth.vertices.row(truth.faces(f, 0)).transpose(),
-                            b = truth.vertices.row(truth.faces(f, 1)).transpose(),
-                            c = truth.vertices.row(truth.faces(f, 2)).transpose();
-      if ((b - a).cross(c - a).normalized().dot(towards_other) < 0.7) continue;
-      const Eigen::Vector3d p = (a + b + c) / 3;
+      const Eigen::Vector3d p0 = truth.vertices.row(truth.faces(f, 0)).transpose(),
+                            p1 = truth.vertices.row(truth.faces(f, 1)).transpose(),
+                            p2 = truth.vertices.row(truth.faces(f, 2)).transpose();
+      if ((p1 - p0).cross(p2 - p0).normalized().dot(towards_other) < 0.7) continue;
+      const Eigen::Vector3d p = (p0 + p1 + p2) / 3;
       to_ct.push_back(ct_surface.nearest(p, 5).distance);
       to_model.push_back(model.nearest(p, 5).distance);
     }
