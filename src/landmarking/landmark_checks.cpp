@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <optional>
 
 namespace maxillo::landmarking {
 namespace {
@@ -48,15 +49,16 @@ class Checker {
     std::snprintf(detail, sizeof detail, "%.1f %s (adult range taken as %.0f to %.0f)", value, unit, lo, hi);
     add(labels, {std::string("range: ") + name, value >= lo && value <= hi, detail});
   }
-  // The pair mirrored about the sagittal plane at `midline_x` (the frame's x = 0 is the skull's).
-  void mirror(const char* pair, double midline_x = 0) {
+  // The pair mirrored about the sagittal plane at `midline_x` (the frame's x = 0 is the skull's
+  // midplane), `midline` naming another plane in the check's detail.
+  void mirror(const char* pair, double midline_x = 0, const char* midline = nullptr) {
     const std::string r = std::string(pair) + "R", l = std::string(pair) + "L";
     if (!points_.count(r) || !points_.count(l)) return;
     Eigen::Vector3d mirrored = points_.at(l);
     mirrored.x() = 2 * midline_x - mirrored.x();
     const double gap = (mirrored - points_.at(r)).norm();
     std::string detail = figure("%.1f mm from the mirror image", gap);
-    if (midline_x != 0) detail += figure(" about the mandible's midline, %.1f mm from the skull's", midline_x);
+    if (midline) detail += " about " + std::string(midline) + figure(", %.1f mm from the skull's", midline_x);
     add({r.c_str(), l.c_str()}, {"mirror", gap <= kMirrorToleranceMm, detail});
   }
   double scale() const { return scale_; }
@@ -69,22 +71,26 @@ class Checker {
 };
 
 // Where the mandible's midline lies across the skull's (mean x of the mandible's midline points
-// found; 0 when none is). A chin deviated to one side carries the lower arch with it: the lower
+// found; none when none is). A chin deviated to one side carries the lower arch with it: the lower
 // molars mirror about the mandible's own midline, not the skull's, or every asymmetric mandible
 // would flag correct molars. Not L1: it is the right central incisor, half a crown's width off
 // the midline (a cone-beam field cut above the chin left L1 alone, and it flagged good molars).
-double mandibular_midline_x(const Checker& c) {
+std::optional<double> mandibular_midline_x(const Checker& c) {
   double sum = 0;
   int count = 0;
   for (const char* label : {"B", "Pog", "Me"})
     if (c.has({label})) sum += c.at(label).x(), ++count;
-  return count ? sum / count : 0;
+  if (count == 0) return std::nullopt;
+  return sum / count;
 }
 
 void mirrored_pairs(Checker& c) {
   // The rami (Go, Ar) stay in place when the chin deviates: they mirror about the skull's plane.
   for (const char* pair : {"Or", "Po", "Go", "Ar", "U6"}) c.mirror(pair);
-  c.mirror("L6", mandibular_midline_x(c));
+  if (const auto midline_x = mandibular_midline_x(c))
+    c.mirror("L6", *midline_x, "the mandible's midline");
+  else
+    c.mirror("L6");
 }
 
 void anatomical_order(Checker& c) {
