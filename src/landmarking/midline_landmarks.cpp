@@ -214,6 +214,18 @@ double symphysis_middle_x(const HeadVolume& v, const ProfilePoint& pog) {
   return std::abs(middles[1]) < kChinMiddleToleranceMm ? 0 : middles[1];
 }
 
+// Whether the field's floor cuts the symphysis below a chin point `pog`: a sample inside the
+// symphysis, kSymphysisBehindFrontMm behind its front, unscanned between Pog and the expected
+// menton's height (less kBelowMentonMm). A cone-beam field cut through the chin leaves the
+// alveolar bulge over the incisors' roots as the lowest forward extremum, which reads as a
+// chin; without its lower border it cannot be told from one, so it is not reported.
+constexpr double kSymphysisBehindFrontMm = 5, kBelowMentonMm = 5;
+bool chin_cut_by_the_field(const HeadVolume& v, const Eigen::Vector3d& pog, double expected_menton_z) {
+  for (double z = pog.z(); z >= expected_menton_z - kBelowMentonMm; z -= v.spacing())
+    if (!v.scanned({pog.x(), pog.y() + kSymphysisBehindFrontMm, z})) return true;
+  return false;
+}
+
 constexpr double kAlveolarGapMm = 1;
 
 // The alveolar front read upwards (`upwards`), cut at infradentale: its most anterior point above
@@ -325,6 +337,11 @@ void find_symphysis(const HeadVolume& v, double scale, Findings& found) {
     if (auto hit = first_edge(v, {middle, y, me.z() - 25}, {0, 0, 1}, 35, kBoneHu))
       underside.push_back({y, hit->z(), middle});
   if (underside.size() < 5) {
+    if (chin_cut_by_the_field(v, {middle, pog_point.y, pog_point.z}, me.z())) {
+      for (const char* label : {"Pog", "B", "Me", "Gn"})
+        found[label] = RuleFinding::absent("the chin's lower border lies outside the scanned field");
+      return;
+    }
     found["Me"] = found["Gn"] = RuleFinding::absent("no lower border of the symphysis");
     return;
   }

@@ -417,6 +417,27 @@ TEST(PhantomLandmarks, AConeBeamFieldCutAboveTheSellaAndThroughAnEarIsRead) {
   }
 }
 
+// A cone-beam field whose floor cuts through the symphysis above the chin (BENCH-015 of the
+// bench, at its 0.5 mm; its floor lies above B too): the lowest forward extremum left on the
+// bone's front, 11.6 mm below L1, was reported as Pog (so were BENCH-012's and BENCH-030's,
+// 7.6-7.8 mm above their B). Without the chin's lower border it cannot be told from the chin:
+// Pog, Me and Gn are absent, naming the field.
+TEST(PhantomLandmarks, AChinCutByTheConeBeamFieldsFloorIsNotInvented) {
+  const Phantom phantom = make_phantom(varied_phantom_spec("BENCH-015", ScannerKind::kConeBeam, 0.5));
+  ASSERT_FALSE(find_landmark(phantom.landmarks, "Pog")) << "the premise: the chin below the field";
+  const LandmarkDetection found = detect_landmarks(phantom.ct, "BENCH-015");
+  for (const char* label : {"Pog", "Me", "Gn"}) {
+    const auto& l = *found.find(label);
+    EXPECT_FALSE(l.position) << label << " invented";
+    EXPECT_NE(l.note.find("outside the scanned field"), std::string::npos) << label << ": " << l.note;
+  }
+  for (const auto& l : found.landmarks) {
+    if (!find_landmark(phantom.landmarks, l.label)) {
+      EXPECT_FALSE(l.position) << l.label << " invented";
+    }
+  }
+}
+
 // The same scan gives the same bits run after run, whatever else the machine is doing (a busy
 // thread competes for the cores): every sum is split into fixed parts joined in order.
 TEST(PhantomLandmarks, TheSameBitsWhateverTheLoad) {
