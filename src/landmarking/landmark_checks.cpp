@@ -6,6 +6,8 @@
 #include <numbers>
 #include <optional>
 
+#include "landmarking/landmark_template.h"
+
 namespace maxillo::landmarking {
 namespace {
 
@@ -70,25 +72,31 @@ class Checker {
   std::map<std::string, std::vector<CheckOutcome>> result_;
 };
 
-// Where the mandible's midline lies across the skull's (mean x of the mandible's midline points
-// found; none when none is). A chin deviated to one side carries the lower arch with it: the lower
-// molars mirror about the mandible's own midline, not the skull's, or every asymmetric mandible
-// would flag correct molars. Not L1: it is the right central incisor, half a crown's width off
-// the midline (a cone-beam field cut above the chin left L1 alone, and it flagged good molars).
-std::optional<double> mandibular_midline_x(const Checker& c) {
+// The lower arch's midline across the skull's, and what it was read from. A chin deviated to one
+// side carries the lower arch with it: the lower molars mirror about the mandible's own midline,
+// not the skull's, or every asymmetric mandible would flag correct molars. The mean x of the
+// mandible's midline points found (B, Pog, Me); without them (a cone-beam field whose floor cut
+// the chin), the lower central incisors' contact, half a crown's width to the left of L1 (the
+// right central incisor: L1 itself, taken for the midline, flagged good molars); none without.
+struct ArchMidline {
+  double x;
+  const char* read_from;
+};
+std::optional<ArchMidline> lower_arch_midline(const Checker& c) {
   double sum = 0;
   int count = 0;
   for (const char* label : {"B", "Pog", "Me"})
     if (c.has({label})) sum += c.at(label).x(), ++count;
-  if (count == 0) return std::nullopt;
-  return sum / count;
+  if (count > 0) return ArchMidline{sum / count, "the mandible's midline"};
+  if (c.has({"L1"})) return ArchMidline{c.at("L1").x() + kLowerCentralWidthMm / 2, "the lower incisors' midline"};
+  return std::nullopt;
 }
 
 void mirrored_pairs(Checker& c) {
   // The rami (Go, Ar) stay in place when the chin deviates: they mirror about the skull's plane.
   for (const char* pair : {"Or", "Po", "Go", "Ar", "U6"}) c.mirror(pair);
-  if (const auto midline_x = mandibular_midline_x(c))
-    c.mirror("L6", *midline_x, "the mandible's midline");
+  if (const auto midline = lower_arch_midline(c))
+    c.mirror("L6", midline->x, midline->read_from);
   else
     c.mirror("L6");
 }

@@ -12,6 +12,10 @@
 
 namespace maxillo::landmarking {
 
+// Mean mesio-distal crown widths of the central incisors (mm): the upper about 8.5, the lower
+// about 5.2 (Moyers' adult norms). L1 and U1 lie half a width from the arch's midline.
+inline constexpr double kUpperCentralWidthMm = 8.5, kLowerCentralWidthMm = 5.2;
+
 // The 29 labels the program uses, in the order they are reported.
 const std::vector<std::string>& detected_labels();
 

@@ -364,10 +364,6 @@ void find_symphysis(const HeadVolume& v, double scale, Findings& found) {
 
 namespace {
 
-// Mean mesio-distal crown widths of the central incisors (mm): the upper about 8.5, the lower
-// about 5.2 (Moyers' adult norms).
-constexpr double kUpperCentralWidthMm = 8.5, kLowerCentralWidthMm = 5.2;
-
 // The middle of the right central incisor's width (x) 1 mm inside its edge: between its distal
 // end and its mesial one, which is its contact with the left central incisor at the arch's
 // midline (`midline_x`: 0 in the head frame, the chin's middle for a lower arch to one side)

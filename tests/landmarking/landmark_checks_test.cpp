@@ -69,13 +69,23 @@ TEST(LandmarkChecks, TheLowerMolarsMirrorAboutTheMandiblesMidline) {
   checks = check_landmarks(points, 1.0);
   ASSERT_EQ(failed(checks, "L6R").size(), 1u);
   EXPECT_NE(failed(checks, "L6R").front().find("mandible's midline"), std::string::npos);
-  // A field cut above the chin: no B, Pog or Me. L1, the right central incisor half a crown's
-  // width off the midline, does not stand for it; the molars mirror about the skull's plane.
+  // A cone-beam field whose floor cut the chin: no B, Pog or Me. The lower incisors' contact,
+  // half a crown's width to the left of L1 (the right central incisor, itself 2.5 mm off the
+  // midline), stands for the midline: the arch deviated 3 mm passes, a molar off on its own fails.
   points = template_head();
   for (const char* label : {"B", "Pog", "Me"}) points.erase(label);
-  points["L1"].x() -= 2.6;
+  for (const char* label : {"L6R", "L6L", "L1"}) points[label].x() += 3;
   checks = check_landmarks(points, 1.0);
   EXPECT_TRUE(failed(checks, "L6R").empty()) << failed(checks, "L6R").front();
+  points["L6L"].y() += 6;
+  checks = check_landmarks(points, 1.0);
+  ASSERT_EQ(failed(checks, "L6R").size(), 1u);
+  EXPECT_NE(failed(checks, "L6R").front().find("lower incisors' midline"), std::string::npos);
+  // Nothing of the lower arch's middle found: the skull's plane.
+  points.erase("L1");
+  points["L6L"].y() -= 6;
+  checks = check_landmarks(points, 1.0);
+  ASSERT_EQ(failed(checks, "L6L").size(), 1u) << "3 mm to the left of the skull's plane: 6 mm from the mirror image";
 }
 
 TEST(LandmarkChecks, AnOrderTheAnatomyForbidsIsNamed) {
