@@ -2,6 +2,7 @@
 
 #include <dcmtk/config/osconfig.h>
 #include <dcmtk/dcmdata/dctag.h>
+#include <dcmtk/dcmdata/dcxfer.h>
 #include <zlib.h>
 
 #include <array>
@@ -283,10 +284,16 @@ class DataSetWalk {
   int depth_ = 0;
 };
 
-Encoding encoding_of(const std::string& transfer_syntax) {
-  if (transfer_syntax == "1.2.840.10008.1.2") return Encoding::ImplicitLittle;
-  if (transfer_syntax == "1.2.840.10008.1.2.2") return Encoding::ExplicitBig;
-  return Encoding::ExplicitLittle;  // every other syntax, encapsulated ones included
+// The encoding the data set is read in, as DCMTK will read it. A syntax DCMTK does not know is
+// refused here: DCMTK would guess the encoding from the data set's first bytes (a fuzzing finding:
+// "1.2.3.4" with a first group of 0x0800 was guessed big endian, while this walk read little
+// endian; DCMTK's reading drifted into a value and allocated 2 GiB for a length it found there).
+Encoding encoding_of(const std::string& transfer_syntax, const std::filesystem::path& path) {
+  const DcmXfer xfer(transfer_syntax.c_str());
+  if (xfer.getXfer() == EXS_Unknown)
+    throw Error(ErrorCode::kUnsupportedSyntax, path.string(), "unknown transfer syntax " + transfer_syntax);
+  if (!xfer.isExplicitVR()) return Encoding::ImplicitLittle;
+  return xfer.isBigEndian() ? Encoding::ExplicitBig : Encoding::ExplicitLittle;
 }
 
 }  // namespace
@@ -298,13 +305,15 @@ void check_dicom_structure(std::span<const std::byte> bytes, const std::filesyst
   MetaInformation meta = read_meta(in);
   if (meta.transfer_syntax.empty())
     throw Error(ErrorCode::kMissingAttribute, path.string(), "no Transfer Syntax UID (0002,0010)");
-  if (meta.transfer_syntax == "1.2.840.10008.1.2.1.99") {  // deflated explicit VR little endian
+  const Encoding encoding = encoding_of(meta.transfer_syntax, path);
+  // Deflated explicit VR little endian, and JPIP referenced deflate: DCMTK inflates both.
+  if (DcmXfer(meta.transfer_syntax.c_str()).getStreamCompression() == ESC_zlib) {
     auto inflated = inflate_data_set(bytes.subspan(meta.end), path);
     Reader data(inflated, path);
-    DataSetWalk(data, 0, Encoding::ExplicitLittle).run();
+    DataSetWalk(data, 0, encoding).run();
     return;
   }
-  DataSetWalk(in, meta.end, encoding_of(meta.transfer_syntax)).run();
+  DataSetWalk(in, meta.end, encoding).run();
 }
 
 }  // namespace maxillo

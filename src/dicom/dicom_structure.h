@@ -7,6 +7,8 @@
 // refuses, with an Error naming the file and the byte offset:
 // - a file meta group (0002,xxxx) that is not explicit VR little endian with known VRs, or a
 //   Transfer Syntax UID that is not a UID (kNotDicom);
+// - a transfer syntax DCMTK does not know (kUnsupportedSyntax): DCMTK would guess the data set's
+//   encoding from its first bytes, and this walk could not know which encoding it guessed;
 // - a length that runs past the end of the file or of the item enclosing it (kTruncated);
 // - an unknown VR in an explicit-VR data set (kNotDicom);
 // - sequences nested deeper than kMaxSequenceNesting (kBadValue);

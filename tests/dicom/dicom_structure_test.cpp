@@ -6,6 +6,8 @@
 #include <dcmtk/dcmdata/dcsequen.h>
 
 #include <chrono>
+#include <functional>
+#include <vector>
 
 #include "core/atomic_file.h"
 #include "core/error.h"
@@ -114,6 +116,29 @@ TEST(DicomStructure, ATransferSyntaxThatIsNotAUidIsRefusedBeforeDcmtkGuesses) {
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), ErrorCode::kNotDicom);
     EXPECT_NE(e.reason().find("Transfer Syntax UID (0002,0010) is not a UID"), std::string::npos) << e.reason();
+  }
+}
+
+// A well-formed UID that names no transfer syntax DCMTK knows: DCMTK would guess the encoding
+// from the data set's first bytes. This file's first group, 0x0800 read little endian, is 0x0008
+// read big endian, so DCMTK guessed big endian, drifted into a value and allocated 2 GiB for the
+// length it found there (a fuzzing finding). The walk refuses it before DCMTK reads it, and both
+// readers say why.
+TEST(DicomStructure, ATransferSyntaxDcmtkDoesNotKnowIsRefusedBeforeDcmtkGuessesItsEncoding) {
+  const auto file = std::filesystem::path(MAXILLO_SOURCE_DIR) /
+                    "tests/fuzz/regressions/dicom_header/unknown-transfer-syntax-guessed-big-endian.dcm";
+  const auto bytes = read_file(file);
+  for (const auto& read : std::vector<std::function<void()>>{[&] { check_dicom_structure(bytes, file); },
+                                                             [&] { parse_instance_header(bytes, file); },
+                                                             [&] { decode_dicom_slice(bytes, file); }}) {
+    try {
+      read();
+      ADD_FAILURE() << "accepted";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), ErrorCode::kUnsupportedSyntax);
+      EXPECT_NE(e.reason().find("unknown transfer syntax 1.2.3.4"), std::string::npos) << e.reason();
+      EXPECT_EQ(e.subject(), file.string());
+    }
   }
 }
 
