@@ -33,6 +33,7 @@ constexpr double kMinSnMm = 56, kMaxSnMm = 91;  // the scales the detector accep
 constexpr double kFieldEdgeMarginMm = 3;        // a landmark needs the field around it this far
 constexpr double kSellaBehindFrontMm = 115;     // the front's most anterior bone to sella, a large head's and more
 constexpr double kSizeChangeToRefind = 0.03;  // S-N found again longer or shorter than this share: the first was wrong
+constexpr const char* kSellaCutByTheField = "the scanned field's top edge cuts the sella turcica's walls";
 
 // A frame (frame -> LPS) with the given axes (columns) and origin.
 Eigen::Isometry3d frame_of(const Eigen::Vector3d& x, const Eigen::Vector3d& y, const Eigen::Vector3d& origin) {
@@ -164,10 +165,11 @@ std::optional<SellaNasion> find_sella_and_nasion(const Volume& ct, const GreyCal
     return FrameBox{{0, e.y_front + 0.2 * length, e.z_top - farthest},
                     {0, e.y_front + std::max(0.7 * length, kSellaBehindFrontMm), e.z_top - nearest}};
   };
-  const auto sella =
-      e.vertex_scanned ? find_sella(section, window_below_top(55, 135)) : find_sella(section, window_below_top(2, 70));
+  bool cut = false;
+  const auto sella = e.vertex_scanned ? find_sella(section, window_below_top(55, 135), &cut)
+                                      : find_sella(section, window_below_top(2, 70), &cut);
   if (!sella) {
-    why = "no sella turcica in the midsagittal plane";
+    why = cut ? kSellaCutByTheField : "no sella turcica in the midsagittal plane";
     return std::nullopt;
   }
   // Nasion: S-N is about 70 mm and rises 7 degrees; the scan's pitch may add +-20 degrees.
@@ -243,10 +245,11 @@ void leave_out_points_at_the_field_edge(const HeadVolume& head, Findings& found)
 // Sella, sought around the head frame's origin: its window does not depend on the head's size,
 // so a second start would find it again to the bit (it is not run twice).
 RuleFinding find_sella_in_frame(const HeadVolume& head) {
-  if (auto s = find_sella(head, {{0, -14, -14}, {0, 14, 14}}))
+  bool cut = false;
+  if (auto s = find_sella(head, {{0, -14, -14}, {0, 14, 14}}, &cut))
     return RuleFinding::found(s->centre, evidence_between(1.5 - s->fit_rms_mm, 0, 1));
-  return RuleFinding::absent(head.scanned(Eigen::Vector3d::Zero()) ? "no sella turcica in the head frame"
-                                                                   : "the sella lies outside the scanned field");
+  if (!head.scanned(Eigen::Vector3d::Zero())) return RuleFinding::absent("the sella lies outside the scanned field");
+  return RuleFinding::absent(cut ? kSellaCutByTheField : "no sella turcica in the head frame");
 }
 
 // Every rule but sella's in the head volume at the fine spacing, its windows placed for a head of

@@ -18,8 +18,11 @@ constexpr double kWallHu = 150;
 constexpr double kMinPocketMm2 = 12, kMaxPocketMm2 = 400;
 constexpr double kOpenAboveMm = 30;  // the fossa opens to the brain: no bone this far above it
 // A cone-beam field may end a little above the fossa: the brain seen up to the field's edge,
-// at least this far, is open too (what lies beyond was not scanned, not bone).
-constexpr double kOpenToFieldEdgeMm = 6;
+// at least this far above the pocket's top, is open too (what lies beyond was not scanned, not
+// bone). A fossa whose walls the edge cuts has pocket pixels up to the edge itself (0-0.5 mm of
+// brain above them, on BENCH-006 and 027); a whole fossa ends where its walls end, below the
+// edge (1.5-3.5 mm above it on BENCH-009 and 018, which 6 mm here once refused).
+constexpr double kOpenToFieldEdgeMm = 1;
 
 // The section's pixels: rows along z (downwards), columns along y.
 struct Section {
@@ -98,21 +101,25 @@ bool fit_circle(const std::vector<Eigen::Vector2d>& points, Eigen::Vector2d& cen
   return true;
 }
 
-// Soft tissue (the brain) straight above `p` for kOpenAboveMm, or up to the scanned field's
-// edge when that lies at least kOpenToFieldEdgeMm above.
-bool opens_upwards(const HeadVolume& v, const Eigen::Vector3d& p) {
+enum class Above { kOpen, kClosed, kCutByTheField };
+
+// kOpen: soft tissue (the brain) straight above `p` for kOpenAboveMm, or up to the scanned
+// field's edge when that lies at least kOpenToFieldEdgeMm above. kCutByTheField: the edge
+// comes sooner, so the pocket below may be a fossa whose walls were not scanned whole.
+Above what_lies_above(const HeadVolume& v, const Eigen::Vector3d& p) {
   for (double t = 0; t <= kOpenAboveMm; t += 0.5) {
     const Eigen::Vector3d q = p + Eigen::Vector3d(0, 0, t);
     // The voxel above too: the interpolation mixes in the unscanned air beyond the edge.
-    if (!v.scanned(q + Eigen::Vector3d(0, 0, v.spacing()))) return t >= kOpenToFieldEdgeMm;
-    if (!soft(v.hu(q))) return false;
+    if (!v.scanned(q + Eigen::Vector3d(0, 0, v.spacing())))
+      return t >= kOpenToFieldEdgeMm ? Above::kOpen : Above::kCutByTheField;
+    if (!soft(v.hu(q))) return Above::kClosed;
   }
-  return true;
+  return Above::kOpen;
 }
 
 }  // namespace
 
-std::optional<SellaFinding> find_sella(const HeadVolume& v, const FrameBox& window) {
+std::optional<SellaFinding> find_sella(const HeadVolume& v, const FrameBox& window, bool* cut_by_the_field) {
   Section s;
   s.step = std::max(0.5, v.spacing());
   s.y0 = window.lo.y();
@@ -127,6 +134,7 @@ std::optional<SellaFinding> find_sella(const HeadVolume& v, const FrameBox& wind
   const std::vector<std::vector<int>> pockets = regions(marked, s);
   const std::vector<int>* best = nullptr;
   double best_top = 0;
+  bool a_pocket_was_cut = false;
   for (const auto& region : pockets) {
     const double area = double(region.size()) * s.step * s.step;
     if (area < kMinPocketMm2 || area > kMaxPocketMm2) continue;
@@ -137,7 +145,9 @@ std::optional<SellaFinding> find_sella(const HeadVolume& v, const FrameBox& wind
       z_top = std::max(z_top, p.z());
     }
     const Eigen::Vector3d above(0, y_sum / double(region.size()), z_top + s.step);
-    if (!opens_upwards(v, above)) continue;
+    const Above what = what_lies_above(v, above);
+    a_pocket_was_cut = a_pocket_was_cut || what == Above::kCutByTheField;
+    if (what != Above::kOpen) continue;
     // Of the pockets that open into the cranial cavity, the sella is the lowest: the deepest
     // point of the central skull base (the olfactory recess in front of it lies higher).
     if (!best || z_top < best_top) {
@@ -145,6 +155,7 @@ std::optional<SellaFinding> find_sella(const HeadVolume& v, const FrameBox& wind
       best_top = z_top;
     }
   }
+  if (cut_by_the_field) *cut_by_the_field = !best && a_pocket_was_cut;
   if (!best) return std::nullopt;
   // Its bony wall: pocket pixels next to bone; the wall point itself where the bone begins.
   std::vector<Eigen::Vector2d> wall;

@@ -21,8 +21,10 @@ struct SellaFinding {
   double fit_rms_mm = 0;            // of the wall points about the circle (1.5: no fit)
 };
 
-// The pocket in the section x = 0 within the window (frame mm) closest in size to a fossa;
-// nullopt when there is none.
-std::optional<SellaFinding> find_sella(const HeadVolume& v, const FrameBox& window);
+// The lowest pocket of a fossa's size in the section x = 0 within the window (frame mm) that
+// opens into the cranial cavity; nullopt when there is none. Then `cut_by_the_field`, if given,
+// says whether a pocket of a fossa's size ran into the scanned field's top edge (a fossa the
+// field cuts, whose centre the pocket would misplace).
+std::optional<SellaFinding> find_sella(const HeadVolume& v, const FrameBox& window, bool* cut_by_the_field = nullptr);
 
 }  // namespace maxillo::landmarking
