@@ -20,7 +20,7 @@ struct AxisWeight {
 
 HeadVolume::HeadVolume(const Volume& ct, const GreyCalibration& grey, const Eigen::Isometry3d& frame_to_lps,
                        const FrameBox& box, double spacing_mm)
-    : frame_to_lps_(frame_to_lps), box_(box), spacing_(spacing_mm) {
+    : frame_to_lps_(frame_to_lps), box_(box), spacing_(spacing_mm), scan_voxel_mm_(ct.geometry.spacing.maxCoeff()) {
   VolumeGeometry g;
   g.spacing = Eigen::Vector3d::Constant(spacing_mm);
   g.origin = box.lo;

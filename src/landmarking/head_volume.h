@@ -39,6 +39,8 @@ class HeadVolume {
   const Eigen::Isometry3d& frame_to_lps() const { return frame_to_lps_; }
   const FrameBox& box() const { return box_; }
   double spacing() const { return spacing_; }
+  // The scan's own largest voxel edge: how much detail the resampling above cannot add back.
+  double scan_voxel_mm() const { return scan_voxel_mm_; }
 
  private:
   Volume volume_;  // HU, identity direction, origin at box.lo
@@ -46,6 +48,7 @@ class HeadVolume {
   Eigen::Isometry3d frame_to_lps_;
   FrameBox box_;
   double spacing_;
+  double scan_voxel_mm_;
 };
 
 }  // namespace maxillo::landmarking

@@ -101,6 +101,27 @@ RuleFinding find_nasion(const HeadVolume& v, const Eigen::Vector3d& expected) {
 }
 
 constexpr double kSpineBumpReachMm = 1.5;
+constexpr double kSpineBumpAheadMm = 0.2;
+constexpr double kSpineAsABumpVoxelMm = 1.0;
+
+// The sample `dz` mm above (dz > 0) or below profile[i], the nearest in height within 0.2 mm, or
+// nullopt.
+std::optional<ProfilePoint> sample_at(const Profile& profile, int i, double dz) {
+  const double z = profile[size_t(i)].z + dz;
+  std::optional<ProfilePoint> best;
+  for (const auto& p : profile)
+    if (std::abs(p.z - z) < 0.2 && (!best || std::abs(p.z - z) < std::abs(best->z - z))) best = p;
+  return best;
+}
+
+// A bump on a slope: the most anterior sample within 0.5 mm, standing at least
+// kSpineBumpAheadMm ahead of the chord joining the samples kSpineBumpReachMm above and below.
+bool is_bump_on_slope(const Profile& profile, int i) {
+  if (!is_local_extremum(profile, i, -1, 0.5)) return false;
+  const auto above = sample_at(profile, i, kSpineBumpReachMm), below = sample_at(profile, i, -kSpineBumpReachMm);
+  if (!above || !below) return false;
+  return (above->y + below->y) / 2 - profile[size_t(i)].y >= kSpineBumpAheadMm;
+}
 
 void find_maxillary_midline(const HeadVolume& v, double scale, Findings& found) {
   const Eigen::Vector3d ans = expected_position("ANS", scale), a = expected_position("A", scale);
@@ -112,12 +133,18 @@ void find_maxillary_midline(const HeadVolume& v, double scale, Findings& found) 
   // the forward extrema within 2 mm of the most anterior one the lowest is taken: the spine
   // projects from the nasal floor, below the rim of the aperture. At voxels of 1.2 mm and more
   // the spine is a bump of a few tenths of a millimetre on the bone's front below that rim, which
-  // stands further forward: a bump counts when it leads the profile 1.5 mm above and below.
+  // stands further forward: a bump counts when it leads the profile 1.5 mm above and below, or,
+  // where the front slopes back from the rim, when it stands ahead of the slope (BENCH-002 at
+  // 1.2 mm: a bump 0.3 mm ahead of the slope 4 mm below the rim, which had been taken: 3.3 mm off).
   const Profile spine_zone = between_heights(upper, a.z() - 4, ans.z() + 12);
   const int strongest = strongest_local_extremum(spine_zone, -1, 3);
+  // Finer voxels resolve the spine's own tip; there, a bump on the slope is the bone's texture
+  // (BENCH-024 at 0.6 mm: its ANS was taken from such a bump and flagged).
+  const bool coarse_voxels = v.scan_voxel_mm() >= kSpineAsABumpVoxelMm;
   int tip = strongest;
   for (int i = 0; strongest >= 0 && i < int(spine_zone.size()); ++i)
-    if (is_local_extremum(spine_zone, i, -1, kSpineBumpReachMm) &&
+    if ((is_local_extremum(spine_zone, i, -1, kSpineBumpReachMm) ||
+         (coarse_voxels && is_bump_on_slope(spine_zone, i))) &&
         spine_zone[size_t(i)].y < spine_zone[size_t(strongest)].y + 2 &&
         spine_zone[size_t(i)].z < spine_zone[size_t(tip)].z)
       tip = i;
