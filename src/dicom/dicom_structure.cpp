@@ -284,14 +284,8 @@ class DataSetWalk {
   int depth_ = 0;
 };
 
-// The encoding the data set is read in, as DCMTK will read it. A syntax DCMTK does not know is
-// refused here: DCMTK would guess the encoding from the data set's first bytes (a fuzzing finding:
-// "1.2.3.4" with a first group of 0x0800 was guessed big endian, while this walk read little
-// endian; DCMTK's reading drifted into a value and allocated 2 GiB for a length it found there).
-Encoding encoding_of(const std::string& transfer_syntax, const std::filesystem::path& path) {
-  const DcmXfer xfer(transfer_syntax.c_str());
-  if (xfer.getXfer() == EXS_Unknown)
-    throw Error(ErrorCode::kUnsupportedSyntax, path.string(), "unknown transfer syntax " + transfer_syntax);
+// The encoding DCMTK reads the data set of a syntax it knows in.
+Encoding encoding_of(const DcmXfer& xfer) {
   if (!xfer.isExplicitVR()) return Encoding::ImplicitLittle;
   return xfer.isBigEndian() ? Encoding::ExplicitBig : Encoding::ExplicitLittle;
 }
@@ -305,9 +299,16 @@ void check_dicom_structure(std::span<const std::byte> bytes, const std::filesyst
   MetaInformation meta = read_meta(in);
   if (meta.transfer_syntax.empty())
     throw Error(ErrorCode::kMissingAttribute, path.string(), "no Transfer Syntax UID (0002,0010)");
-  const Encoding encoding = encoding_of(meta.transfer_syntax, path);
+  // A syntax DCMTK does not know is refused: DCMTK would guess the encoding from the data set's
+  // first bytes (a fuzzing finding: "1.2.3.4" with a first group of 0x0800 was guessed big endian
+  // while this walk read little endian; DCMTK's reading drifted into a value and allocated 2 GiB
+  // for a length it found there).
+  const DcmXfer xfer(meta.transfer_syntax.c_str());
+  if (xfer.getXfer() == EXS_Unknown)
+    throw Error(ErrorCode::kUnsupportedSyntax, path.string(), "unknown transfer syntax " + meta.transfer_syntax);
+  const Encoding encoding = encoding_of(xfer);
   // Deflated explicit VR little endian, and JPIP referenced deflate: DCMTK inflates both.
-  if (DcmXfer(meta.transfer_syntax.c_str()).getStreamCompression() == ESC_zlib) {
+  if (xfer.getStreamCompression() == ESC_zlib) {
     auto inflated = inflate_data_set(bytes.subspan(meta.end), path);
     Reader data(inflated, path);
     DataSetWalk(data, 0, encoding).run();
