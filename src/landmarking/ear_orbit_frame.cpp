@@ -32,7 +32,7 @@ std::optional<Porions> find_porions_anywhere(const HeadVolume& v, const MidlineE
   std::optional<Eigen::Vector3d> found[2];
   std::string missing;
   for (int side : {-1, 1}) {
-    const RuleFinding f = find_porion(v, {side * 62.0, y_centre, z_centre}, side, {55, 65});
+    const RuleFinding f = find_porion(v, {side * 62.0, y_centre, z_centre}, side, {55, 65}, PorionAxis::kCanalCentre);
     if (f.position)
       found[side > 0] = *f.position;
     else
