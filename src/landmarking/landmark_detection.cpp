@@ -321,8 +321,8 @@ LandmarkDetection detect_landmarks(const Volume& scan, const std::string& subjec
     int po_count = 0, or_count = 0;
     for (int side : {-1, 1}) {
       const std::string suffix = side > 0 ? "L" : "R";
-      const RuleFinding p =
-          find_porion(coarse, expected_position("Po" + suffix, result.scale), side, {20, 16}, PorionAxis::kCanalCentre);
+      const RuleFinding p = find_porion(coarse, expected_position("Po" + suffix, result.scale), side, kPorionReachMm,
+                                        PorionAxis::kCanalCentre);
       const RuleFinding o = find_orbitale(coarse, expected_position("Or" + suffix, result.scale), side);
       if (p.position) po += *p.position, ++po_count;
       if (o.position) orb += *o.position, ++or_count;

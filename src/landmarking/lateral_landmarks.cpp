@@ -19,6 +19,7 @@ struct Grid3 {
   double step;
   int nx, ny, nz;
   Eigen::Vector3d at(int i, int j, int k) const { return lo + step * Eigen::Vector3d(i, j, k); }
+  Eigen::Vector3d at(int index) const { return at(index % nx, (index / nx) % ny, index / (nx * ny)); }
   int index(int i, int j, int k) const { return i + nx * (j + ny * k); }
 };
 
@@ -58,8 +59,8 @@ std::vector<int> outer_canal(const HeadVolume& v, const std::vector<uint8_t>& ca
     if (double(region.size()) * std::pow(g.step, 3) < 4) continue;
     int outermost = region.front();
     for (int index : region)
-      if (side * g.at(index % g.nx, 0, 0).x() > side * g.at(outermost % g.nx, 0, 0).x()) outermost = index;
-    const Eigen::Vector3d p = g.at(outermost % g.nx, (outermost / g.nx) % g.ny, outermost / (g.nx * g.ny));
+      if (side * g.at(index).x() > side * g.at(outermost).x()) outermost = index;
+    const Eigen::Vector3d p = g.at(outermost);
     if (first_crossing(v, p + Eigen::Vector3d(side * g.step, 0, 0), {double(side), 0, 0}, 12, kBoneHu, 0.5))
       continue;  // bone lateral to it: a closed space
     if (side * p.x() > best_outer) {
@@ -76,7 +77,7 @@ std::vector<Eigen::Vector3d> voxels_between(const std::vector<int>& region, cons
                                             double near_mm, double far_mm) {
   std::vector<Eigen::Vector3d> voxels;
   for (int index : region) {
-    const Eigen::Vector3d p = g.at(index % g.nx, (index / g.nx) % g.ny, index / (g.nx * g.ny));
+    const Eigen::Vector3d p = g.at(index);
     const double depth = outer - side * p.x();
     if (depth >= near_mm && depth <= far_mm) voxels.push_back(p);
   }
@@ -113,7 +114,7 @@ Eigen::Vector3d canal_axis_at(const std::vector<int>& region, const Grid3& g, in
 Eigen::Vector3d canal_centre_at(const std::vector<int>& region, const Grid3& g, int side, double outer,
                                 double depth_mm) {
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-  for (int index : region) centre += g.at(index % g.nx, (index / g.nx) % g.ny, index / (g.nx * g.ny));
+  for (int index : region) centre += g.at(index);
   centre /= double(region.size());
   return {side * (outer - depth_mm), centre.y(), centre.z()};
 }
@@ -145,7 +146,7 @@ RuleFinding find_porion(const HeadVolume& v, const Eigen::Vector3d& expected, in
                                                    : "the ear canal lies outside the scanned field");
   // The lateral opening: the region's outermost voxels.
   double outer = -1e9;
-  for (int index : region) outer = std::max(outer, side * g.at(index % g.nx, 0, 0).x());
+  for (int index : region) outer = std::max(outer, side * g.at(index).x());
   const double extent = outer - (side > 0 ? g.lo.x() : -(g.lo.x() + (g.nx - 1) * g.step));
   // The canal's roof above its axis, 1.5 mm inside the opening; then the bone's lateral surface
   // along the roof's line.

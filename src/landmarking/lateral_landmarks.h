@@ -24,8 +24,10 @@ namespace maxillo::landmarking {
 // read in them (gonion, orbitale, the incisors) move with a tilt of a fraction of a degree: moved
 // onto the opening's axis, four landmark tests failed through the frame alone (issue #28).
 enum class PorionAxis { kAtOpening, kCanalCentre };
+// How far about the expected place the canal is sought (y, z), where the frame is known.
+inline const Eigen::Vector2d kPorionReachMm(20, 16);
 RuleFinding find_porion(const HeadVolume& v, const Eigen::Vector3d& expected, int side,
-                        const Eigen::Vector2d& reach = {20, 16}, PorionAxis axis = PorionAxis::kAtOpening);
+                        const Eigen::Vector2d& reach = kPorionReachMm, PorionAxis axis = PorionAxis::kAtOpening);
 
 // Seen from the front, rays below the orbit end on the maxilla and zygoma while rays into the
 // orbit's opening go deep: the rim's lower edge is where that depth jumps, and Or is the lowest
